@@ -1,0 +1,295 @@
+"""The velocity polygon, drawn step by step as in the notes ("Graphical velocity analysis").
+
+From the pole O_v the known velocity of the crank tip is drawn to scale; every joint found by a dyad
+gives one vector equation, V_C = V_B + V_CB, solved by two trial lines of known direction whose crossing
+is the image point c.  Velocities of points fixed to a link come from its velocity image.  Every value
+returned is read off the figure: absolute velocities are the vectors O_v->j, relative velocities the
+sides of the polygon, and angular velocities the relative velocities divided by the link lengths.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable, Mapping
+
+from .errors import DegenerateInput, IndeterminatePosition
+from .geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
+from .linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, TwoCircles,
+                      assembly_plan, describe_angle)
+from .record import Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, Term, TrialLine, \
+    VectorEquation
+
+SINGULAR_SINE = 1e-4
+"""Trial lines crossing at a sine below this mark a singular position (toggle, limit, change point).
+The closest crossing a float figure can tell from a tangency (gap 1e-9 L) has a sine near 4.5e-5; the
+conditioning of the measured values grows like 1/sine^2, so above 1e-4 they keep at least 7 digits."""
+
+WARN_SINE = 1e-2
+"""Below this the values are returned with a warning and an error estimate."""
+
+Formatter = Callable[[str, float], str]
+"""Formats an SI value of a named quantity ("length", "velocity", "angular velocity", "angle")."""
+
+
+def si_format(quantity: str, value: float) -> str:
+    unit = {"length": "m", "velocity": "m/s", "angular velocity": "rad/s", "angle": "rad"}[quantity]
+    return f"{value:.4g} {unit}"
+
+
+SCALE_SERIES = (1.0, 2.0, 5.0)
+
+
+def vector_scale(known: float, extent: float, *, known_mm: tuple[float, float] = (50.0, 100.0),
+                 max_extent_mm: float = 110.0) -> float:
+    """The 1-2-5 scale (units per paper mm) for a vector polygon.
+
+    The finest scale at which the known vector is at most ``known_mm[1]`` long and the whole polygon
+    (``extent``, its larger bounding-box side) fits in ``max_extent_mm``; with a well-proportioned
+    polygon the known vector then comes out 50..100 mm long.
+    """
+    if not (known > 0 and math.isfinite(known) and math.isfinite(extent)):
+        raise DegenerateInput("the known vector must be finite and non-zero to choose a scale")
+    need = max(known / known_mm[1], extent / max_extent_mm)
+    decade = 10.0 ** math.floor(math.log10(need))
+    for m in SCALE_SERIES + (10.0,):
+        s = m * decade
+        if s >= need * (1 - 1e-12):
+            return s
+    raise AssertionError("unreachable")
+
+
+@dataclass(frozen=True)
+class VelocityAnalysis:
+    """The velocity polygon at one position and the values measured off it (SI, CCW positive).
+
+    ``velocities`` maps every joint and point to its absolute velocity (fixed pivots: zero);
+    ``relative[(J, P)]`` is V_JP, the side p->j of the polygon; ``angular`` maps link numbers to their
+    angular velocity (slider blocks translate: 0); ``conditions`` maps each joint found by trial lines
+    to the sine of the angle at which they crossed; ``warnings`` says what the reader must know.
+    """
+
+    construction: Construction
+    pose: Pose
+    velocities: Mapping[str, Vec]
+    relative: Mapping[tuple[str, str], Vec]
+    angular: Mapping[int, float]
+    conditions: Mapping[str, float]
+    scale: float
+    warnings: tuple[str, ...]
+
+    @property
+    def relative_error_estimate(self) -> float:
+        """Rough relative error of the measured values from rounding, growing as 1/sine^2 near
+        singular positions."""
+        worst = min(self.conditions.values(), default=1.0)
+        return 4.0 * 2.2e-16 / max(worst, 1e-300) ** 2
+
+
+def image_name(joint: str) -> str:
+    """The notes' lower-case label of a joint's image point: B -> b, O2 -> o2."""
+    return joint[0].lower() + joint[1:]
+
+
+def _sense(omega: float) -> str:
+    return "counter-clockwise" if omega > 0 else "clockwise" if omega < 0 else "at rest"
+
+
+def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter = si_format,
+                     scale: float | None = None) -> VelocityAnalysis:
+    """Draw the velocity polygon of ``m`` at ``pose`` with crank angular velocity ``omega`` (rad/s,
+    CCW positive).  ``scale`` (SI units per paper mm) overrides the 1-2-5 choice."""
+    plan = assembly_plan(m)
+    where = describe_angle(pose.angle)
+    if omega == 0.0 or not math.isfinite(omega):
+        raise DegenerateInput(f"the crank speed must be finite and non-zero, not {omega!r} rad/s")
+    pos = pose.positions
+    vel: dict[str, Vec] = {g: ORIGIN for g in m.ground}
+    rel: dict[tuple[str, str], Vec] = {}
+    ang: dict[int, float] = {s.number: 0.0 for s in m.slides}
+    cond: dict[str, float] = {}
+    warnings: list[str] = []
+    steps: list[tuple[str, tuple, VectorEquation | None]] = []
+
+    crank = plan[0]
+    assert isinstance(crank, CrankTip)
+    r_tip = pos[crank.tip] - pos[crank.pivot]
+    v_tip = r_tip.perp() * omega
+    vel[crank.tip] = v_tip
+    ang[crank.link.number] = omega
+    tol = Tolerance(v_tip.norm(), sine=SINGULAR_SINE)
+    b = image_name(crank.tip)
+    crank_name = f"{crank.pivot}{crank.tip}"
+    steps.append((
+        f"Draw V_{crank.tip} = \u03c9{crank.link.number} \u00d7 {crank_name} from O_v, perpendicular to "
+        f"{crank_name} ({fmt('velocity', v_tip.norm())}, \u03c9{crank.link.number} "
+        f"{_sense(omega)}); its tip is {b}.",
+        (Arrow(f"V_{crank.tip}", Role.KNOWN, Diagram.VELOCITY, ORIGIN, v_tip, f"V_{crank.tip}"),
+         Point(f"image {crank.tip}", Role.LABEL, Diagram.VELOCITY, v_tip, b)),
+        None))
+    equations: list[tuple[str, VectorEquation]] = []
+
+    for step in plan[1:]:
+        if isinstance(step, (TwoCircles, CircleAndGuide)):
+            j = step.joint
+            jj = image_name(j)
+            if isinstance(step, TwoCircles):
+                arms = [(step.link_a, step.first), (step.link_b, step.second)]
+            else:
+                arms = [(step.link, step.centre)]
+            trials: list[Line] = []
+            for link, centre in arms:
+                pj = pos[j] - pos[centre]
+                through = vel[centre]
+                trials.append(Line(through, pj.perp()))
+                at = "O_v" if centre in m.ground else image_name(centre)
+                what = f"V_{j}" if centre in m.ground else f"V_{j}{centre}"
+                steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
+                              (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, through, pj.perp(),
+                                         f"\u22a5 {centre}{j}"),), None))
+            if isinstance(step, CircleAndGuide):
+                g = step.slide.line.direction
+                trials.append(Line(ORIGIN, g))
+                steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
+                              (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
+                                         "\u2225 guide"),), None))
+            hit = intersect_lines(trials[0], trials[1], tol)
+            if hit.contact is not Contact.CROSSING:
+                raise _singular(m, step, pose, hit.condition)
+            vj = hit.points[0]
+            vel[j] = vj
+            cond[j] = hit.condition
+            if hit.condition < WARN_SINE:
+                warnings.append(
+                    f"Near a singular position at {j}: the trial lines cross at "
+                    f"{math.degrees(math.asin(min(hit.condition, 1.0))):.3g} deg; values are "
+                    f"sensitive to the drawing (rounding error about "
+                    f"{4.0 * 2.2e-16 / hit.condition ** 2:.1e} relative).")
+            measured = []
+            for link, centre in arms:
+                v_rel = vj - vel[centre]
+                rel[(j, centre)] = v_rel
+                r = pos[j] - pos[centre]
+                ang[link.number] = r.cross(v_rel) / r.dot(r)
+                what = f"V_{j}" if centre in m.ground else f"V_{j}{centre}"
+                measured.append(Arrow(f"result {what}", Role.RESULT, Diagram.VELOCITY, vel[centre], vj, what))
+            if isinstance(step, CircleAndGuide) or all(c not in m.ground for _, c in arms):
+                measured.append(Arrow(f"result V_{j}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vj, f"V_{j}"))
+            eq = _equation(arms, j, m, isinstance(step, CircleAndGuide))
+            equations.append((_equation_caption(eq, arms, j, m, step), eq))
+            omega_words = "; ".join(
+                f"\u03c9{link.number} = {what}/{link.label} = {fmt('angular velocity', abs(ang[link.number]))} "
+                f"{_sense(ang[link.number])}"
+                for link, centre in arms
+                for what in [f"V_{j}" if centre in m.ground else f"V_{j}{centre}"])
+            values = ", ".join(f"{a.label} = {fmt('velocity', (a.tip - a.tail).norm())}" for a in measured)
+            steps.append((f"The trial lines meet at {jj}. Measure {values}; {omega_words}.",
+                          (Point(f"image {j}", Role.LABEL, Diagram.VELOCITY, vj, jj), *measured), None))
+        elif isinstance(step, FixedToLink):
+            steps.extend(_image_steps(step, pos, vel, rel, tol, fmt))
+
+    # The scale: the finest 1-2-5 step that keeps the known vector <= 100 mm and the polygon in view.
+    pts = list(vel.values())
+    extent = max(max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
+    s = scale if scale is not None else vector_scale(v_tip.norm(), extent)
+    rec = Construction("Velocity polygon")
+    for caption, eq in equations:
+        rec = rec.then(caption, equation=eq)
+    rec = rec.then("Choose the pole O_v.", Point("pole O_v", Role.LABEL, Diagram.VELOCITY, ORIGIN, "O_v"))
+    rec = rec.then(f"Choose the velocity scale: 1 mm = {fmt('velocity', s)}; V_{crank.tip} is "
+                   f"{v_tip.norm() / s:.0f} mm long.",
+                   ScaleBar("velocity scale", Role.SCALE_BAR, Diagram.VELOCITY, "velocity", s))
+    for caption, entities, eq in steps:
+        rec = rec.then(caption, *entities, equation=eq)
+    return VelocityAnalysis(rec, pose, vel, rel, ang, cond, s, tuple(warnings))
+
+
+def _image_steps(step: FixedToLink, pos, vel, rel, tol: Tolerance, fmt: Formatter):
+    """Velocity image of point D on a link BC: the triangle bcd is similar to BCD (notes, Example 4).
+
+    Through b draw the perpendicular to BD, through c the perpendicular to CD; they meet at d.  When D
+    lies on the line BC the image is a straight line and d divides bc as D divides BC.
+    """
+    a, link = step.point, step.link
+    d = a.name
+    p, q = link.joints
+    P, Q, D = pos[p], pos[q], pos[d]
+    vp, vq = vel[p], vel[q]
+    ip, iq, idd = image_name(p), image_name(q), image_name(d)
+    out = []
+    pq = Q - P
+    collinear = abs(pq.unit().cross(D - P)) <= 1e-9 * max(pq.norm(), (D - P).norm())
+    if collinear:
+        t = (D - P).dot(pq) / pq.dot(pq)
+        vd = vp + (vq - vp) * t
+        out.append((f"{d} lies on {p}{q}: mark {idd} dividing {ip}{iq} as {d} divides {p}{q} "
+                    f"({p}{d}/{p}{q} = {t:.4g}).", (), None))
+    else:
+        lp, lq = Line(vp, (D - P).perp()), Line(vq, (D - Q).perp())
+        hit = intersect_lines(lp, lq, Tolerance(tol.length_scale, sine=1e-12))
+        vd = hit.points[0]
+        out.append((f"Velocity image of link {link.number}: through {ip} draw the perpendicular to {p}{d}, "
+                    f"through {iq} the perpendicular to {q}{d}; they meet at {idd}.",
+                    (TrialLine(f"trial V_{d}{p}", Role.TRIAL, Diagram.VELOCITY, vp, (D - P).perp(),
+                               f"\u22a5 {p}{d}"),
+                     TrialLine(f"trial V_{d}{q}", Role.TRIAL, Diagram.VELOCITY, vq, (D - Q).perp(),
+                               f"\u22a5 {q}{d}")), None))
+    vel[d] = vd
+    rel[(d, p)] = vd - vp
+    out.append((f"{ip}{iq}{idd} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
+                f"V_{d} = {fmt('velocity', vd.norm())}.",
+                (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd), f"image of link {link.number}"),
+                 Point(f"image {d}", Role.LABEL, Diagram.VELOCITY, vd, idd),
+                 Arrow(f"result V_{d}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vd, f"V_{d}")), None))
+    return out
+
+
+def _equation(arms, j: str, m: Mechanism, guided: bool) -> VectorEquation:
+    """V_J = V_P + V_JP with the notes' marks; both centres moving: V_P + V_JP = V_Q + V_JQ."""
+    moving = [(l, c) for l, c in arms if c not in m.ground]
+    fixed = [(l, c) for l, c in arms if c in m.ground]
+    if guided or fixed:
+        left = (Term("V", j, False, True),)
+        (_, c), = moving if moving else fixed[:1]
+        if c in m.ground:
+            return VectorEquation(left, (Term("V", f"{j}{c}", False, True),))
+        return VectorEquation(left, (Term("V", c, True, True), Term("V", f"{j}{c}", False, True)))
+    (_, p), (_, q) = moving
+    return VectorEquation((Term("V", p, True, True), Term("V", f"{j}{p}", False, True)),
+                          (Term("V", q, True, True), Term("V", f"{j}{q}", False, True)))
+
+
+def _equation_caption(eq: VectorEquation, arms, j: str, m: Mechanism, step) -> str:
+    links = " and ".join(f"link {l.number} ({l.label})" for l, _ in arms)
+    dirs = [f"V_{j}{c} \u22a5 {c}{j}" if c not in m.ground else f"V_{j} \u22a5 {c}{j}" for _, c in arms]
+    if isinstance(step, CircleAndGuide):
+        dirs.append(f"V_{j} \u2225 guide")
+    return (f"Relative velocity equation on {links}: {eq.text(marks=False)}, with {', '.join(dirs)}; "
+            f"two unknown magnitudes.")
+
+
+def _singular(m: Mechanism, step, pose: Pose, condition: float) -> IndeterminatePosition:
+    j = step.joint
+    where = describe_angle(pose.angle)
+    if isinstance(step, TwoCircles):
+        a, b = step.link_a, step.link_b
+        kind = "change point" if _change_point(m, pose) else "toggle"
+        reason = (f"{kind}: links {a.number} ({a.label}) and {b.number} ({b.label}) are in line, so the "
+                  f"trial lines for {j} are parallel (sine {condition:.1e}) and the velocity polygon "
+                  f"cannot close")
+    else:
+        kind = "limit position"
+        reason = (f"limit position: link {step.link.number} ({step.link.label}) is square to the guide "
+                  f"of {j}, so the trial lines for V_{j} and V_{j}{step.centre} are parallel "
+                  f"(sine {condition:.1e}) and the velocity polygon cannot close")
+    return IndeterminatePosition(reason, position=where, kind=kind, condition=condition)
+
+
+def _change_point(m: Mechanism, pose: Pose) -> bool:
+    """All joints of the loop in one line (the branches of a four-bar meet)."""
+    pts = list(pose.positions.values())
+    far = max(pts, key=lambda p: p.distance_to(pts[0]))
+    if far == pts[0]:
+        return True
+    axis = Line.through(pts[0], far)
+    return all(abs(axis.signed_distance(p)) <= 1e-6 * m.size for p in pts)
