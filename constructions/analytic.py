@@ -1,0 +1,694 @@
+"""The independent analytic check: vector-loop closed forms, vectorised over crank angles.
+
+This module is the yardstick for the graphical velocity-polygon constructions, so it deliberately
+shares no code with them: it is pure numpy and imports nothing from :mod:`constructions` or
+:mod:`drafting`.  Every formula below is derived here from first principles (the derivations are in
+the comments next to the code); none is copied from the course notes, whose vector-loop section has
+known sign and matrix mistakes.
+
+Conventions
+-----------
+* SI throughout: metres, radians, rad/s.  Angles are measured CCW from +x; omega is CCW positive.
+* ``theta1`` and ``omega1`` may be scalars or numpy arrays; they are broadcast against each other and
+  every returned field is a float64 (or bool) array of the broadcast shape (a 0-d array for scalars).
+  The returned arrays are read-only; the containers are frozen dataclasses.
+* A crank angle at which the loop cannot close gives NaN for every position and velocity field
+  (including B and V_B: the mechanism has no configuration there), NaN ``condition`` and
+  ``assembles == False``.
+* ``condition`` is the sine of the angle between the two velocity trial lines.  Where it is below
+  :data:`SINE_TOL` (1e-12) the velocity solution is indeterminate (toggle / dead centre) and every
+  velocity that depends on the solve is NaN -- never inf, never a huge number.  V_B stays finite.
+
+Numerical notes
+---------------
+* Circle-circle and line-circle intersections use the cancellation-free product form of the
+  half-chord (Heron's formula written as a product of sums and differences), so near tangency the
+  small factor is an exact floating-point difference (Sterbenz) and keeps its digits.
+* The assembly decision is three-way with a tolerance relative to the mechanism scale
+  ``L = sum of link lengths + |O1| + |O2|`` (or ``|G|`` for the guide point):
+  a gap factor in ``[-ASSEMBLY_RTOL*L, 0)`` is a tangency spoiled by rounding and is snapped to 0
+  (tangent, assembles, condition 0, velocities NaN); below that the loop does not close.
+  ``ASSEMBLY_RTOL`` is 64 ulp; the snap moves C by at most ~sqrt(2*ASSEMBLY_RTOL)*L ~ 2e-7 L, which is
+  inside the band that floating-point input data already cannot resolve at a tangency.
+  Consequence: a *computed* sine at a near-toggle is never between 0 and ~1e-7 -- a loop that closes
+  by less than the rounding of its own inputs reads as exactly tangent.
+* Sine and cosine of the crank angle come from a quarter-angle tangent (``tan`` is SIMD-vectorised in
+  numpy and four to ten times cheaper than ``sin`` + ``cos`` here) after a three-part Cody-Waite
+  reduction modulo 2 pi; the result agrees with ``np.cos``/``np.sin`` to a few 1e-16 absolute.
+  Angles beyond 1e6 rad fall back to ``np.cos``/``np.sin``.
+* Work is done in chunks of :data:`CHUNK` angles with preallocated scratch buffers and ``out=``
+  ufuncs, so the working set stays in cache.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+__all__ = [
+    "ASSEMBLY_RTOL",
+    "CHUNK",
+    "SINE_TOL",
+    "FourBarState",
+    "PointState",
+    "SliderCrankState",
+    "coupler_point",
+    "four_bar",
+    "slider_crank",
+]
+
+#: Threshold on the sine of the angle between the velocity trial lines: below it the velocity
+#: solve is indeterminate (toggle / dead centre) and velocities are NaN.
+SINE_TOL = 1e-12
+
+#: Relative tolerance (times the mechanism scale L) inside which a negative gap factor of an
+#: intersection is rounding noise at a tangency and is snapped to zero.
+ASSEMBLY_RTOL = 64 * np.finfo(np.float64).eps
+
+#: Number of crank angles processed per chunk (tuned on a 2 MB-L2 Xeon; 2**13..2**15 are all close).
+CHUNK = 2**14
+
+# 2*pi split into three parts for Cody-Waite argument reduction: _TWO_PI_1 and _TWO_PI_2 carry 30
+# significant bits each, so k*_TWO_PI_1 and k*_TWO_PI_2 are exact for |k| < 2**23; _TWO_PI_3 is the
+# rest rounded to double.  Derived from 60+ digits of pi with ``decimal``.  The parts are divided by 4
+# (exact in binary) because the kernel works with the quarter angle.
+_TWO_PI_1 = 6.283185310661793
+_TWO_PI_2 = -3.4822062768002926e-09
+_TWO_PI_3 = -1.401373759235972e-18
+_Q1 = _TWO_PI_1 / 4.0
+_Q2 = _TWO_PI_2 / 4.0
+_Q3 = _TWO_PI_3 / 4.0
+_INV_TWO_PI = 0.15915494309189535
+_FAST_TRIG_LIMIT = 1.0e6  # |theta| up to this uses the fast path (|k| < 2**18, products exact)
+
+
+# --------------------------------------------------------------------------------------------
+# Result containers
+# --------------------------------------------------------------------------------------------
+
+
+def _freeze(obj) -> None:
+    for f in fields(obj):
+        value = getattr(obj, f.name)
+        if isinstance(value, np.ndarray):
+            value.flags.writeable = False
+
+
+@dataclass(frozen=True, eq=False)
+class FourBarState:
+    """Positions and velocities of a four-bar O1-B-C-O2 over a set of crank angles.
+
+    Attributes
+    ----------
+    Bx, By : ndarray
+        Crank pin B (m).
+    Cx, Cy : ndarray
+        Coupler-rocker pin C (m).
+    theta2 : ndarray
+        Coupler angle, direction B -> C (rad, in (-pi, pi]).
+    theta3 : ndarray
+        Rocker angle, direction O2 -> C (rad, in (-pi, pi]).
+    omega2, omega3 : ndarray
+        Coupler and rocker angular velocities (rad/s, CCW positive).
+    VBx, VBy, VCx, VCy : ndarray
+        Absolute velocities of B and C (m/s).
+    assembles : ndarray of bool
+        True where the loop closes at this crank angle.
+    condition : ndarray
+        ``|sin|`` of the angle between coupler and rocker (the sine of the transmission angle);
+        0 at a toggle, where the velocities are NaN.
+    """
+
+    Bx: np.ndarray
+    By: np.ndarray
+    Cx: np.ndarray
+    Cy: np.ndarray
+    theta2: np.ndarray
+    theta3: np.ndarray
+    omega2: np.ndarray
+    omega3: np.ndarray
+    VBx: np.ndarray
+    VBy: np.ndarray
+    VCx: np.ndarray
+    VCy: np.ndarray
+    assembles: np.ndarray
+    condition: np.ndarray
+
+    def __post_init__(self) -> None:
+        _freeze(self)
+
+
+@dataclass(frozen=True, eq=False)
+class SliderCrankState:
+    """Positions and velocities of an (offset) slider-crank O1-B-C, C on a straight guide.
+
+    Attributes
+    ----------
+    Bx, By : ndarray
+        Crank pin B (m).
+    Cx, Cy : ndarray
+        Slider pin C (m), on the guide.
+    theta2 : ndarray
+        Coupler angle, direction B -> C (rad, in (-pi, pi]).
+    omega2 : ndarray
+        Coupler angular velocity (rad/s, CCW positive).
+    VBx, VBy, VCx, VCy : ndarray
+        Absolute velocities of B and C (m/s); V_C is parallel to the guide.
+    slider_speed : ndarray
+        Signed speed of C along the guide direction ``(cos guide_angle, sin guide_angle)`` (m/s).
+    assembles : ndarray of bool
+        True where the coupler reaches the guide at this crank angle.
+    condition : ndarray
+        Sine of the angle between the two velocity trial lines (V_CB perpendicular to BC, V_C along
+        the guide) ``= |unit(C - B) . e|``; 0 when the coupler is perpendicular to the guide.
+    """
+
+    Bx: np.ndarray
+    By: np.ndarray
+    Cx: np.ndarray
+    Cy: np.ndarray
+    theta2: np.ndarray
+    omega2: np.ndarray
+    VBx: np.ndarray
+    VBy: np.ndarray
+    VCx: np.ndarray
+    VCy: np.ndarray
+    slider_speed: np.ndarray
+    assembles: np.ndarray
+    condition: np.ndarray
+
+    def __post_init__(self) -> None:
+        _freeze(self)
+
+
+@dataclass(frozen=True, eq=False)
+class PointState:
+    """Position and velocity of a point D fixed to a link.
+
+    Attributes
+    ----------
+    Dx, Dy : ndarray
+        Position of D (m).
+    VDx, VDy : ndarray
+        Absolute velocity of D (m/s).
+    """
+
+    Dx: np.ndarray
+    Dy: np.ndarray
+    VDx: np.ndarray
+    VDy: np.ndarray
+
+    def __post_init__(self) -> None:
+        _freeze(self)
+
+
+# --------------------------------------------------------------------------------------------
+# Input handling
+# --------------------------------------------------------------------------------------------
+
+
+def _length(name: str, value) -> float:
+    v = float(value)
+    if not (math.isfinite(v) and v > 0.0):
+        raise ValueError(f"{name} must be a positive finite length, got {value!r}")
+    return v
+
+
+def _point(name: str, value) -> tuple[float, float]:
+    try:
+        x, y = (float(c) for c in value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a pair (x, y), got {value!r}") from None
+    if not (math.isfinite(x) and math.isfinite(y)):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    return x, y
+
+
+def _branch(value) -> float:
+    if value not in (1, -1):
+        raise ValueError(f"branch must be +1 or -1, got {value!r}")
+    return float(value)
+
+
+def _angles(theta1, omega1):
+    """Broadcast theta1 and omega1; return flat theta, omega (float or flat array) and the shape."""
+    th = np.asarray(theta1, dtype=np.float64)
+    w = np.asarray(omega1, dtype=np.float64)
+    shape = np.broadcast_shapes(th.shape, w.shape)
+    if th.shape != shape:
+        th = np.broadcast_to(th, shape)
+    th = np.ascontiguousarray(th).reshape(-1)
+    if w.ndim == 0:
+        wv = float(w)
+    else:
+        wv = np.ascontiguousarray(np.broadcast_to(w, shape)).reshape(-1)
+    return th, wv, shape
+
+
+def _chunk_of(w, i, j):
+    return w if isinstance(w, float) else w[i:j]
+
+
+# --------------------------------------------------------------------------------------------
+# Sine and cosine of the crank angle
+# --------------------------------------------------------------------------------------------
+
+
+def _sincos(th, c, s, t, u):
+    """Write cos(th) into c and sin(th) into s (all 1-D, same length); t, u are scratch.
+
+    Derivation: reduce th = 2 pi k + r, r in [-pi, pi] (Cody-Waite, three-part 2 pi); with
+    tau = tan(r/4) in [-1, 1] the half-angle identities give cos(r/2) = (1 - tau^2)/(1 + tau^2),
+    sin(r/2) = 2 tau/(1 + tau^2), and the double-angle identities give
+    cos r = (cos(r/2) - sin(r/2)) (cos(r/2) + sin(r/2)), sin r = 2 sin(r/2) cos(r/2).
+    Every step is a few ulp; the absolute error is a few 1e-16.
+    """
+    if th.size and float(np.max(np.abs(th))) > _FAST_TRIG_LIMIT:
+        np.cos(th, out=c)
+        np.sin(th, out=s)
+        return
+    # k = rint(th / 2pi) into t; quarter reduced angle into u
+    np.multiply(th, _INV_TWO_PI, out=t)
+    np.rint(t, out=t)
+    np.multiply(th, 0.25, out=u)  # exact
+    np.multiply(t, _Q1, out=c)  # exact product
+    u -= c
+    np.multiply(t, _Q2, out=c)
+    u -= c
+    np.multiply(t, _Q3, out=c)
+    u -= c
+    np.tan(u, out=u)  # tau
+    np.multiply(u, u, out=t)  # tau^2
+    np.add(t, 1.0, out=c)  # 1 + tau^2
+    np.subtract(1.0, t, out=t)  # 1 - tau^2
+    np.divide(1.0, c, out=c)  # 1 / (1 + tau^2)
+    t *= c  # cos(r/2)
+    u += u
+    u *= c  # sin(r/2)
+    np.add(t, u, out=c)
+    np.multiply(t, u, out=s)
+    s += s  # sin r
+    t -= u
+    c *= t  # cos r
+
+
+# --------------------------------------------------------------------------------------------
+# Four-bar
+# --------------------------------------------------------------------------------------------
+
+_FOURBAR_FIELDS = ("Bx", "By", "Cx", "Cy", "theta2", "theta3", "omega2", "omega3",
+                   "VBx", "VBy", "VCx", "VCy", "condition")
+
+
+def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocker, branch):
+    """Closed-form positions and velocities of a four-bar linkage, vectorised over crank angles.
+
+    Parameters
+    ----------
+    theta1 : float or array_like
+        Crank angle(s), direction O1 -> B (rad, CCW from +x).
+    omega1 : float or array_like
+        Crank angular velocity (rad/s, CCW positive); broadcast against ``theta1``.
+    crank_pivot, rocker_pivot : pair of float
+        Fixed pivots O1 and O2 (m).
+    crank, coupler, rocker : float
+        Link lengths |O1B|, |BC|, |O2C| (m), positive.
+    branch : {+1, -1}
+        Assembly: +1 puts C to the LEFT of the directed line B -> O2
+        (``cross(O2 - B, C - B) > 0``), -1 to the right.
+
+    Returns
+    -------
+    FourBarState
+        Arrays of the broadcast shape of ``theta1`` and ``omega1``.
+
+    Notes
+    -----
+    Position (circle-circle, vector form).  With w = O2 - B, d = |w|, u = w/d, n = k x u (u turned
+    +90 deg), C lies on the circle (B, coupler) and on the circle (O2, rocker).  Writing
+    C - B = a u + h_s n and subtracting the two circle equations gives
+    a = (d^2 + coupler^2 - rocker^2) / (2 d), and h = |h_s| is the half-chord.  By Heron,
+    2 d h = sqrt(P), P = (S + d)(S - d)(d + T)(d - T), S = coupler + rocker, T = |coupler - rocker|
+    (P >= 0 iff the loop closes).  The branch rule makes h_s = branch * h, because
+    cross(w, C - B) = d h_s.  Hence C = B + alpha w + beta (k x w) with
+    alpha = (d^2 + coupler^2 - rocker^2) / (2 d^2), beta = branch sqrt(P) / (2 d^2).
+
+    Velocity.  V_B = omega1 k x (B - O1).  With p = C - B and q = C - O2 the loop gives
+    V_B + omega2 k x p = omega3 k x q.  Dotting with q removes omega3 (since (k x q).q = 0) and
+    (k x p).q = cross(p, q); dotting with p removes omega2.  So
+    omega2 = -(V_B . q) / cross(p, q), omega3 = -(V_B . p) / cross(p, q), V_C = omega3 k x q.
+    With q = p - d u one finds cross(p, q) = d h_s = branch sqrt(P) / 2, so the determinant comes
+    straight from the cancellation-free half-chord, and the condition measure
+    |cross(p, q)| / (coupler rocker) = sqrt(P) / (2 coupler rocker) is the sine of the angle between
+    coupler and rocker.  Checked against finite differences and complex-step derivatives of the
+    positions in the tests.
+    """
+    o1x, o1y = _point("crank_pivot", crank_pivot)
+    o2x, o2y = _point("rocker_pivot", rocker_pivot)
+    r1 = _length("crank", crank)
+    r2 = _length("coupler", coupler)
+    r3 = _length("rocker", rocker)
+    br = _branch(branch)
+    th, w1, shape = _angles(theta1, omega1)
+    n = th.size
+
+    scale = r1 + r2 + r3 + math.hypot(o1x, o1y) + math.hypot(o2x, o2y)
+    tol = ASSEMBLY_RTOL * scale
+    S = r2 + r3
+    T = abs(r2 - r3)
+    K = (r2 - r3) * (r2 + r3)  # coupler^2 - rocker^2 without squaring cancellation
+    inv_2r2r3 = 1.0 / (2.0 * r2 * r3)
+    check_d0 = T <= tol  # only then can d = 0 pass the gap test
+
+    out = {name: np.empty(n) for name in _FOURBAR_FIELDS}
+    asm_all = np.empty(n, dtype=bool)
+    m = min(CHUNK, max(n, 1))
+    c, s, wx, wy, d2, d, f1, f2, tmp, inv, al, be = (np.empty(m) for _ in range(12))
+    bt = np.empty(m, dtype=bool)
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(0, n, CHUNK):
+            j = min(i + CHUNK, n)
+            k = j - i
+            if k != m:  # last, short chunk: views of the scratch buffers
+                c, s, wx, wy, d2, d, f1, f2, tmp, inv, al, be = (
+                    a[:k] for a in (c, s, wx, wy, d2, d, f1, f2, tmp, inv, al, be))
+                bt = bt[:k]
+                m = k
+            Bx, By, Cx, Cy, t2, t3, om2, om3, VBx, VBy, VCx, VCy, cond = (
+                out[name][i:j] for name in _FOURBAR_FIELDS)
+            asm = asm_all[i:j]
+            w = _chunk_of(w1, i, j)
+
+            _sincos(th[i:j], c, s, wx, wy)
+            # B = O1 + crank (cos, sin);  V_B = omega1 k x (B - O1) = omega1 crank (-sin, cos)
+            np.multiply(c, r1, out=Bx)
+            Bx += o1x
+            np.multiply(s, r1, out=By)
+            By += o1y
+            if isinstance(w, float):
+                np.multiply(s, -w * r1, out=VBx)
+                np.multiply(c, w * r1, out=VBy)
+            else:
+                np.multiply(s, w, out=VBx)
+                VBx *= -r1
+                np.multiply(c, w, out=VBy)
+                VBy *= r1
+            # w = O2 - B, d
+            np.subtract(o2x, Bx, out=wx)
+            np.subtract(o2y, By, out=wy)
+            np.multiply(wx, wx, out=d2)
+            np.multiply(wy, wy, out=tmp)
+            d2 += tmp
+            np.sqrt(d2, out=d)
+            # gap factors (S - d) and (d - T): exact differences near tangency
+            np.subtract(S, d, out=f1)
+            np.subtract(d, T, out=f2)
+            np.greater_equal(f1, -tol, out=asm)
+            np.greater_equal(f2, -tol, out=bt)
+            asm &= bt
+            if check_d0:
+                np.greater(d2, 0.0, out=bt)
+                asm &= bt
+            np.maximum(f1, 0.0, out=f1)  # snap rounding-level negatives to tangency
+            np.maximum(f2, 0.0, out=f2)
+            np.add(d, S, out=tmp)
+            f1 *= tmp
+            np.add(d, T, out=tmp)
+            f2 *= tmp
+            f1 *= f2
+            np.sqrt(f1, out=f1)  # f1 = sqrt(P) = 2 d h >= 0
+            if not asm.all():
+                # z = 0 where the loop closes, NaN elsewhere; NaN then propagates everywhere
+                np.copyto(tmp, asm)
+                np.divide(0.0, tmp, out=tmp)
+                f1 += tmp
+                Bx += tmp
+                By += tmp
+                VBx += tmp
+                VBy += tmp
+            np.multiply(f1, inv_2r2r3, out=cond)
+            # p = C - B = alpha w + beta (k x w)
+            np.divide(0.5, d2, out=inv)
+            np.add(d2, K, out=al)
+            al *= inv
+            np.multiply(f1, inv, out=be)
+            if br < 0:
+                np.negative(be, out=be)
+            np.multiply(al, wx, out=f2)  # f2 = px
+            np.multiply(be, wy, out=tmp)
+            f2 -= tmp
+            np.multiply(al, wy, out=d)  # d = py (d no longer needed)
+            np.multiply(be, wx, out=tmp)
+            d += tmp
+            np.add(Bx, f2, out=Cx)
+            np.add(By, d, out=Cy)
+            np.arctan2(d, f2, out=t2)
+            # q = C - O2 = p - w  (into wx, wy)
+            np.subtract(f2, wx, out=wx)
+            np.subtract(d, wy, out=wy)
+            np.arctan2(wy, wx, out=t3)
+            # -1 / cross(p, q) = -2 branch / sqrt(P), NaN where the sine is below SINE_TOL
+            np.divide(-2.0 * br, f1, out=inv)
+            np.less(cond, SINE_TOL, out=bt)
+            if bt.any():
+                np.copyto(inv, np.nan, where=bt)
+            # omega2 = -(V_B . q)/cross(p,q);  omega3 = -(V_B . p)/cross(p,q)
+            np.multiply(VBx, wx, out=om2)
+            np.multiply(VBy, wy, out=tmp)
+            om2 += tmp
+            om2 *= inv
+            np.multiply(VBx, f2, out=om3)
+            np.multiply(VBy, d, out=tmp)
+            om3 += tmp
+            om3 *= inv
+            # V_C = omega3 k x q
+            np.multiply(om3, wy, out=VCx)
+            np.negative(VCx, out=VCx)
+            np.multiply(om3, wx, out=VCy)
+
+    res = {name: out[name].reshape(shape) for name in _FOURBAR_FIELDS}
+    return FourBarState(assembles=asm_all.reshape(shape), **res)
+
+
+# --------------------------------------------------------------------------------------------
+# Slider-crank
+# --------------------------------------------------------------------------------------------
+
+_SLIDER_FIELDS = ("Bx", "By", "Cx", "Cy", "theta2", "omega2", "VBx", "VBy", "VCx", "VCy",
+                  "slider_speed", "condition")
+
+
+def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, guide_angle, branch):
+    """Closed-form positions and velocities of an (offset) slider-crank, vectorised over angles.
+
+    Parameters
+    ----------
+    theta1 : float or array_like
+        Crank angle(s), direction O1 -> B (rad, CCW from +x).
+    omega1 : float or array_like
+        Crank angular velocity (rad/s, CCW positive); broadcast against ``theta1``.
+    crank_pivot : pair of float
+        Fixed pivot O1 (m).
+    crank, coupler : float
+        Link lengths |O1B| and |BC| (m), positive.
+    guide_point : pair of float
+        A point G on the straight guide of the slider pin C (m).
+    guide_angle : float
+        Direction of the guide (rad); ``e = (cos, sin)`` of it is the positive slider direction.
+    branch : {+1, -1}
+        +1: C lies AHEAD of the foot of the perpendicular from B onto the guide, measured along e;
+        -1: behind.
+
+    Returns
+    -------
+    SliderCrankState
+        Arrays of the broadcast shape of ``theta1`` and ``omega1``.
+
+    Notes
+    -----
+    Position (line-circle).  Let e = (cos g, sin g), n = k x e = (-sin g, cos g) and
+    y = (B - G) . n the signed distance of B from the guide.  The foot of the perpendicular is
+    F = B - y n, and C = F + branch h e with the half-chord h = sqrt((l - y)(l + y)), l = coupler
+    (cancellation-free; the loop closes iff |y| <= l).  So p = C - B = -y n + branch h e.
+    y is formed as y0 + crank sin(theta1 - g) with y0 = (O1 - G) . n, i.e. from
+    crank (s cos g - c sin g), to keep the digits of a small offset.
+
+    Velocity.  V_C = V_B + omega2 k x p with V_C parallel to e, i.e. V_C . n = 0.  Since
+    (k x p) . n = p . e = branch h, omega2 = -(V_B . n) / (branch h).  The slider speed is
+    V_C . e = V_B . e + omega2 (k x p) . e and (k x p) . e = cross(p, e) = y, so
+    slider_speed = V_B . e + omega2 y and V_C = slider_speed e.  The condition measure is
+    |p . e| / l = h / l.  Checked against finite differences and complex-step derivatives of
+    the positions in the tests.
+    """
+    o1x, o1y = _point("crank_pivot", crank_pivot)
+    gx, gy = _point("guide_point", guide_point)
+    r1 = _length("crank", crank)
+    l = _length("coupler", coupler)
+    g = float(guide_angle)
+    if not math.isfinite(g):
+        raise ValueError(f"guide_angle must be finite, got {guide_angle!r}")
+    br = _branch(branch)
+    th, w1, shape = _angles(theta1, omega1)
+    n = th.size
+
+    ex, ey = math.cos(g), math.sin(g)
+    nx, ny = -ey, ex
+    y0 = (o1x - gx) * nx + (o1y - gy) * ny
+    scale = r1 + l + math.hypot(o1x, o1y) + math.hypot(gx, gy)
+    tol = ASSEMBLY_RTOL * scale
+    inv_l = 1.0 / l
+
+    out = {name: np.empty(n) for name in _SLIDER_FIELDS}
+    asm_all = np.empty(n, dtype=bool)
+    m = min(CHUNK, max(n, 1))
+    c, s, y, h, tmp, px, py, inv = (np.empty(m) for _ in range(8))
+    bt = np.empty(m, dtype=bool)
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in range(0, n, CHUNK):
+            j = min(i + CHUNK, n)
+            k = j - i
+            if k != m:
+                c, s, y, h, tmp, px, py, inv = (
+                    a[:k] for a in (c, s, y, h, tmp, px, py, inv))
+                bt = bt[:k]
+                m = k
+            Bx, By, Cx, Cy, t2, om2, VBx, VBy, VCx, VCy, spd, cond = (
+                out[name][i:j] for name in _SLIDER_FIELDS)
+            asm = asm_all[i:j]
+            w = _chunk_of(w1, i, j)
+
+            _sincos(th[i:j], c, s, px, py)
+            np.multiply(c, r1, out=Bx)
+            Bx += o1x
+            np.multiply(s, r1, out=By)
+            By += o1y
+            if isinstance(w, float):
+                np.multiply(s, -w * r1, out=VBx)
+                np.multiply(c, w * r1, out=VBy)
+            else:
+                np.multiply(s, w, out=VBx)
+                VBx *= -r1
+                np.multiply(c, w, out=VBy)
+                VBy *= r1
+            # y = y0 + crank (s ex - c ey)   (signed distance of B from the guide)
+            np.multiply(s, ex * r1, out=y)
+            np.multiply(c, ey * r1, out=tmp)
+            y -= tmp
+            y += y0
+            # half-chord h = sqrt((l - y)(l + y))
+            np.subtract(l, y, out=h)
+            np.add(y, l, out=tmp)
+            np.greater_equal(h, -tol, out=asm)
+            np.greater_equal(tmp, -tol, out=bt)
+            asm &= bt
+            np.maximum(h, 0.0, out=h)
+            np.maximum(tmp, 0.0, out=tmp)
+            h *= tmp
+            np.sqrt(h, out=h)
+            if not asm.all():
+                np.copyto(tmp, asm)
+                np.divide(0.0, tmp, out=tmp)
+                h += tmp
+                Bx += tmp
+                By += tmp
+                VBx += tmp
+                VBy += tmp
+            np.multiply(h, inv_l, out=cond)
+            # p = C - B = -y n + branch h e
+            if br < 0:
+                np.negative(h, out=h)  # h now holds branch*h
+            np.multiply(y, -nx, out=px)
+            np.multiply(h, ex, out=tmp)
+            px += tmp
+            np.multiply(y, -ny, out=py)
+            np.multiply(h, ey, out=tmp)
+            py += tmp
+            np.add(Bx, px, out=Cx)
+            np.add(By, py, out=Cy)
+            np.arctan2(py, px, out=t2)
+            # omega2 = -(V_B . n) / (branch h)
+            np.divide(-1.0, h, out=inv)
+            np.less(cond, SINE_TOL, out=bt)
+            if bt.any():
+                np.copyto(inv, np.nan, where=bt)
+            np.multiply(VBx, nx, out=om2)
+            np.multiply(VBy, ny, out=tmp)
+            om2 += tmp
+            om2 *= inv
+            # slider_speed = V_B . e + omega2 y;  V_C = slider_speed e
+            np.multiply(VBx, ex, out=spd)
+            np.multiply(VBy, ey, out=tmp)
+            spd += tmp
+            np.multiply(om2, y, out=tmp)
+            spd += tmp
+            np.multiply(spd, ex, out=VCx)
+            np.multiply(spd, ey, out=VCy)
+
+    res = {name: out[name].reshape(shape) for name in _SLIDER_FIELDS}
+    return SliderCrankState(assembles=asm_all.reshape(shape), **res)
+
+
+# --------------------------------------------------------------------------------------------
+# Coupler point
+# --------------------------------------------------------------------------------------------
+
+
+def coupler_point(Bx, By, VBx, VBy, theta2, omega2, *, distance, angle):
+    """Position and velocity of a point D fixed to the coupler.
+
+    Parameters
+    ----------
+    Bx, By, VBx, VBy : array_like
+        Position (m) and velocity (m/s) of the coupler pin B, e.g. from :func:`four_bar`.
+    theta2, omega2 : array_like
+        Coupler angle (rad, direction B -> C) and angular velocity (rad/s, CCW positive).
+    distance : float
+        |BD| (m), non-negative.
+    angle : float
+        Angle of BD measured CCW from BC (rad).
+
+    Returns
+    -------
+    PointState
+        ``D = B + distance (cos(theta2 + angle), sin(theta2 + angle))`` and
+        ``V_D = V_B + omega2 k x (D - B)`` (rigid-body velocity; k x (x, y) = (-y, x)),
+        broadcast over the inputs.  NaN inputs give NaN outputs.
+    """
+    dist = float(distance)
+    if not (math.isfinite(dist) and dist >= 0.0):
+        raise ValueError(f"distance must be a non-negative finite length, got {distance!r}")
+    ang = float(angle)
+    if not math.isfinite(ang):
+        raise ValueError(f"angle must be finite, got {angle!r}")
+    arrs = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64)
+                                 for a in (Bx, By, VBx, VBy, theta2, omega2)))
+    shape = arrs[0].shape
+    bx, by, vbx, vby, t2, w2 = (np.ascontiguousarray(a).reshape(-1) for a in arrs)
+    n = bx.size
+    Dx, Dy, VDx, VDy = (np.empty(n) for _ in range(4))
+    m = min(CHUNK, max(n, 1))
+    c, s, t, u = (np.empty(m) for _ in range(4))
+    with np.errstate(invalid="ignore"):
+        for i in range(0, n, CHUNK):
+            j = min(i + CHUNK, n)
+            k = j - i
+            if k != m:
+                c, s, t, u = (a[:k] for a in (c, s, t, u))
+                m = k
+            np.add(t2[i:j], ang, out=t)
+            _sincos(t, c, s, u, Dx[i:j])  # u and the Dx slice are scratch here
+            # r = D - B = distance (c, s);  V_D = V_B + omega2 (-r_y, r_x)
+            c *= dist
+            s *= dist
+            np.add(bx[i:j], c, out=Dx[i:j])
+            np.add(by[i:j], s, out=Dy[i:j])
+            np.multiply(w2[i:j], s, out=VDx[i:j])
+            np.subtract(vbx[i:j], VDx[i:j], out=VDx[i:j])
+            np.multiply(w2[i:j], c, out=VDy[i:j])
+            VDy[i:j] += vby[i:j]
+    return PointState(Dx=Dx.reshape(shape), Dy=Dy.reshape(shape),
+                      VDx=VDx.reshape(shape), VDy=VDy.reshape(shape))

@@ -1,0 +1,133 @@
+"""Graphical against analytic: every measured value beside its vector-loop value and their difference.
+
+:func:`analytic_solution` recognises the mechanisms the analytic module solves in closed form (the
+four-bar and the slider-crank, with points fixed to any of their links) and evaluates it; it reads only
+the mechanism's dimensions, never the construction.  :func:`compare` lines the two up.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping
+
+from . import analytic
+from .geometry import Vec
+from .linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, TwoCircles, assembly_plan
+from .velocity import VelocityAnalysis
+
+AGREEMENT = 1e-9
+"""Graphical and analytic agree when they differ by less than this, relative to the reference value
+(|V| of the crank tip for velocities, |omega| of the crank for angular velocities)."""
+
+
+@dataclass(frozen=True)
+class AnalyticSolution:
+    model: str                                  # "four-bar" or "slider-crank"
+    positions: Mapping[str, Vec]
+    velocities: Mapping[str, Vec]
+    angular: Mapping[int, float]
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """One measured quantity.  ``kind`` is "velocity" (Vec values) or "angular velocity" (floats)."""
+
+    name: str
+    kind: str
+    graphical: Vec | float
+    analytic: Vec | float
+    reference: float
+
+    @property
+    def difference(self) -> float:
+        if isinstance(self.graphical, Vec):
+            return (self.graphical - self.analytic).norm()
+        return abs(self.graphical - self.analytic)
+
+    @property
+    def relative(self) -> float:
+        return self.difference / self.reference
+
+    @property
+    def agrees(self) -> bool:
+        return self.relative <= AGREEMENT
+
+
+def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolution | None:
+    """The vector-loop solution of ``m`` at ``angle``, or None for a topology it has no closed form for."""
+    plan = assembly_plan(m)
+    crank = plan[0]
+    assert isinstance(crank, CrankTip)
+    dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide))]
+    fixed = [s for s in plan if isinstance(s, FixedToLink)]
+    if len(dyads) != 1:
+        return None
+    d = dyads[0]
+    O1 = m.ground[crank.pivot]
+    b, j = crank.tip, d.joint
+    pos: dict[str, Vec] = dict(m.ground)
+    vel: dict[str, Vec] = {g: Vec(0.0, 0.0) for g in m.ground}
+    ang: dict[int, float] = {crank.link.number: omega}
+    theta: dict[int, tuple[str, float]] = {crank.link.number: (crank.pivot, angle)}
+    if isinstance(d, TwoCircles):
+        arms = {d.first: d.link_a, d.second: d.link_b}
+        ground = [c for c in arms if c in m.ground]
+        if b not in arms or len(ground) != 1:
+            return None
+        o2 = ground[0]
+        coupler, rocker = arms[b], arms[o2]
+        sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
+        s = analytic.four_bar(angle, omega, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
+                              crank=crank.link.length, coupler=coupler.length, rocker=rocker.length,
+                              branch=sign)
+        model = "four-bar"
+        ang[rocker.number] = float(s.omega3)
+        theta[rocker.number] = (o2, float(s.theta3))
+    else:
+        if d.centre != b:
+            return None
+        coupler = d.link
+        s = analytic.slider_crank(angle, omega, crank_pivot=O1.as_tuple(), crank=crank.link.length,
+                                  coupler=coupler.length, guide_point=d.slide.through.as_tuple(),
+                                  guide_angle=d.slide.angle, branch=d.branch.sign)
+        model = "slider-crank"
+        ang[d.slide.number] = 0.0
+    if not bool(s.assembles):
+        return None
+    pos[b], pos[j] = Vec(float(s.Bx), float(s.By)), Vec(float(s.Cx), float(s.Cy))
+    vel[b], vel[j] = Vec(float(s.VBx), float(s.VBy)), Vec(float(s.VCx), float(s.VCy))
+    ang[coupler.number] = float(s.omega2)
+    theta[coupler.number] = (b, float(s.theta2))
+    for f in fixed:
+        a = f.point
+        if a.link not in theta:
+            return None
+        start, th = theta[a.link]
+        # angle of the direction from a.base to the link's other joint
+        direction = th if a.base == start else th + math.pi
+        base = pos[a.base]
+        p = analytic.coupler_point(base.x, base.y, vel[a.base].x, vel[a.base].y, direction, ang[a.link],
+                                   distance=a.distance, angle=a.angle)
+        pos[a.name] = Vec(float(p.Dx), float(p.Dy))
+        vel[a.name] = Vec(float(p.VDx), float(p.VDy))
+    return AnalyticSolution(model, pos, vel, ang)
+
+
+def compare(m: Mechanism, g: VelocityAnalysis, a: AnalyticSolution) -> list[Comparison]:
+    """Absolute velocities of the moving joints and points, relative velocities, link angular
+    velocities -- each graphical value beside the analytic one."""
+    v_ref = max(v.norm() for v in g.velocities.values())
+    w_ref = max(abs(w) for w in g.angular.values())
+    out: list[Comparison] = []
+    for name, v in g.velocities.items():
+        if name not in m.ground and name in a.velocities:
+            out.append(Comparison(f"V_{name}", "velocity", v, a.velocities[name], v_ref))
+    for (j, p), v in g.relative.items():
+        if p not in m.ground and j in a.velocities and p in a.velocities:
+            out.append(Comparison(f"V_{j}{p}", "velocity", v, a.velocities[j] - a.velocities[p], v_ref))
+    driven_or_sliding = {m.crank} | {s.number for s in m.slides}
+    for n, w in sorted(g.angular.items()):
+        if n in a.angular and n not in driven_or_sliding:
+            out.append(Comparison(f"omega_{n}", "angular velocity", w, a.angular[n], w_ref))
+    return out

@@ -1,0 +1,198 @@
+"""The ``drafting`` command.
+
+    drafting                      render the built-in example (notes, velocity Example 1)
+    drafting render SCENE...      sheets as SVG, PDF and PNG
+    drafting solve SCENE --json   results in the scene's units and the analyses that ran
+    drafting check SCENE...       graphical against analytic; exit 1 on disagreement
+    drafting bench                timings of rendering and of the analytic sweep
+
+Exit codes: 0 fine, 1 graphical and analytic disagree, 2 bad input (one sentence on stderr).
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime as _dt
+import json
+import sys
+from importlib import resources
+from pathlib import Path
+from typing import Sequence
+
+from constructions.errors import ConstructionError
+
+from .scene import PAPERS, Scene, SceneError, load_scene
+from .study import Study
+
+FORMATS = ("svg", "pdf", "png")
+DEFAULT_OUT = Path("drafting-output")
+
+
+class UserError(Exception):
+    """Anything the user can fix; printed as one line, exit code 2."""
+
+
+def builtin_example() -> Path:
+    return Path(str(resources.files("drafting") / "examples" / "notes-velocity-example-1.toml"))
+
+
+def _study(path: Path, paper: str | None = None) -> Study:
+    try:
+        scene = load_scene(path)
+    except SceneError as e:
+        raise UserError(str(e)) from None
+    if paper is not None:
+        scene = _with_paper(scene, paper)
+    return Study(scene)
+
+
+def _with_paper(scene: Scene, paper: str) -> Scene:
+    from dataclasses import replace
+    return replace(scene, paper=paper)
+
+
+def _solve(study: Study) -> Study:
+    """Run what the scene asks for; construction errors become one sentence naming the file."""
+    try:
+        study.pose
+        study.velocity
+        study.comparisons
+    except ConstructionError as e:
+        raise UserError(f"{study.scene.path}: {e}") from None
+    return study
+
+
+def sheet_for(study: Study):
+    from .sheet import ResultRow, SheetInfo, compose_sheet
+    s = study.scene
+    u = s.units
+    info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
+                     date=_dt.date.today().isoformat(),
+                     units=f"{u.length}, {u.velocity}, {u.angular_velocity}",
+                     notes=study.warnings)
+    rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
+    return compose_sheet(study.construction, info, rows)
+
+
+def results_text(study: Study) -> str:
+    """The results table as aligned plain text."""
+    head = ("quantity", "graphical", "analytic", "difference")
+    rows = [head] + study.table()
+    if len(rows) == 1:
+        return f"{study.scene.title}\n  (no velocity results: the scene asks for {', '.join(study.scene.analyses)})"
+    widths = [max(len(r[i]) for r in rows) for i in range(4)]
+    lines = [study.scene.title]
+    for k, r in enumerate(rows):
+        lines.append("  " + "  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
+        if k == 0:
+            lines.append("  " + "  ".join("-" * w for w in widths))
+    bad = study.disagreements()
+    model = study.analytic.model if study.analytic else None
+    if model:
+        lines.append(f"  graphical vs analytic ({model} vector loop): "
+                     + ("agree to 1e-9 relative" if not bad else f"{len(bad)} DISAGREE beyond 1e-9 relative"))
+    for w in study.warnings:
+        lines.append(f"  warning: {w}")
+    return "\n".join(lines)
+
+
+def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper: str | None) -> int:
+    from .export import ExportError, write_sheet
+    from .layout import LayoutError
+    for path in scenes:
+        study = _solve(_study(path, paper))
+        try:
+            sheet = sheet_for(study)
+            written = write_sheet(sheet, out, path.stem, formats)
+        except (ExportError, LayoutError) as e:
+            raise UserError(f"{path}: {e}") from None
+        print(results_text(study))
+        for w in written:
+            print(f"  wrote {w}")
+    return 0
+
+
+def cmd_solve(path: Path, as_json: bool) -> int:
+    study = _solve(_study(path))
+    if as_json:
+        print(json.dumps(study.to_json(), indent=2))
+    else:
+        print(results_text(study))
+    return 0
+
+
+def cmd_check(scenes: Sequence[Path]) -> int:
+    status = 0
+    for path in scenes:
+        study = _solve(_study(path))
+        print(results_text(study))
+        if study.velocity is not None and study.analytic is None:
+            print(f"  {path}: no analytic model for this mechanism; nothing checked")
+        if study.disagreements():
+            status = 1
+    return status
+
+
+def cmd_bench(quick: bool) -> int:
+    from .bench import run_benchmarks
+    print(run_benchmarks(quick=quick))
+    return 0
+
+
+def _formats(text: str) -> list[str]:
+    out = [f.strip().lower() for f in text.split(",") if f.strip()]
+    bad = [f for f in out if f not in FORMATS]
+    if bad or not out:
+        raise argparse.ArgumentTypeError(f"unknown format {bad[0] if bad else text!r}; choose from {','.join(FORMATS)}")
+    return out
+
+
+def parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="drafting", description=(
+        "Draw the graphical methods of the theory of machines step by step on true-scale sheets, "
+        "checked against the analytic answer. With no command, renders the built-in example "
+        "(the notes' slider-crank velocity Example 1) into ./drafting-output."))
+    sub = p.add_subparsers(dest="command")
+    r = sub.add_parser("render", help="render scene files to sheets (SVG, PDF, PNG)",
+                       description="Render each scene to a sheet and print its results table.")
+    r.add_argument("scenes", nargs="+", type=Path, metavar="SCENE", help="scene files (TOML)")
+    r.add_argument("-o", "--out", type=Path, default=DEFAULT_OUT, help="output folder (default: %(default)s)")
+    r.add_argument("--format", type=_formats, default=list(FORMATS), help="comma-separated: svg,pdf,png (default: all)")
+    r.add_argument("--paper", choices=PAPERS, help="override the scene's paper size")
+    s = sub.add_parser("solve", help="solve a scene and print its results",
+                       description="Solve a scene; with --json print machine-readable results in the "
+                                   "scene's units and the list of analyses that ran.")
+    s.add_argument("scene", type=Path, metavar="SCENE")
+    s.add_argument("--json", action="store_true", help="print JSON")
+    c = sub.add_parser("check", help="compare graphical and analytic results",
+                       description="Compare every graphical result with the analytic (vector-loop) one; "
+                                   "exit 1 if any differs by more than 1e-9 relative.")
+    c.add_argument("scenes", nargs="+", type=Path, metavar="SCENE")
+    b = sub.add_parser("bench", help="measure rendering and analytic sweep speed",
+                       description="Time the default sheet to SVG/PDF/PNG and the analytic sweep over "
+                                   "1e3..1e7 crank angles, side by side in one run.")
+    b.add_argument("--quick", action="store_true", help="fewer repeats and sizes up to 1e6")
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = parser().parse_args(argv)
+    try:
+        if args.command is None:
+            return cmd_render([builtin_example()], DEFAULT_OUT, FORMATS, None)
+        if args.command == "render":
+            return cmd_render(args.scenes, args.out, args.format, args.paper)
+        if args.command == "solve":
+            return cmd_solve(args.scene, args.json)
+        if args.command == "check":
+            return cmd_check(args.scenes)
+        if args.command == "bench":
+            return cmd_bench(args.quick)
+    except UserError as e:
+        print(f"drafting: error: {e}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,303 @@
+"""Scene files (TOML) -> a validated :class:`Scene`.
+
+Every problem is reported as one :class:`SceneError` sentence naming the file, the key and what is
+wrong.  The format is documented in README.md ("Scene files").
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from constructions.errors import DegenerateInput
+from constructions.geometry import Vec
+from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan
+
+from .units import DEFAULT_UNITS, UnitError, check_unit, format_value, to_si
+
+ANALYSES = ("position", "velocity")
+PLANNED = ("acceleration", "forces", "static forces", "dynamic forces")
+PAPERS = ("A4", "A3")
+ORIENTATIONS = ("landscape", "portrait")
+
+TOP_KEYS = {"drawing", "units", "frame", "link", "slider", "point", "input", "assembly", "ask"}
+
+
+class SceneError(Exception):
+    """Bad scene input: ``str(error)`` is one sentence naming the file and the key."""
+
+    def __init__(self, path: Path | str, key: str, problem: str) -> None:
+        self.path, self.key, self.problem = str(path), key, problem
+        super().__init__(f"{path}: {key}: {problem}" if key else f"{path}: {problem}")
+
+
+@dataclass(frozen=True)
+class Units:
+    length: str = DEFAULT_UNITS["length"]
+    velocity: str = DEFAULT_UNITS["velocity"]
+    angular_velocity: str = DEFAULT_UNITS["angular velocity"]
+    angle: str = DEFAULT_UNITS["angle"]
+
+    def of(self, kind: str) -> str:
+        return {"length": self.length, "velocity": self.velocity, "angular velocity": self.angular_velocity,
+                "angle": self.angle}[kind]
+
+    def format(self, kind: str, value: float) -> str:
+        """An SI value in this scene's unit of ``kind`` (the engine's Formatter signature)."""
+        return format_value(value, kind, self.of(kind))
+
+
+@dataclass(frozen=True)
+class Scene:
+    path: Path
+    title: str
+    drawing_number: str
+    paper: str
+    orientation: str
+    units: Units
+    mechanism: Mechanism
+    angle: float          # crank angle, rad CCW from +x
+    omega: float          # crank angular velocity, rad/s CCW positive
+    analyses: tuple[str, ...]
+    find: tuple[str, ...] | None
+
+
+def load_scene(path: Path | str) -> Scene:
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise SceneError(path, "", "no such scene file") from None
+    except (OSError, UnicodeDecodeError) as e:
+        raise SceneError(path, "", f"cannot be read ({e.__class__.__name__}: {e})") from None
+    return parse_scene(text, path)
+
+
+def parse_scene(text: str, path: Path | str = "<scene>") -> Scene:
+    path = Path(path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise SceneError(path, "", f"is not valid TOML ({e})") from None
+    return _Reader(path, data).scene()
+
+
+class _Reader:
+    def __init__(self, path: Path, data: dict[str, Any]) -> None:
+        self.path, self.data = path, data
+
+    # -- helpers ---------------------------------------------------------------------------------
+    def fail(self, key: str, problem: str) -> SceneError:
+        return SceneError(self.path, key, problem)
+
+    def table(self, key: str, allowed: set[str], required: set[str] = frozenset(), value=None) -> dict:
+        t = self.data.get(key, {}) if value is None else value
+        if not isinstance(t, dict):
+            raise self.fail(key, "must be a table")
+        unknown = sorted(set(t) - allowed)
+        if unknown:
+            raise self.fail(f"{key}.{unknown[0]}", f"unknown key; allowed here: {', '.join(sorted(allowed))}")
+        missing = sorted(required - set(t))
+        if missing:
+            raise self.fail(f"{key}.{missing[0]}", "is missing")
+        return t
+
+    def named_table(self, key: str) -> dict:
+        """A table whose keys are names the user chooses (pivots, joints)."""
+        t = self.data.get(key, {})
+        if not isinstance(t, dict):
+            raise self.fail(key, "must be a table of names, e.g. O1 = [0, 0]")
+        return t
+
+    def array(self, key: str) -> list[dict]:
+        v = self.data.get(key, [])
+        if not isinstance(v, list) or not all(isinstance(x, dict) for x in v):
+            raise self.fail(key, f"must be written as [[{key}]] tables")
+        return v
+
+    def quantity(self, key: str, value: Any, kind: str, units: Units) -> float:
+        try:
+            return to_si(value, kind, units.of(kind))
+        except UnitError as e:
+            raise self.fail(key, str(e)) from None
+
+    def point(self, key: str, value: Any, units: Units) -> Vec:
+        if not (isinstance(value, list) and len(value) == 2):
+            raise self.fail(key, "must be a point [x, y], e.g. [0, 0] or [\"0 mm\", \"25 mm\"]")
+        x = self.quantity(key, value[0], "length", units)
+        y = self.quantity(key, value[1], "length", units)
+        return Vec(x, y)
+
+    def text(self, key: str, value: Any) -> str:
+        if not isinstance(value, str) or not value.strip():
+            raise self.fail(key, "must be a non-empty string")
+        return value.strip()
+
+    def name(self, key: str, value: Any) -> str:
+        v = self.text(key, value)
+        if not re.fullmatch(r"[A-Za-z][A-Za-z0-9]*", v):
+            raise self.fail(key, f"{v!r} is not a joint name (a letter then letters or digits, e.g. B or O2)")
+        return v
+
+    def number(self, key: str, value: Any) -> int:
+        if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+            raise self.fail(key, "must be a link number, a whole number from 1")
+        return value
+
+    # -- sections --------------------------------------------------------------------------------
+    def scene(self) -> Scene:
+        unknown = sorted(set(self.data) - TOP_KEYS)
+        if unknown:
+            raise self.fail(unknown[0], f"unknown key; a scene has {', '.join(sorted(TOP_KEYS))}")
+        drawing = self.table("drawing", {"title", "number", "paper", "orientation"})
+        title = self.text("drawing.title", drawing.get("title", self.path.stem))
+        number = self.text("drawing.number", drawing.get("number", "TOM-000"))
+        paper = drawing.get("paper", "A4")
+        if paper not in PAPERS:
+            raise self.fail("drawing.paper", f"{paper!r} is not a paper size; use {' or '.join(PAPERS)}")
+        orientation = drawing.get("orientation", "landscape")
+        if orientation not in ORIENTATIONS:
+            raise self.fail("drawing.orientation", f"{orientation!r} must be landscape or portrait")
+        units = self.units()
+        mechanism, angle, omega = self.mechanism(units)
+        ask = self.table("ask", {"analyses", "find"})
+        analyses = ask.get("analyses", ["velocity"])
+        if not isinstance(analyses, list) or not all(isinstance(a, str) for a in analyses) or not analyses:
+            raise self.fail("ask.analyses", "must be a list of analyses, e.g. [\"velocity\"]")
+        for a in analyses:
+            if a in PLANNED:
+                raise self.fail("ask.analyses", f"{a!r} is not available yet; this version draws "
+                                                f"{' and '.join(ANALYSES)}")
+            if a not in ANALYSES:
+                raise self.fail("ask.analyses", f"{a!r} is not an analysis; choose from {', '.join(ANALYSES)}")
+        find = ask.get("find")
+        if find is not None and (not isinstance(find, list) or not all(isinstance(f, str) for f in find)):
+            raise self.fail("ask.find", "must be a list of quantities, e.g. [\"V_C\", \"omega_2\"]")
+        return Scene(self.path, title, number, paper, orientation, units, mechanism, angle, omega,
+                     tuple(dict.fromkeys(analyses)), tuple(find) if find is not None else None)
+
+    def units(self) -> Units:
+        t = self.table("units", {"length", "velocity", "angular_velocity", "angle"})
+        out = {}
+        for key, kind in (("length", "length"), ("velocity", "velocity"),
+                          ("angular_velocity", "angular velocity"), ("angle", "angle")):
+            if key in t:
+                try:
+                    out[key] = check_unit(self.text(f"units.{key}", t[key]), kind)
+                except UnitError as e:
+                    raise self.fail(f"units.{key}", str(e)) from None
+        return Units(**out)
+
+    def mechanism(self, units: Units) -> tuple[Mechanism, float, float]:
+        frame = self.named_table("frame")
+        if not frame:
+            raise self.fail("frame", "is missing: name the fixed pivots, e.g. O1 = [0, 0]")
+        ground = {self.name(f"frame.{n}", n): self.point(f"frame.{n}", p, units) for n, p in frame.items()}
+
+        links: list[Link] = []
+        for i, t in enumerate(self.array("link"), 1):
+            k = f"link[{i}]"
+            self.table(k, {"number", "joints", "length"}, {"number", "joints", "length"}, value=t)
+            n = self.number(f"{k}.number", t["number"])
+            joints = t["joints"]
+            if not (isinstance(joints, list) and len(joints) == 2):
+                raise self.fail(f"{k}.joints", "must name the two joints of the link, e.g. [\"B\", \"C\"]")
+            a, b = (self.name(f"{k}.joints", j) for j in joints)
+            if a == b:
+                raise self.fail(f"{k}.joints", f"a link needs two different joints, not {a} twice")
+            length = self.quantity(f"{k}.length", t["length"], "length", units)
+            if length <= 0:
+                raise self.fail(f"{k}.length", "must be positive")
+            if any(x.number == n for x in links):
+                raise self.fail(f"{k}.number", f"link {n} is defined twice")
+            links.append(Link(n, (a, b), length))
+        if not links:
+            raise self.fail("link", "is missing: a mechanism needs [[link]] tables")
+        joints = {j for x in links for j in x.joints}
+
+        slides: list[Slide] = []
+        for i, t in enumerate(self.array("slider"), 1):
+            k = f"slider[{i}]"
+            self.table(k, {"number", "joint", "through", "angle"}, {"number", "joint", "through"}, value=t)
+            n = self.number(f"{k}.number", t["number"])
+            if any(x.number == n for x in links) or any(s.number == n for s in slides):
+                raise self.fail(f"{k}.number", f"link {n} is already used")
+            j = self.name(f"{k}.joint", t["joint"])
+            if j not in joints:
+                raise self.fail(f"{k}.joint", f"joint {j} is on no link")
+            slides.append(Slide(n, j, self.point(f"{k}.through", t["through"], units),
+                                self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)))
+
+        attached: list[Attached] = []
+        for i, t in enumerate(self.array("point"), 1):
+            k = f"point[{i}]"
+            self.table(k, {"name", "link", "from", "distance", "angle"}, {"name", "link", "from", "distance"},
+                       value=t)
+            nm = self.name(f"{k}.name", t["name"])
+            if nm in joints or nm in ground:
+                raise self.fail(f"{k}.name", f"{nm} is already a joint")
+            ln = self.number(f"{k}.link", t["link"])
+            link = next((x for x in links if x.number == ln), None)
+            if link is None:
+                raise self.fail(f"{k}.link", f"there is no link {ln}")
+            base = self.name(f"{k}.from", t["from"])
+            if base not in link.joints:
+                raise self.fail(f"{k}.from", f"{base} is not a joint of link {ln} ({'-'.join(link.joints)})")
+            dist = self.quantity(f"{k}.distance", t["distance"], "length", units)
+            if dist <= 0:
+                raise self.fail(f"{k}.distance", "must be positive")
+            attached.append(Attached(nm, ln, base, dist, self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)))
+
+        inp = self.table("input", {"link", "angle", "omega", "tip_speed", "sense"}, {"link", "angle"})
+        crank_no = self.number("input.link", inp["link"])
+        crank = next((x for x in links if x.number == crank_no), None)
+        if crank is None:
+            raise self.fail("input.link", f"there is no link {crank_no}")
+        if sum(j in ground for j in crank.joints) != 1:
+            raise self.fail("input.link", f"link {crank_no} must join one fixed pivot in [frame] to a moving joint")
+        angle = self.quantity("input.angle", inp["angle"], "angle", units)
+        sense = inp.get("sense")
+        if sense not in (None, "ccw", "cw"):
+            raise self.fail("input.sense", f"{sense!r} must be \"ccw\" or \"cw\"")
+        if ("omega" in inp) == ("tip_speed" in inp):
+            raise self.fail("input", "give exactly one of omega (e.g. \"10 rad/s\", \"120 rpm\") or "
+                                     "tip_speed (e.g. \"500 mm/s\")")
+        if "omega" in inp:
+            omega = self.quantity("input.omega", inp["omega"], "angular velocity", units)
+        else:
+            speed = self.quantity("input.tip_speed", inp["tip_speed"], "velocity", units)
+            if speed < 0:
+                raise self.fail("input.tip_speed", "is a speed: give it positive and set sense = \"cw\" or \"ccw\"")
+            omega = speed / crank.length
+        if sense is not None:
+            omega = abs(omega) if sense == "ccw" else -abs(omega)
+        if omega == 0 or not math.isfinite(omega):
+            raise self.fail("input", "the crank must turn: omega or tip_speed must not be zero")
+
+        assembly = self.named_table("assembly")
+        branches = {self.name(f"assembly.{j}", j): self.branch(f"assembly.{j}", v) for j, v in assembly.items()}
+        for j in branches:
+            if j not in joints:
+                raise self.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
+        m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
+        try:
+            assembly_plan(m)
+        except DegenerateInput as e:
+            key = "assembly" if "branch" in str(e) or "assemblies" in str(e) else "link"
+            raise self.fail(key, str(e)) from None
+        return m, angle, omega
+
+    def branch(self, key: str, value: Any) -> Branch:
+        v = self.text(key, value)
+        m = re.fullmatch(r"(left|right)\s+of\s+([A-Za-z][A-Za-z0-9]*)\s*->\s*([A-Za-z][A-Za-z0-9]*)", v)
+        if m:
+            return Branch(1 if m[1] == "left" else -1, (m[2], m[3]))
+        m = re.fullmatch(r"(ahead of|behind)\s+([A-Za-z][A-Za-z0-9]*)", v)
+        if m:
+            return Branch(1 if m[1] == "ahead of" else -1, (m[2],))
+        raise self.fail(key, f"{v!r} is not a branch; write e.g. \"left of B->O2\", \"right of B->O2\", "
+                             f"\"ahead of B\" or \"behind B\"")
