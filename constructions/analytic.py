@@ -68,7 +68,7 @@ SINE_TOL = 1e-12
 ASSEMBLY_RTOL = 64 * np.finfo(np.float64).eps
 
 #: Number of crank angles processed per chunk (tuned on a 2 MB-L2 Xeon; 2**13..2**15 are all close).
-CHUNK = 2**14
+CHUNK = 2**15
 
 # 2*pi split into three parts for Cody-Waite argument reduction: _TWO_PI_1 and _TWO_PI_2 carry 30
 # significant bits each, so k*_TWO_PI_1 and k*_TWO_PI_2 are exact for |k| < 2**23; _TWO_PI_3 is the
@@ -81,6 +81,7 @@ _Q1 = _TWO_PI_1 / 4.0
 _Q2 = _TWO_PI_2 / 4.0
 _Q3 = _TWO_PI_3 / 4.0
 _INV_TWO_PI = 0.15915494309189535
+_TWO_PI_FL = 6.283185307179586  # 2 pi rounded to double
 _FAST_TRIG_LIMIT = 1.0e6  # |theta| up to this uses the fast path (|k| < 2**18, products exact)
 
 
@@ -263,22 +264,31 @@ def _sincos(th, c, s, t, u):
     tau = tan(r/4) in [-1, 1] the half-angle identities give cos(r/2) = (1 - tau^2)/(1 + tau^2),
     sin(r/2) = 2 tau/(1 + tau^2), and the double-angle identities give
     cos r = (cos(r/2) - sin(r/2)) (cos(r/2) + sin(r/2)), sin r = 2 sin(r/2) cos(r/2).
-    Every step is a few ulp; the absolute error is a few 1e-16.
+    Every step is a few ulp; the absolute error is a few 1e-16.  When |th| <= 2 pi (the usual sweep)
+    the reduction is skipped: tan(th/4) is then finite and the same formulas hold for r = th.
+    NaN or |th| > 1e6 falls back to np.cos/np.sin.
     """
-    if th.size and float(np.max(np.abs(th))) > _FAST_TRIG_LIMIT:
+    if th.size == 0:
+        return
+    lo = float(th.min())
+    hi = float(th.max())
+    if not (-_FAST_TRIG_LIMIT <= lo and hi <= _FAST_TRIG_LIMIT):  # also catches NaN
         np.cos(th, out=c)
         np.sin(th, out=s)
         return
-    # k = rint(th / 2pi) into t; quarter reduced angle into u
-    np.multiply(th, _INV_TWO_PI, out=t)
-    np.rint(t, out=t)
     np.multiply(th, 0.25, out=u)  # exact
-    np.multiply(t, _Q1, out=c)  # exact product
-    u -= c
-    np.multiply(t, _Q2, out=c)
-    u -= c
-    np.multiply(t, _Q3, out=c)
-    u -= c
+    if not (-_TWO_PI_FL <= lo and hi <= _TWO_PI_FL):
+        # k = rint(th / 2pi); u = th/4 - k (2pi/4), three-part, each product exact
+        np.multiply(th, _INV_TWO_PI, out=t)
+        np.rint(t, out=t)
+        np.multiply(t, _Q1, out=c)
+        u -= c
+        np.multiply(t, _Q2, out=c)
+        u -= c
+        np.multiply(t, _Q3, out=c)
+        u -= c
+    # else |th| <= 2pi: no reduction needed, |th/4| <= pi/2 rounded, tan stays finite (<= 1.7e16)
+    # and the formulas below stay accurate to a few ulp even as tau grows large.
     np.tan(u, out=u)  # tau
     np.multiply(u, u, out=t)  # tau^2
     np.add(t, 1.0, out=c)  # 1 + tau^2
@@ -385,9 +395,11 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
             _sincos(th[i:j], c, s, wx, wy)
             # B = O1 + crank (cos, sin);  V_B = omega1 k x (B - O1) = omega1 crank (-sin, cos)
             np.multiply(c, r1, out=Bx)
-            Bx += o1x
+            if o1x:
+                Bx += o1x
             np.multiply(s, r1, out=By)
-            By += o1y
+            if o1y:
+                By += o1y
             if isinstance(w, float):
                 np.multiply(s, -w * r1, out=VBx)
                 np.multiply(c, w * r1, out=VBy)
@@ -406,14 +418,17 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
             # gap factors (S - d) and (d - T): exact differences near tangency
             np.subtract(S, d, out=f1)
             np.subtract(d, T, out=f2)
-            np.greater_equal(f1, -tol, out=asm)
-            np.greater_equal(f2, -tol, out=bt)
-            asm &= bt
-            if check_d0:
-                np.greater(d2, 0.0, out=bt)
+            if f1.min() >= 0.0 and f2.min() >= 0.0 and not (check_d0 and d2.min() <= 0.0):
+                asm.fill(True)  # fast path: the loop closes at every angle of the chunk
+            else:
+                np.greater_equal(f1, -tol, out=asm)
+                np.greater_equal(f2, -tol, out=bt)
                 asm &= bt
-            np.maximum(f1, 0.0, out=f1)  # snap rounding-level negatives to tangency
-            np.maximum(f2, 0.0, out=f2)
+                if check_d0:
+                    np.greater(d2, 0.0, out=bt)
+                    asm &= bt
+                np.maximum(f1, 0.0, out=f1)  # snap rounding-level negatives to tangency
+                np.maximum(f2, 0.0, out=f2)
             np.add(d, S, out=tmp)
             f1 *= tmp
             np.add(d, T, out=tmp)
@@ -452,8 +467,8 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
             np.arctan2(wy, wx, out=t3)
             # -1 / cross(p, q) = -2 branch / sqrt(P), NaN where the sine is below SINE_TOL
             np.divide(-2.0 * br, f1, out=inv)
-            np.less(cond, SINE_TOL, out=bt)
-            if bt.any():
+            if not cond.min() >= SINE_TOL:  # (NaN min also lands here)
+                np.less(cond, SINE_TOL, out=bt)
                 np.copyto(inv, np.nan, where=bt)
             # omega2 = -(V_B . q)/cross(p,q);  omega3 = -(V_B . p)/cross(p,q)
             np.multiply(VBx, wx, out=om2)
@@ -563,9 +578,11 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
 
             _sincos(th[i:j], c, s, px, py)
             np.multiply(c, r1, out=Bx)
-            Bx += o1x
+            if o1x:
+                Bx += o1x
             np.multiply(s, r1, out=By)
-            By += o1y
+            if o1y:
+                By += o1y
             if isinstance(w, float):
                 np.multiply(s, -w * r1, out=VBx)
                 np.multiply(c, w * r1, out=VBy)
@@ -582,11 +599,14 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
             # half-chord h = sqrt((l - y)(l + y))
             np.subtract(l, y, out=h)
             np.add(y, l, out=tmp)
-            np.greater_equal(h, -tol, out=asm)
-            np.greater_equal(tmp, -tol, out=bt)
-            asm &= bt
-            np.maximum(h, 0.0, out=h)
-            np.maximum(tmp, 0.0, out=tmp)
+            if h.min() >= 0.0 and tmp.min() >= 0.0:
+                asm.fill(True)  # fast path: C reaches the guide at every angle of the chunk
+            else:
+                np.greater_equal(h, -tol, out=asm)
+                np.greater_equal(tmp, -tol, out=bt)
+                asm &= bt
+                np.maximum(h, 0.0, out=h)  # snap rounding-level negatives to tangency
+                np.maximum(tmp, 0.0, out=tmp)
             h *= tmp
             np.sqrt(h, out=h)
             if not asm.all():
@@ -612,8 +632,8 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
             np.arctan2(py, px, out=t2)
             # omega2 = -(V_B . n) / (branch h)
             np.divide(-1.0, h, out=inv)
-            np.less(cond, SINE_TOL, out=bt)
-            if bt.any():
+            if not cond.min() >= SINE_TOL:  # (NaN min also lands here)
+                np.less(cond, SINE_TOL, out=bt)
                 np.copyto(inv, np.nan, where=bt)
             np.multiply(VBx, nx, out=om2)
             np.multiply(VBy, ny, out=tmp)

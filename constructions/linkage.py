@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Mapping
 
 from .errors import CannotAssemble, DegenerateInput
+from .formatting import Formatter, si_format
 from .geometry import (Circle, Contact, Intersection, Line, Tolerance, Vec, intersect_circles,
                        intersect_line_circle)
 from .record import Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role
@@ -228,7 +229,8 @@ def describe_angle(angle: float) -> str:
     return f"crank angle {math.degrees(angle):.6g} deg"
 
 
-def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None) -> Pose:
+def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None, *,
+           fmt: Formatter = si_format) -> Pose:
     """Construct the mechanism at crank ``angle`` (radians, CCW from +x)."""
     plan = assembly_plan(m) if plan is None else plan
     tol = m.tolerance()
@@ -255,9 +257,11 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None)
             ca = Circle(pos[step.first], step.link_a.length)
             cb = Circle(pos[step.second], step.link_b.length)
             hit = intersect_circles(ca, cb, tol)
-            p = _pick(hit, step.branch, step.joint, where,
-                      f"the circle of radius {step.link_a.label} about {step.first} and the circle "
-                      f"of radius {step.link_b.label} about {step.second}")
+            p = _pick(hit, step.branch, step.joint, where, fmt,
+                      f"the circle of link {step.link_a.number} ({step.link_a.label} = "
+                      f"{fmt('length', step.link_a.length)}) about {step.first} and the circle of link "
+                      f"{step.link_b.number} ({step.link_b.label} = {fmt('length', step.link_b.length)}) "
+                      f"about {step.second}")
             pos[step.joint] = p
             cond[step.joint] = hit.condition
             rec = rec.then(
@@ -275,9 +279,10 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None)
             c = Circle(pos[step.centre], step.link.length)
             line = step.slide.line
             hit = intersect_line_circle(line, c, tol)
-            p = _pick(hit, step.branch, step.joint, where,
-                      f"the circle of radius {step.link.label} about {step.centre} and the guide "
-                      f"of {step.joint}")
+            p = _pick(hit, step.branch, step.joint, where, fmt,
+                      f"the circle of link {step.link.number} ({step.link.label} = "
+                      f"{fmt('length', step.link.length)}) about {step.centre} and the guide of "
+                      f"{step.joint}")
             pos[step.joint] = p
             cond[step.joint] = hit.condition
             rec = rec.then(
@@ -302,18 +307,14 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None)
     return Pose(angle, pos, rec, cond)
 
 
-def _pick(hit: Intersection, branch: Branch, joint: str, where: str, loci: str) -> Vec:
+def _pick(hit: Intersection, branch: Branch, joint: str, where: str, fmt: Formatter, loci: str) -> Vec:
     if hit.contact is Contact.APART:
-        raise CannotAssemble(f"{loci} do not meet (they miss by {_fmt_len(hit.gap)}), so {joint} "
+        raise CannotAssemble(f"{loci} do not meet (they miss by {fmt('length', hit.gap)}), so {joint} "
                              f"cannot be placed", position=where)
     if hit.contact is Contact.TANGENT:
         return hit.points[0]
     # TwoCircles: points are (left, right) of first->second; CircleAndGuide: (ahead, behind).
     return hit.points[0] if branch.sign > 0 else hit.points[1]
-
-
-def _fmt_len(metres: float) -> str:
-    return f"{metres * 1e3:.4g} mm"
 
 
 def _arc_through(name: str, circle: Circle, p: Vec, span: float = math.radians(24)) -> Arc:

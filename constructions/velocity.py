@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable, Mapping
+from typing import Mapping
 
 from .errors import DegenerateInput, IndeterminatePosition
+from .formatting import Formatter, si_format
 from .geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
 from .linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, TwoCircles,
                       assembly_plan, describe_angle)
@@ -27,15 +28,6 @@ conditioning of the measured values grows like 1/sine^2, so above 1e-4 they keep
 
 WARN_SINE = 1e-2
 """Below this the values are returned with a warning and an error estimate."""
-
-Formatter = Callable[[str, float], str]
-"""Formats an SI value of a named quantity ("length", "velocity", "angular velocity", "angle")."""
-
-
-def si_format(quantity: str, value: float) -> str:
-    unit = {"length": "m", "velocity": "m/s", "angular velocity": "rad/s", "angle": "rad"}[quantity]
-    return f"{value:.4g} {unit}"
-
 
 SCALE_SERIES = (1.0, 2.0, 5.0)
 

@@ -33,7 +33,7 @@ class Study:
     def pose(self) -> Pose:
         self._mark("position")
         m = self.scene.mechanism
-        return locate(m, self.scene.angle, assembly_plan(m))
+        return locate(m, self.scene.angle, assembly_plan(m), fmt=self.scene.units.format)
 
     @cached_property
     def velocity(self) -> VelocityAnalysis | None:

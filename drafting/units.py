@@ -38,7 +38,7 @@ def _quantity(text: str) -> pint.Quantity:
     try:
         return registry().Quantity(text)
     except Exception as e:  # pint's parser raises assorted error types on garbage
-        raise UnitError(f"{text!r} is not a quantity with a unit that can be read") from e
+        raise UnitError(f"{text!r} cannot be read as a number with a unit (e.g. \"50 mm\")") from e
 
 
 def check_unit(unit: str, kind: str) -> str:

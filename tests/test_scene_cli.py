@@ -1,0 +1,216 @@
+"""Scene files, the lazy study and the `drafting` command, with the bad inputs a user will make."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from drafting.cli import builtin_example, main
+from drafting.scene import SceneError, load_scene, parse_scene
+from drafting.study import Study
+
+ROOT = Path(__file__).resolve().parents[1]
+GALLERY = ROOT / "gallery"
+EXAMPLE = builtin_example().read_text()
+
+
+def write(tmp_path: Path, text: str, name: str = "scene.toml") -> Path:
+    p = tmp_path / name
+    p.write_text(text)
+    return p
+
+
+def run(args: list[str], capsys) -> tuple[int, str, str]:
+    code = main(args)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+# -- reading scenes -------------------------------------------------------------------------------------
+
+def test_builtin_example_reads_in_si():
+    s = load_scene(builtin_example())
+    assert s.mechanism.link(1).length == pytest.approx(0.050, rel=1e-15)
+    assert s.mechanism.link(2).length == pytest.approx(0.094, rel=1e-15)
+    assert s.angle == pytest.approx(math.radians(70), rel=1e-15)
+    assert s.omega == pytest.approx(10.0, rel=1e-15)      # 500 mm/s / 50 mm, counter-clockwise
+    assert s.analyses == ("velocity",)
+
+
+@pytest.mark.parametrize("text,omega", [
+    ('omega = "120 rpm"', 4 * math.pi),
+    ('omega = "-10 rad/s"', -10.0),
+    ('omega = "10 rad/s"\nsense = "cw"', -10.0),
+    ('tip_speed = "0.5 m/s"\nsense = "cw"', -10.0),
+])
+def test_input_speed_units(text, omega):
+    s = parse_scene(EXAMPLE.replace('tip_speed = "500 mm/s"\nsense = "ccw"', text))
+    assert s.omega == pytest.approx(omega, rel=1e-12)
+
+
+def test_values_may_carry_their_own_units():
+    s = parse_scene(EXAMPLE.replace("length = 94", 'length = "3.7 in"'))
+    assert s.mechanism.link(2).length == pytest.approx(3.7 * 0.0254, rel=1e-12)
+
+
+BAD = [
+    # (replace this, with this, key named in the message, words in the message)
+    ("[input]", "[inputs]", "inputs", "unknown key"),
+    ("joints = [\"B\", \"C\"]\nlength = 94", "joints = [\"B\", \"C\"]\nlength = 94\nmass = 3", "link[2].mass", "unknown key"),
+    ("length = 94", 'length = "94 mm/s"', "link[2].length", "not a value of length"),
+    ('tip_speed = "500 mm/s"', 'tip_speed = "500 mm"', "input.tip_speed", "not a value of velocity"),
+    ('angle = "70 deg"', 'angle = "seventy"', "input.angle", "cannot be read"),
+    ('C = "ahead of B"', 'C = "somewhere"', "assembly.C", "not a branch"),
+    ('C = "ahead of B"', 'C = "left of B->O1"', "assembly", "relative to the joints"),
+    ('[assembly]\nC = "ahead of B"', '', "assembly", "choose one"),
+    ('joint = "C"', 'joint = "E"', "slider[1].joint", "on no link"),
+    ('analyses = ["velocity"]', 'analyses = ["acceleration"]', "ask.analyses", "not available yet"),
+    ('paper = "A4"', 'paper = "Letter"', "drawing.paper", "not a paper size"),
+]
+
+
+@pytest.mark.parametrize("old,new,key,words", BAD)
+def test_bad_scene_names_file_and_key(tmp_path, capsys, old, new, key, words):
+    assert old in EXAMPLE
+    p = write(tmp_path, EXAMPLE.replace(old, new, 1))
+    with pytest.raises(SceneError) as e:
+        load_scene(p)
+    assert str(p) in str(e.value) and key in str(e.value) and words in str(e.value)
+    code, out, err = run(["solve", str(p)], capsys)
+    assert code == 2
+    assert err.count("\n") == 1 and err.startswith("drafting: error: ") and key in err
+    assert "Traceback" not in err
+
+
+def test_missing_joint_link(tmp_path, capsys):
+    """A slider-crank whose slider table is missing: C hangs on one link."""
+    text = EXAMPLE.split("[[slider]]")[0] + "[input]" + EXAMPLE.split("[input]")[1]
+    p = write(tmp_path, text)
+    code, out, err = run(["solve", str(p)], capsys)
+    assert code == 2 and "joint C cannot be constructed" in err and str(p) in err
+
+
+def test_garbage_toml(tmp_path, capsys):
+    p = write(tmp_path, "this is [not toml = = =")
+    code, out, err = run(["render", str(p), "-o", str(tmp_path / "out")], capsys)
+    assert code == 2 and "is not valid TOML" in err and str(p) in err
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_missing_file(tmp_path, capsys):
+    code, out, err = run(["solve", str(tmp_path / "nope.toml")], capsys)
+    assert code == 2 and "no such scene file" in err
+
+
+def test_link_too_short_to_assemble(tmp_path, capsys):
+    """A coupler of 30 mm cannot reach the guide from B, 47 mm above it."""
+    p = write(tmp_path, EXAMPLE.replace("length = 94", "length = 30"))
+    code, out, err = run(["render", str(p), "-o", str(tmp_path / "out")], capsys)
+    assert code == 2
+    assert str(p) in err and "crank angle 70 deg" in err and "link 2 (BC = 30.00 mm)" in err
+    assert "do not meet (they miss by 16.98 mm)" in err
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_singular_position_is_reported(tmp_path, capsys):
+    """Offset slider-crank at its limit position: coupler square to the guide."""
+    text = EXAMPLE.replace("length = 94", "length = 40").replace('angle = "70 deg"', 'angle = "90 deg"') \
+        .replace("through = [0, 0]", "through = [0, 10]")
+    p = write(tmp_path, text)
+    code, out, err = run(["solve", str(p)], capsys)
+    assert code == 2 and "limit position" in err and "crank angle 90 deg" in err
+
+
+# -- the lazy study ---------------------------------------------------------------------------------------
+
+def test_velocity_scene_builds_nothing_else(capsys):
+    code, out, err = run(["solve", str(builtin_example()), "--json"], capsys)
+    assert code == 0
+    data = json.loads(out)
+    assert data["analyses"] == ["position", "velocity", "analytic check"]
+    assert "acceleration" not in out and "force" not in out
+    assert data["velocity"]["V_C"]["magnitude"] == pytest.approx(568.536, abs=1e-3)
+    assert data["angular_velocity"]["omega_2"]["sense"] == "cw"
+    assert data["check"]["agrees"] is True
+
+
+def test_position_only_scene_draws_no_polygon(tmp_path, capsys):
+    p = write(tmp_path, EXAMPLE.replace('analyses = ["velocity"]', 'analyses = ["position"]'))
+    study = Study(load_scene(p))
+    assert study.velocity is None and study.analytic is None
+    assert study.ran == []                    # nothing computed until asked
+    study.construction
+    assert study.ran == ["position"]
+    code, out, err = run(["solve", str(p), "--json"], capsys)
+    data = json.loads(out)
+    assert data["analyses"] == ["position"] and "velocity" not in data
+
+
+def test_find_selects_rows():
+    s = parse_scene(EXAMPLE.replace('analyses = ["velocity"]', 'analyses = ["velocity"]\nfind = ["V_C", "omega_2"]'))
+    assert [c.name for c in Study(s).comparisons] == ["V_C", "omega_2"]
+
+
+# -- the notes' worked examples (gallery) -----------------------------------------------------------------
+
+def _values(path: Path) -> dict:
+    study = Study(load_scene(path))
+    v = study.velocity
+    return {"V_C": v.velocities["C"].norm() * 1e3, "V_CB": v.relative[("C", "B")].norm() * 1e3,
+            "omega_2": v.angular[2], "omega_3": v.angular.get(3), "study": study}
+
+
+def test_notes_example_1_within_drawing_accuracy():
+    r = _values(GALLERY / "notes-velocity-example-1.toml")
+    assert r["V_CB"] == pytest.approx(198, rel=0.02)
+    assert r["V_C"] == pytest.approx(569, rel=0.02)
+    assert -r["omega_2"] == pytest.approx(2.1, rel=0.02)      # clockwise
+    assert not r["study"].disagreements()
+
+
+def test_notes_example_2_within_drawing_accuracy():
+    r = _values(GALLERY / "notes-velocity-example-2.toml")
+    assert r["V_CB"] == pytest.approx(101, rel=0.02)
+    assert r["V_C"] == pytest.approx(216, rel=0.02)
+    assert -r["omega_2"] == pytest.approx(2.89, rel=0.02)     # clockwise
+    assert r["omega_3"] == pytest.approx(10.8, rel=0.02)      # counter-clockwise
+    assert not r["study"].disagreements()
+
+
+def test_notes_example_4_velocity_image():
+    study = Study(load_scene(GALLERY / "notes-velocity-example-4.toml"))
+    v = study.velocity
+    # the image bcd is similar to BCD: |bd| / |BD| = |bc| / |BC| = |omega_2|
+    P = study.pose.positions
+    bd = (v.velocities["D"] - v.velocities["B"]).norm() / (P["D"] - P["B"]).norm()
+    bc = (v.velocities["C"] - v.velocities["B"]).norm() / (P["C"] - P["B"]).norm()
+    assert bd == pytest.approx(bc, rel=1e-12) == pytest.approx(abs(v.angular[2]), rel=1e-12)
+    assert not study.disagreements() and any(c.name == "V_D" for c in study.comparisons)
+
+
+@pytest.mark.parametrize("scene", sorted(GALLERY.glob("*.toml")), ids=lambda p: p.stem)
+def test_check_command_passes_on_gallery(scene, capsys):
+    code, out, err = run(["check", str(scene)], capsys)
+    assert code == 0, err
+    assert "agree to 1e-9 relative" in out
+
+
+def test_help_on_each_command():
+    for args in (["--help"], ["render", "--help"], ["solve", "--help"], ["check", "--help"], ["bench", "--help"]):
+        r = subprocess.run([sys.executable, "-m", "drafting.cli", *args], capture_output=True, text=True,
+                           cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)})
+        assert r.returncode == 0 and "usage: drafting" in r.stdout
+
+
+def test_readme_commands_are_what_ci_runs():
+    readme = (ROOT / "README.md").read_text().split("```sh\n", 1)[1].split("```", 1)[0].strip().splitlines()
+    ci = (ROOT / ".ci" / "run").read_text()
+    assert len(readme) == 2
+    for cmd in readme:
+        assert cmd in ci
