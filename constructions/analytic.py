@@ -24,18 +24,23 @@ Numerical notes
 * Circle-circle and line-circle intersections use the cancellation-free product form of the
   half-chord (Heron's formula written as a product of sums and differences), so near tangency the
   small factor is an exact floating-point difference (Sterbenz) and keeps its digits.
-* The assembly decision is three-way with a tolerance relative to the mechanism scale
-  ``L = sum of link lengths + |O1| + |O2|`` (or ``|G|`` for the guide point):
-  a gap factor in ``[-ASSEMBLY_RTOL*L, 0)`` is a tangency spoiled by rounding and is snapped to 0
-  (tangent, assembles, condition 0, velocities NaN); below that the loop does not close.
-  ``ASSEMBLY_RTOL`` is 64 ulp; the snap moves C by at most ~sqrt(2*ASSEMBLY_RTOL)*L ~ 2e-7 L, which is
-  inside the band that floating-point input data already cannot resolve at a tangency.
-  Consequence: a *computed* sine at a near-toggle is never between 0 and ~1e-7 -- a loop that closes
-  by less than the rounding of its own inputs reads as exactly tangent.
+* The assembly decision is three-way with a tolerance ``tol = ASSEMBLY_RTOL * L`` relative to the
+  mechanism scale ``L = sum of link lengths + |O1| + |O2|`` (``|O1| + |G|`` for the slider-crank).
+  Each small gap factor of the half-chord (``S - d`` and ``d - T`` for the four-bar, ``l -+ y`` for
+  the slider) is classified: ``> tol`` crossing, ``|gap| <= tol`` tangent (snapped to exactly 0:
+  assembles, C on the line of centres, condition 0, velocities NaN), ``< -tol`` apart (no assembly).
+  So a designed toggle built from rotated float coordinates reads as a toggle whichever way the
+  rounding fell.  ``ASSEMBLY_RTOL`` is 64 ulp; the snap moves C by at most about
+  ``sqrt(2 * tol * L)`` ~ 2e-7 L, which is inside the band that the rounding of the inputs already
+  leaves undetermined at a tangency (the half-chord has infinite slope there).
+  Consequence: apart from exact zeros, a computed ``condition`` is never below roughly 1e-7, so the
+  1e-12 ``SINE_TOL`` rule only ever fires at (snapped) tangencies; the velocities next to a toggle
+  are finite and honest but large -- inspect ``condition`` before trusting them.
 * Sine and cosine of the crank angle come from a quarter-angle tangent (``tan`` is SIMD-vectorised in
   numpy and four to ten times cheaper than ``sin`` + ``cos`` here) after a three-part Cody-Waite
-  reduction modulo 2 pi; the result agrees with ``np.cos``/``np.sin`` to a few 1e-16 absolute.
-  Angles beyond 1e6 rad fall back to ``np.cos``/``np.sin``.
+  reduction modulo 4 pi; the result agrees with ``np.cos``/``np.sin`` to about 1e-15 absolute and
+  depends on each angle alone, never on the batch it came in.  Angles beyond 1e6 rad use
+  ``np.cos``/``np.sin``.
 * Work is done in chunks of :data:`CHUNK` angles with preallocated scratch buffers and ``out=``
   ufuncs, so the working set stays in cache.
 """
@@ -63,26 +68,24 @@ __all__ = [
 #: solve is indeterminate (toggle / dead centre) and velocities are NaN.
 SINE_TOL = 1e-12
 
-#: Relative tolerance (times the mechanism scale L) inside which a negative gap factor of an
-#: intersection is rounding noise at a tangency and is snapped to zero.
+#: Relative tolerance (times the mechanism scale L): a gap factor of an intersection within
+#: +-ASSEMBLY_RTOL * L of zero is rounding noise at a tangency and is snapped to exactly zero.
 ASSEMBLY_RTOL = 64 * np.finfo(np.float64).eps
 
-#: Number of crank angles processed per chunk (tuned on a 2 MB-L2 Xeon; 2**13..2**15 are all close).
-CHUNK = 2**15
+#: Number of crank angles processed per chunk (tuned on a Xeon with 2 MB of L2 per core;
+#: 2**13 .. 2**15 measure within noise of each other).
+CHUNK = 2**14
 
-# 2*pi split into three parts for Cody-Waite argument reduction: _TWO_PI_1 and _TWO_PI_2 carry 30
-# significant bits each, so k*_TWO_PI_1 and k*_TWO_PI_2 are exact for |k| < 2**23; _TWO_PI_3 is the
-# rest rounded to double.  Derived from 60+ digits of pi with ``decimal``.  The parts are divided by 4
-# (exact in binary) because the kernel works with the quarter angle.
-_TWO_PI_1 = 6.283185310661793
-_TWO_PI_2 = -3.4822062768002926e-09
-_TWO_PI_3 = -1.401373759235972e-18
-_Q1 = _TWO_PI_1 / 4.0
-_Q2 = _TWO_PI_2 / 4.0
-_Q3 = _TWO_PI_3 / 4.0
-_INV_TWO_PI = 0.15915494309189535
-_TWO_PI_FL = 6.283185307179586  # 2 pi rounded to double
-_FAST_TRIG_LIMIT = 1.0e6  # |theta| up to this uses the fast path (|k| < 2**18, products exact)
+# pi split into three parts for Cody-Waite argument reduction (half of a 2 pi split derived from
+# 60+ digits of pi with ``decimal``): _PI_1 and _PI_2 carry 30 significant bits each, so k*_PI_1 and
+# k*_PI_2 are exact for |k| < 2**23; _PI_3 is the rest rounded to double.  The kernel reduces the
+# quarter angle th/4 by k pi, i.e. th by k 4pi.
+_PI_1 = 6.283185310661793 / 2.0
+_PI_2 = -3.4822062768002926e-09 / 2.0
+_PI_3 = -1.401373759235972e-18 / 2.0
+_INV_FOUR_PI = 0.07957747154594767
+_NO_REDUCTION = 6.28  # |th| <= this: k = rint(th / 4pi) is certainly 0, reduction is the identity
+_FAST_TRIG_LIMIT = 1.0e6  # |theta| up to this uses the fast path (|k| < 2**17, products exact)
 
 
 # --------------------------------------------------------------------------------------------
@@ -260,35 +263,33 @@ def _chunk_of(w, i, j):
 def _sincos(th, c, s, t, u):
     """Write cos(th) into c and sin(th) into s (all 1-D, same length); t, u are scratch.
 
-    Derivation: reduce th = 2 pi k + r, r in [-pi, pi] (Cody-Waite, three-part 2 pi); with
-    tau = tan(r/4) in [-1, 1] the half-angle identities give cos(r/2) = (1 - tau^2)/(1 + tau^2),
-    sin(r/2) = 2 tau/(1 + tau^2), and the double-angle identities give
+    Derivation: write th = 4 pi k + r with r in [-2 pi, 2 pi] (4 pi is a period too; Cody-Waite
+    with a three-part split, so th/4 - k pi is exact up to the last part).  With tau = tan(r/4),
+    |r/4| <= pi/2 (rounded), the half-angle identities give cos(r/2) = (1 - tau^2)/(1 + tau^2),
+    sin(r/2) = 2 tau/(1 + tau^2) and the double-angle identities give
     cos r = (cos(r/2) - sin(r/2)) (cos(r/2) + sin(r/2)), sin r = 2 sin(r/2) cos(r/2).
-    Every step is a few ulp; the absolute error is a few 1e-16.  When |th| <= 2 pi (the usual sweep)
-    the reduction is skipped: tan(th/4) is then finite and the same formulas hold for r = th.
-    NaN or |th| > 1e6 falls back to np.cos/np.sin.
+    Each step is a few ulp and stays so as tau grows towards r = +-2 pi (tau <= 1.7e16, no
+    overflow); the absolute error is about 1e-15 at most.
+
+    The result is a function of each element alone (not of the batch): for |th| < 2 pi, k = 0 and
+    the reduction is the identity exactly, so it is skipped when the whole chunk is inside that band;
+    elements beyond 1e6 rad (where k pi is no longer exact) or NaN are redone with np.cos/np.sin.
     """
     if th.size == 0:
         return
     lo = float(th.min())
     hi = float(th.max())
-    if not (-_FAST_TRIG_LIMIT <= lo and hi <= _FAST_TRIG_LIMIT):  # also catches NaN
-        np.cos(th, out=c)
-        np.sin(th, out=s)
-        return
     np.multiply(th, 0.25, out=u)  # exact
-    if not (-_TWO_PI_FL <= lo and hi <= _TWO_PI_FL):
-        # k = rint(th / 2pi); u = th/4 - k (2pi/4), three-part, each product exact
-        np.multiply(th, _INV_TWO_PI, out=t)
+    if not (-_NO_REDUCTION <= lo and hi <= _NO_REDUCTION):
+        # k = rint(th / 4pi); u = th/4 - k pi, three-part pi, k*_PI_1 and k*_PI_2 exact
+        np.multiply(th, _INV_FOUR_PI, out=t)
         np.rint(t, out=t)
-        np.multiply(t, _Q1, out=c)
+        np.multiply(t, _PI_1, out=c)
         u -= c
-        np.multiply(t, _Q2, out=c)
+        np.multiply(t, _PI_2, out=c)
         u -= c
-        np.multiply(t, _Q3, out=c)
+        np.multiply(t, _PI_3, out=c)
         u -= c
-    # else |th| <= 2pi: no reduction needed, |th/4| <= pi/2 rounded, tan stays finite (<= 1.7e16)
-    # and the formulas below stay accurate to a few ulp even as tau grows large.
     np.tan(u, out=u)  # tau
     np.multiply(u, u, out=t)  # tau^2
     np.add(t, 1.0, out=c)  # 1 + tau^2
@@ -302,6 +303,10 @@ def _sincos(th, c, s, t, u):
     s += s  # sin r
     t -= u
     c *= t  # cos r
+    if not (-_FAST_TRIG_LIMIT <= lo and hi <= _FAST_TRIG_LIMIT):  # rare; also NaN
+        far = ~(np.abs(th) <= _FAST_TRIG_LIMIT)
+        c[far] = np.cos(th[far])
+        s[far] = np.sin(th[far])
 
 
 # --------------------------------------------------------------------------------------------
@@ -418,17 +423,20 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
             # gap factors (S - d) and (d - T): exact differences near tangency
             np.subtract(S, d, out=f1)
             np.subtract(d, T, out=f2)
-            if f1.min() >= 0.0 and f2.min() >= 0.0 and not (check_d0 and d2.min() <= 0.0):
-                asm.fill(True)  # fast path: the loop closes at every angle of the chunk
+            if f1.min() > tol and f2.min() > tol:
+                asm.fill(True)  # fast path: clearly closed at every angle of the chunk
             else:
+                # three-way: gap < -tol apart (no assembly), |gap| <= tol tangent (snap to 0)
                 np.greater_equal(f1, -tol, out=asm)
                 np.greater_equal(f2, -tol, out=bt)
                 asm &= bt
                 if check_d0:
                     np.greater(d2, 0.0, out=bt)
                     asm &= bt
-                np.maximum(f1, 0.0, out=f1)  # snap rounding-level negatives to tangency
-                np.maximum(f2, 0.0, out=f2)
+                np.less_equal(f1, tol, out=bt)
+                np.copyto(f1, 0.0, where=bt)
+                np.less_equal(f2, tol, out=bt)
+                np.copyto(f2, 0.0, where=bt)
             np.add(d, S, out=tmp)
             f1 *= tmp
             np.add(d, T, out=tmp)
@@ -599,14 +607,17 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
             # half-chord h = sqrt((l - y)(l + y))
             np.subtract(l, y, out=h)
             np.add(y, l, out=tmp)
-            if h.min() >= 0.0 and tmp.min() >= 0.0:
-                asm.fill(True)  # fast path: C reaches the guide at every angle of the chunk
+            if h.min() > tol and tmp.min() > tol:
+                asm.fill(True)  # fast path: C clearly reaches the guide at every angle
             else:
+                # three-way: gap < -tol apart (no assembly), |gap| <= tol tangent (snap to 0)
                 np.greater_equal(h, -tol, out=asm)
                 np.greater_equal(tmp, -tol, out=bt)
                 asm &= bt
-                np.maximum(h, 0.0, out=h)  # snap rounding-level negatives to tangency
-                np.maximum(tmp, 0.0, out=tmp)
+                np.less_equal(h, tol, out=bt)
+                np.copyto(h, 0.0, where=bt)
+                np.less_equal(tmp, tol, out=bt)
+                np.copyto(tmp, 0.0, where=bt)
             h *= tmp
             np.sqrt(h, out=h)
             if not asm.all():

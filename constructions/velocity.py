@@ -113,8 +113,8 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter =
     b = image_name(crank.tip)
     crank_name = f"{crank.pivot}{crank.tip}"
     steps.append((
-        f"Draw V_{crank.tip} = \u03c9{crank.link.number} \u00d7 {crank_name} from O_v, perpendicular to "
-        f"{crank_name} ({fmt('velocity', v_tip.norm())}, \u03c9{crank.link.number} "
+        f"Draw V_{crank.tip} = \u03c9_{crank.link.number} \u00d7 {crank_name} from O_v, perpendicular to "
+        f"{crank_name} ({fmt('velocity', v_tip.norm())}, \u03c9_{crank.link.number} "
         f"{_sense(omega)}); its tip is {b}.",
         (Arrow(f"V_{crank.tip}", Role.KNOWN, Diagram.VELOCITY, ORIGIN, v_tip, f"V_{crank.tip}"),
          Point(f"image {crank.tip}", Role.LABEL, Diagram.VELOCITY, v_tip, b)),
@@ -170,7 +170,7 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter =
             eq = _equation(arms, j, m, isinstance(step, CircleAndGuide))
             equations.append((_equation_caption(eq, arms, j, m, step), eq))
             omega_words = "; ".join(
-                f"\u03c9{link.number} = {what}/{link.label} = {fmt('angular velocity', abs(ang[link.number]))} "
+                f"\u03c9_{link.number} = {what}/{link.label} = {fmt('angular velocity', abs(ang[link.number]))} "
                 f"{_sense(ang[link.number])}"
                 for link, centre in arms
                 for what in [f"V_{j}" if centre in m.ground else f"V_{j}{centre}"])

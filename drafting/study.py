@@ -91,7 +91,7 @@ class Study:
         return f"{from_si(c.difference, c.kind, unit):.1e} {unit_symbol(unit)}"
 
     def table(self) -> list[tuple[str, str, str, str]]:
-        return [(c.name, self.value_text(c, c.graphical), self.value_text(c, c.analytic), self.difference_text(c))
+        return [(c.name.replace("omega_", "\u03c9_"), self.value_text(c, c.graphical), self.value_text(c, c.analytic), self.difference_text(c))
                 for c in self.comparisons]
 
     def to_json(self) -> dict[str, Any]:

@@ -12,6 +12,7 @@ measurement sums per-character advances in the same way.
 from __future__ import annotations
 
 import functools
+import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -144,7 +145,7 @@ HEADING = 5.0
 MIN_TEXT = 2.5
 LETTER_SIZES = (2.5, 3.5, 5.0, 7.0, 10.0)
 SUB_SCALE = 0.71          # sub/superscript size relative to its base, never below MIN_TEXT
-SUB_SHIFT = 0.30          # subscript baseline drop, in units of the base size
+SUB_SHIFT = 0.25          # subscript baseline drop, in units of the base size
 SUP_SHIFT = -0.42         # superscript baseline rise
 WIDTH_MARGIN = 1.02       # renderers hint advances slightly differently; measure 2 % wide
 
@@ -166,11 +167,20 @@ def _advance(ch: str, italic: bool) -> float:
     return _font(italic).getlength(ch) / _EM
 
 
+_INK_SET = ("ABCDEFGHIJKLMNOPQRSTUVWXYZbdfhkltgjpqy0123456789()[]{}|/"
+            "\u2713\u00d7\u22a5\u2225\u03c9\u03b1")
+
+
 @functools.cache
 def font_metrics() -> tuple[float, float]:
-    """(ascent, descent) of the font in em (both positive)."""
-    a, d = _font(False).getmetrics()
-    return a / _EM, d / _EM
+    """(ascent, descent) in em of the ink of the letters a sheet uses (Latin letters, digits,
+    brackets, marks), rounded up to 0.01 em.  Tighter than the font's line metrics, which leave room
+    for accented capitals; this is the box text collision tests use."""
+    f = _font(False)
+    a, _ = f.getmetrics()
+    top = min(f.getbbox(ch)[1] for ch in _INK_SET)
+    bottom = max(f.getbbox(ch)[3] for ch in _INK_SET)
+    return math.ceil((a - top) / _EM * 100) / 100, math.ceil((bottom - a) / _EM * 100) / 100
 
 
 def text_width(text: str, size: float, italic: bool = False) -> float:

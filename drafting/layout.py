@@ -1,0 +1,826 @@
+"""Layout: scales, viewports, scale bars, the title block and the flow of text on a sheet.
+
+The sheet is cut into named regions: the title block at the bottom right of the frame, one viewport
+per diagram (each with its own scale: ISO 5455 for the space diagram, the construction's 1-2-5 scale
+for a vector polygon) and text slots for the vector equations, the numbered steps, the results table
+and the notes.  Text is set at 3.5 mm and shrunk step by step to no less than 2.5 mm until it fits; if
+it still does not, :class:`LayoutError` says to use the larger sheet.
+
+Everything returned is drawing commands (:mod:`drafting.paper`) in paper mm, y down.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Callable, Sequence
+
+from constructions.geometry import Vec
+from constructions.record import Term, VectorEquation
+
+from .paper import Command, Line, Paper, Rect, Rectangle, Span, Text, translated
+from .style import (HEADING, LABEL, MIN_TEXT, SUB_SHIFT, TITLE, Extent, font_metrics, measure, plain,
+                    rich, sub_size, text_width)
+
+
+class LayoutError(Exception):
+    """The content does not fit the sheet; the message says what to change (e.g. use A3)."""
+
+
+# ---- scales -------------------------------------------------------------------------------------
+
+ISO_5455: tuple[tuple[int, int], ...] = (
+    (50, 1), (20, 1), (10, 1), (5, 1), (2, 1), (1, 1),
+    (1, 2), (1, 5), (1, 10), (1, 20), (1, 50), (1, 100), (1, 200), (1, 500),
+    (1, 1000), (1, 2000), (1, 5000), (1, 10000),
+)
+"""The ISO 5455 scales from the largest enlargement to the smallest reduction."""
+
+
+def ratio_text(ratio: tuple[int, int]) -> str:
+    return f"{ratio[0]}:{ratio[1]}"
+
+
+def ratio_factor(ratio: tuple[int, int]) -> float:
+    """Paper length per model length."""
+    return ratio[0] / ratio[1]
+
+
+def nice_values(lo: float, hi: float) -> list[float]:
+    """The 1-2-5 series values in [lo, hi], ascending."""
+    if not (0 < lo <= hi and math.isfinite(hi)):
+        return []
+    out = []
+    e = math.floor(math.log10(lo)) - 1
+    while True:
+        for m in (1.0, 2.0, 5.0):
+            v = m * 10.0 ** e
+            v = float(f"{v:.12g}")
+            if v > hi * (1 + 1e-12):
+                return out
+            if v >= lo * (1 - 1e-12):
+                out.append(v)
+        e += 1
+
+
+def number_text(v: float) -> str:
+    """A scale number without noise: 10, 0.5, 2.5, 1e-05."""
+    s = f"{v:.6g}"
+    return "0" if s in ("-0", "0") else s
+
+
+@dataclass(frozen=True, slots=True)
+class Transform:
+    """Model -> paper: ``(ox + k x, oy - k y)``; ``k`` is paper mm per model unit.  The y flip is
+    applied point by point, never to a group, so lettering is never mirrored."""
+
+    k: float
+    ox: float = 0.0
+    oy: float = 0.0
+
+    def __call__(self, v: Vec) -> tuple[float, float]:
+        return (self.ox + self.k * v.x, self.oy - self.k * v.y)
+
+    def direction(self, v: Vec) -> tuple[float, float]:
+        """A model direction as a paper unit vector."""
+        n = math.hypot(v.x, v.y)
+        return (v.x / n, -v.y / n)
+
+
+# ---- text primitives ----------------------------------------------------------------------------
+
+def text_at(x: float, y: float, spans: Sequence[Span], *, style: str = "text", region: str = "",
+            name: str = "", anchor: str = "start") -> Text:
+    """A Text command with its measured box; ``anchor`` 'middle'/'end' shifts x (start anchor in SVG)."""
+    spans = tuple(spans)
+    ext = measure(spans)
+    if anchor == "middle":
+        x -= ext.width / 2
+    elif anchor == "end":
+        x -= ext.width
+    return Text(x, y, spans, style, ext.box(x, y), region, name)
+
+
+def with_region(cmds: Sequence[Command], region: str) -> list[Command]:
+    return [replace(c, region=region) if isinstance(c, Text) else c for c in cmds]
+
+
+def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]:
+    """Greedy word wrap of rich text into lines no wider than ``width`` mm."""
+    words = markup.split()
+    if not words:
+        return []
+    space = text_width(" ", size)
+    lines: list[list[Span]] = []
+    cur: list[Span] = []
+    cur_w = 0.0
+    for word in words:
+        spans = list(rich(word, size))
+        w = measure(spans).width
+        if w > width:                                   # a word longer than the line: split it
+            for piece in _split_long(word, width, size):
+                if cur:
+                    lines.append(cur)
+                cur, cur_w = list(rich(piece, size)), measure(rich(piece, size)).width
+            continue
+        if cur and cur_w + space + w > width:
+            lines.append(cur)
+            cur, cur_w = [], 0.0
+        if cur:
+            cur.append(Span(" ", size))
+            cur_w += space
+        cur.extend(spans)
+        cur_w += w
+    if cur:
+        lines.append(cur)
+    return [tuple(_merge_spans(line)) for line in lines]
+
+
+def _split_long(word: str, width: float, size: float) -> list[str]:
+    out, cur = [], ""
+    for ch in word:
+        if cur and text_width(cur + ch, size) > width:
+            out.append(cur)
+            cur = ""
+        cur += ch
+    if cur:
+        out.append(cur)
+    return out
+
+
+def _merge_spans(spans: Sequence[Span]) -> list[Span]:
+    out: list[Span] = []
+    for s in spans:
+        if out and (out[-1].size, out[-1].shift, out[-1].italic) == (s.size, s.shift, s.italic):
+            out[-1] = Span(out[-1].text + s.text, s.size, s.shift, s.italic)
+        else:
+            out.append(s)
+    return out
+
+
+def stack_lines(lines: Sequence[tuple[Span, ...]], x: float, top: float, size: float, *,
+                style: str = "text", name: str = "") -> tuple[list[Text], float]:
+    """Lines one under the other, the first box top at ``top``; returns texts and the bottom."""
+    out: list[Text] = []
+    y_prev: float | None = None
+    prev: Extent | None = None
+    asc, desc = font_metrics()
+    # every line is given room for a subscript, so lines with and without one are evenly spaced
+    nominal = Extent(0.0, -asc * size, SUB_SHIFT * size + desc * sub_size(size))
+    for line in lines:
+        m = measure(line)
+        ext = Extent(m.width, min(m.top, nominal.top), max(m.bottom, nominal.bottom))
+        if y_prev is None:
+            y = top - ext.top
+        else:
+            assert prev is not None
+            y = y_prev + max(1.35 * size, prev.bottom - ext.top + 0.1 * size)
+        out.append(text_at(x, y, line, style=style, name=name))
+        y_prev, prev = y, ext
+    bottom = top if prev is None else y_prev + prev.bottom
+    return out, bottom
+
+
+# ---- text blocks: items that flow into slots -------------------------------------------------------
+
+class TooWide(Exception):
+    """An item cannot be set in the width it was given at this lettering size."""
+
+
+@dataclass(frozen=True)
+class Placed:
+    commands: tuple[Command, ...]
+    height: float
+
+
+class Item:
+    keep_with_next = False
+
+    def layout(self, width: float, size: float) -> Placed:  # pragma: no cover - interface
+        raise NotImplementedError
+
+
+def heading_size(size: float) -> float:
+    return min(HEADING, max(LABEL, round(size * HEADING / LABEL, 2)))
+
+
+@dataclass(frozen=True)
+class Heading(Item):
+    text: str
+    keep_with_next = True
+
+    def layout(self, width: float, size: float) -> Placed:
+        hs = heading_size(size)
+        spans = plain(self.text, hs)
+        if measure(spans).width > width:
+            lines = wrap_words(self.text, width, hs)
+        else:
+            lines = [spans]
+        texts, bottom = stack_lines(lines, 0.0, 0.0, hs, style="heading", name=f"heading {self.text}")
+        return Placed(tuple(texts), bottom)
+
+
+@dataclass(frozen=True)
+class Paragraph(Item):
+    """Wrapped rich text with an optional hanging label ("3.") in a column ``label_width`` wide."""
+
+    markup: str
+    label: str = ""
+    label_chars: str = ""         # the widest label of the list, to size the label column
+    name: str = ""
+
+    def layout(self, width: float, size: float) -> Placed:
+        indent = 0.0
+        cmds: list[Command] = []
+        if self.label or self.label_chars:
+            indent = text_width(self.label_chars or self.label, size) + 0.6 * size
+        if width - indent < 8 * size:
+            raise TooWide(self.markup)
+        lines = wrap_words(self.markup, width - indent, size)
+        texts, bottom = stack_lines(lines, indent, 0.0, size, name=self.name)
+        cmds.extend(texts)
+        if self.label:
+            y = texts[0].y if texts else -measure(plain(self.label, size)).top
+            cmds.append(text_at(indent - 0.6 * size, y, plain(self.label, size), anchor="end",
+                                name=f"{self.name} number"))
+        return Placed(tuple(cmds), bottom)
+
+
+MARK_YES = "\u2713"   # check mark: known
+MARK_NO = "\u00d7"    # cross: unknown
+
+
+def term_spans(term: Term, size: float) -> tuple[Span, ...]:
+    sup = f"^{{{term.superscript}}}" if term.superscript else ""
+    return rich(f"{term.quantity}_{{{term.subscript}}}{sup}", size, italic_symbols=True)
+
+
+def marks_text(term: Term) -> str:
+    return (MARK_YES if term.magnitude_known else MARK_NO) + (MARK_YES if term.direction_known else MARK_NO)
+
+
+@dataclass(frozen=True)
+class EquationItem(Item):
+    """A vector equation with the notes' marks over every term: first magnitude, then direction."""
+
+    equation: VectorEquation
+    name: str = "equation"
+
+    def layout(self, width: float, size: float) -> Placed:
+        size = min(LABEL, size + 0.5)           # equations a little larger than the body text
+        ms = sub_size(size)
+        # tokens: (spans, term or None)
+        tokens: list[tuple[tuple[Span, ...], Term | None]] = []
+        for side_i, side in enumerate((self.equation.left, self.equation.right)):
+            if side_i == 1:
+                tokens.append((plain(" = ", size), None))
+            for i, t in enumerate(side):
+                if i:
+                    tokens.append((plain(" + ", size), None))
+                tokens.append((term_spans(t, size), t))
+        # greedy wrap at operators; continuation lines indented
+        lines: list[list[tuple[tuple[Span, ...], Term | None]]] = [[]]
+        cur_w = 0.0
+        indent = 2.0 * size
+        for spans, term in tokens:
+            w = measure(spans).width
+            limit = width - (indent if len(lines) > 1 else 0.0)
+            if term is not None and lines[-1] and cur_w + w > limit:
+                lines.append([])
+                cur_w = 0.0
+            if term is None and not lines[-1]:
+                continue
+            lines[-1].append((spans, term))
+            cur_w += w
+            if term is not None and cur_w > width - (indent if len(lines) > 1 else 0.0):
+                raise TooWide(str(self.equation))
+        cmds: list[Command] = []
+        top = 0.0
+        mark_ext = measure(plain(MARK_YES + MARK_NO, ms))
+        for li, line in enumerate(lines):
+            all_spans = tuple(s for spans, _ in line for s in spans)
+            eq_ext = measure(all_spans)
+            y_mark = top - mark_ext.top
+            y_eq = y_mark + mark_ext.bottom + 0.25 * size - eq_ext.top
+            x = indent if li else 0.0
+            first = next((spans for spans, term in line if term is not None), None)
+            if first is not None:        # keep the marks over the first symbol inside the column
+                x += max(0.0, (measure(plain(MARK_YES + MARK_NO, ms)).width - measure(first[:1]).width) / 2)
+            cmds.append(text_at(x, y_eq, all_spans, name=self.name))
+            for spans, term in line:
+                w = measure(spans).width
+                if term is not None:
+                    base_w = measure(spans[:1]).width
+                    cx = x + base_w / 2 if len(spans) > 1 else x + w / 2
+                    cmds.append(text_at(cx, y_mark, plain(marks_text(term), ms), anchor="middle",
+                                        name=f"{self.name} marks {term.symbol}"))
+                x += w
+            top = y_eq + eq_ext.bottom + 0.35 * size
+        return Placed(tuple(cmds), top - 0.35 * size)
+
+
+@dataclass(frozen=True)
+class TableItem(Item):
+    """The results table: quantity, graphical, analytic, difference (and a note column if any)."""
+
+    header: tuple[str, ...]
+    rows: tuple[tuple[str, ...], ...]
+    align: tuple[str, ...]         # 'l' or 'r' per column
+    wrap_last: bool = False
+    name: str = "results"
+
+    def layout(self, width: float, size: float) -> Placed:
+        pad = 0.45 * size
+        vpad = 0.25 * size
+        ncol = len(self.header)
+        cells = [[rich(c, size) for c in row] for row in (self.header,) + self.rows]
+        nat = [max(measure(r[i]).width for r in cells) + 2 * pad for i in range(ncol)]
+        widths = list(nat)
+        if sum(widths) > width:
+            if self.wrap_last:
+                rest = width - sum(widths[:-1])
+                if rest < 8 * size:
+                    raise TooWide("results table")
+                widths[-1] = rest
+            else:
+                raise TooWide("results table")
+        else:
+            # spread the spare width over the value columns, but keep the table compact
+            spare = min(width - sum(widths), 6 * size * ncol)
+            for i in range(1, ncol):
+                widths[i] += spare / max(ncol - 1, 1)
+        cmds: list[Command] = []
+        y = 0.0
+        xs = [sum(widths[:i]) for i in range(ncol)]
+        total = sum(widths)
+        cmds.append(Line(0.0, y, total, y, "rule", f"{self.name} top rule"))
+        for ri, row in enumerate(cells):
+            y_row = y + vpad
+            cell_lines: list[list[tuple[Span, ...]]] = []
+            for ci, spans in enumerate(row):
+                text = ((self.header,) + self.rows)[ri][ci]
+                if measure(spans).width > widths[ci] - 2 * pad + 1e-9:
+                    cell_lines.append(wrap_words(text, widths[ci] - 2 * pad, size))
+                else:
+                    cell_lines.append([spans])
+            bottom = y_row
+            for ci, lines in enumerate(cell_lines):
+                if not lines:
+                    continue
+                texts, b = stack_lines(lines, 0.0, y_row, size,
+                                       name=f"{self.name} {'header' if ri == 0 else f'row {ri}'} col {ci}")
+                for t in texts:
+                    if self.align[ci] == "r":
+                        dx = xs[ci] + widths[ci] - pad - t.box.w
+                    else:
+                        dx = xs[ci] + pad
+                    cmds.append(translated(t, dx, 0.0))
+                bottom = max(bottom, b)
+            y = bottom + vpad
+            if ri == 0:
+                cmds.append(Line(0.0, y, total, y, "rule", f"{self.name} header rule"))
+        cmds.append(Line(0.0, y, total, y, "rule", f"{self.name} bottom rule"))
+        return Placed(tuple(cmds), y)
+
+
+@dataclass(frozen=True)
+class Section:
+    heading: str
+    items: tuple[Item, ...]
+
+
+def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: float) -> list[Command] | None:
+    """Set the sections into the slots in order at lettering ``size``; None when they do not fit."""
+    if not sections:
+        return []
+    if not slots:
+        return None
+    out: list[Command] = []
+    si = 0
+    name, slot = slots[si]
+    y = slot.top
+    section_gap = 1.0 * size
+    item_gap = 0.35 * size
+    used = False
+
+    def next_slot() -> bool:
+        nonlocal si, name, slot, y, used
+        si += 1
+        if si >= len(slots):
+            return False
+        name, slot = slots[si]
+        y = slot.top
+        used = False
+        return True
+
+    for sec in sections:
+        items: list[Item] = [Heading(sec.heading), *sec.items] if sec.heading else list(sec.items)
+        if used:
+            y += section_gap
+        i = 0
+        while i < len(items):
+            item = items[i]
+            try:
+                placed = item.layout(slot.w, size)
+                need = placed.height
+                if item.keep_with_next and i + 1 < len(items):
+                    need += item_gap + items[i + 1].layout(slot.w, size).height
+            except TooWide:
+                placed = None
+                need = math.inf
+            if placed is None or y + need > slot.bottom + 1e-9:
+                # too wide or too tall for what is left of this slot: go on in the next one
+                if not next_slot():
+                    return None
+                continue
+            out.extend(with_region([translated(c, slot.x, y) for c in placed.commands], name))
+            y += placed.height + item_gap
+            used = True
+            i += 1
+    return out
+
+
+TEXT_SIZES = (3.5, 3.25, 3.0, 2.75, 2.5)
+
+
+def flow_shrinking(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]]) -> tuple[list[Command], float] | None:
+    """The largest lettering size (3.5 down to 2.5) at which everything fits, and its commands."""
+    for size in TEXT_SIZES:
+        out = flow(sections, slots, size)
+        if out is not None:
+            return out, size
+    return None
+
+
+# ---- scale bars -------------------------------------------------------------------------------------
+
+SCALE_BAR_HEIGHT = 1.6
+SCALE_TICK = 1.0
+SCALE_TEXT = MIN_TEXT
+
+
+def scale_bar(x: float, top: float, length: float, value: float, unit: str, *, region: str = "",
+              name: str = "scale bar") -> tuple[list[Command], Rect]:
+    """A scale bar ``length`` mm long standing for ``value`` ``unit``, numbers above, top at ``top``.
+
+    Alternate black and white segments (reads in black and white), a tick and number at every
+    division where the numbers fit, the unit after the bar.  Returns the commands and the bounding box.
+    """
+    divisions = _divisions(value)
+    seg = length / divisions
+    ts = SCALE_TEXT
+    num_ext = measure(plain("0", ts))
+    y_num = top - num_ext.top
+    y_tick0 = y_num + num_ext.bottom + 0.4
+    y_bar = y_tick0 + SCALE_TICK
+    cmds: list[Command] = []
+    for i in range(divisions):
+        cmds.append(Rectangle(x + i * seg, y_bar, seg, SCALE_BAR_HEIGHT,
+                              "bar_dark" if i % 2 == 0 else "bar_light", f"{name} segment {i}"))
+    cmds.append(Rectangle(x, y_bar, length, SCALE_BAR_HEIGHT, "tick", f"{name} outline"))
+    labels = [number_text(value * i / divisions) for i in range(divisions + 1)]
+    widths = [measure(plain(t, ts)).width for t in labels]
+    every = 1
+    while every < divisions and any(
+            (widths[i] + widths[min(i + every, divisions)]) / 2 + 1.0 > seg * every
+            for i in range(0, divisions, every)):
+        every += 1
+        while divisions % every:
+            every += 1
+    shown = sorted(set(range(0, divisions + 1, every)) | {0, divisions})
+    if len(shown) > 2 and shown[-2] + every > divisions:
+        # the last regular number may crowd the end number
+        gap = (widths[shown[-2]] + widths[-1]) / 2 + 1.0
+        if (divisions - shown[-2]) * seg < gap:
+            shown.pop(-2)
+    texts: list[Text] = []
+    for i in range(divisions + 1):
+        xi = x + i * seg
+        cmds.append(Line(xi, y_tick0, xi, y_bar, "tick", f"{name} tick {i}"))
+        if i in shown:
+            texts.append(text_at(xi, y_num, plain(labels[i], ts), anchor="middle", region=region,
+                                 name=f"{name} number {i}"))
+    unit_t = text_at(x + length + 1.2, y_bar + SCALE_BAR_HEIGHT, plain(unit, ts), region=region,
+                     name=f"{name} unit")
+    texts.append(unit_t)
+    cmds.extend(texts)
+    box = Rect.from_edges(min(x, texts[0].box.left), top, max(unit_t.box.right, texts[-2].box.right),
+                          max(y_bar + SCALE_BAR_HEIGHT, unit_t.box.bottom))
+    return cmds, box
+
+
+def _divisions(value: float) -> int:
+    lead = round(value / 10 ** math.floor(math.log10(value) + 1e-12), 6)
+    return {1.0: 5, 2.0: 4, 5.0: 5}.get(lead, 4)
+
+
+def choose_bar(paper_per_unit: float, max_len: float, *, min_len: float = 20.0,
+               pref_len: float = 80.0) -> tuple[float, float] | None:
+    """(value, paper length) of the longest 1-2-5 bar no longer than min(max_len, pref_len)."""
+    limit = min(max_len, pref_len)
+    if limit <= 0:
+        return None
+    if not (paper_per_unit > 0 and math.isfinite(paper_per_unit)) or limit < min_len:
+        return None
+    vals = nice_values(min_len / paper_per_unit, limit / paper_per_unit)
+    if not vals:
+        return None
+    v = vals[-1]
+    return v, v * paper_per_unit
+
+
+# ---- viewport header: heading and scale bar ------------------------------------------------------
+
+HEADER_GAP = 1.5
+
+
+@dataclass(frozen=True)
+class Header:
+    commands: tuple[Command, ...]
+    height: float
+
+
+def viewport_header(rect: Rect, heading: str, paper_per_unit: float, unit: str, *, region: str,
+                    name: str) -> Header:
+    """Heading at the top left of a viewport and the scale bar at the top right (or under it)."""
+    hs = HEADING
+    head = plain(heading, hs)
+    hext = measure(head)
+    if hext.width > rect.w - 2:
+        hs = LABEL
+        head = plain(heading, hs)
+        hext = measure(head)
+    x0 = rect.x + 1.5
+    ht = text_at(x0, rect.y + HEADER_GAP - hext.top, head, style="heading", region=region,
+                 name=f"heading {name}")
+    unit_w = measure(plain(unit, SCALE_TEXT)).width + 1.2
+    overhang = 4.0
+    side_room = rect.right - 1.5 - unit_w - overhang - (ht.box.right + 6.0)
+    bar = choose_bar(paper_per_unit, side_room, min_len=25.0)
+    cmds: list[Command] = [ht]
+    if bar is not None:
+        v, length = bar
+        bx = rect.right - 1.5 - unit_w - length
+        _, probe = scale_bar(bx, 0.0, length, v, unit)
+        top = rect.y + HEADER_GAP + max(0.0, (ht.box.h - probe.h) / 2)
+        bc, box = scale_bar(bx, top, length, v, unit, region=region, name=f"scale bar {name}")
+        cmds.extend(bc)
+        height = max(ht.box.bottom, box.bottom) - rect.y + HEADER_GAP
+    else:
+        bar = choose_bar(paper_per_unit, rect.w - 3.0 - unit_w - overhang, min_len=10.0)
+        if bar is None:
+            raise LayoutError(f"the {name} viewport is too narrow for its scale bar; use A3")
+        v, length = bar
+        top = ht.box.bottom + 1.5
+        bc, box = scale_bar(x0 + 1.5, top, length, v, unit, region=region, name=f"scale bar {name}")
+        cmds.extend(bc)
+        height = box.bottom - rect.y + HEADER_GAP
+    return Header(tuple(cmds), height)
+
+
+def header_height(width: float, heading: str, paper_per_unit: float, unit: str) -> float:
+    return viewport_header(Rect(0, 0, width, 100), heading, paper_per_unit, unit, region="", name="probe").height
+
+
+# ---- title block --------------------------------------------------------------------------------
+
+TB_PAD = 1.2
+TB_CAPTION = MIN_TEXT
+
+
+@dataclass(frozen=True)
+class TitleBlock:
+    commands: tuple[Command, ...]
+    rect: Rect
+
+
+def _cell_value_lines(value: str, width: float) -> tuple[list[tuple[Span, ...]], float]:
+    for size in (3.5, 3.0, 2.5):
+        spans = rich(value, size)
+        if measure(spans).width <= width:
+            return [spans], size
+    return wrap_words(value, width, 2.5), 2.5
+
+
+def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence[tuple[str, str]]], *,
+                region: str = "title_block") -> TitleBlock:
+    """The title block at the bottom right of ``frame``: the title over rows of captioned fields."""
+    # the title row: 7 mm, shrunk to 3.5, then wrapped
+    inner = width - 2 * TB_PAD
+    size = TITLE
+    tw = measure(plain(title, 1.0)).width
+    if tw * size > inner:
+        size = max(LABEL, math.floor(inner / tw * 4) / 4)
+    if tw * size <= inner:
+        title_lines = [plain(title, size)]
+    else:
+        title_lines = wrap_words(title, inner, size)
+    rows_cmds: list[list[Command]] = []
+    heights: list[float] = []
+    t_texts, t_bottom = stack_lines(title_lines, TB_PAD, TB_PAD + 0.6, size, style="title", name="title")
+    rows_cmds.append(list(t_texts))
+    heights.append(max(12.0, t_bottom + TB_PAD + 0.6))
+    cap_ext = measure(plain("Xg", TB_CAPTION))
+    for fi, row in enumerate(fields):
+        n = len(row)
+        caps = [measure(plain(c, TB_CAPTION)).width for c, _ in row]
+        vals = [measure(rich(v, 3.5)).width for _, v in row]
+        nat = [max(c, v) + 2 * TB_PAD for c, v in zip(caps, vals)]
+        if sum(nat) <= width:
+            spare = width - sum(nat)
+            widths = [w + spare / n for w in nat]
+            if n == 2:   # a scale/units row: the first (scale) cell takes the spare
+                widths = [nat[0] + spare, nat[1]]
+        else:
+            mins = [c + 2 * TB_PAD for c in caps]
+            rest = width - sum(mins)
+            if rest <= 0:
+                raise LayoutError("the title block is too narrow for its field names; use A3")
+            extra = [max(v + 2 * TB_PAD - m, 0.0) for v, m in zip(vals, mins)]
+            tot = sum(extra) or 1.0
+            widths = [m + rest * e / tot for m, e in zip(mins, extra)]
+        x = 0.0
+        cmds: list[Command] = []
+        row_h = 0.0
+        col_x: list[float] = []
+        for (cap, val), w in zip(row, widths):
+            ct = text_at(x + TB_PAD, 0.5 - cap_ext.top, plain(cap, TB_CAPTION), name=f"title block caption {cap}")
+            lines, vs = _cell_value_lines(val, w - 2 * TB_PAD)
+            vt, vb = stack_lines(lines, x + TB_PAD, ct.box.bottom + 0.6, vs, name=f"title block {cap}")
+            cmds.append(ct)
+            cmds.extend(vt)
+            row_h = max(row_h, vb + 0.7)
+            if x > 0:
+                col_x.append(x)
+            x += w
+        row_h = max(row_h, 9.0)
+        cmds.extend(Line(cx, 0.0, cx, row_h, "rule", "title block column") for cx in col_x)
+        rows_cmds.append(cmds)
+        heights.append(row_h)
+    total_h = sum(heights)
+    rect = Rect(frame.right - width, frame.bottom - total_h, width, total_h)
+    out: list[Command] = [Rectangle(rect.x, rect.y, rect.w, rect.h, "title_block", "title block")]
+    y = rect.y
+    for i, (cmds, h) in enumerate(zip(rows_cmds, heights)):
+        if i:
+            out.append(Line(rect.x, y, rect.right, y, "rule", "title block row"))
+        out.extend(with_region([translated(c, rect.x, y) for c in cmds], region))
+        y += h
+    return TitleBlock(tuple(out), rect)
+
+
+# ---- the plan: where the viewports and text go ---------------------------------------------------
+
+@dataclass(frozen=True)
+class ViewportNeed:
+    """What a diagram needs: ``size_at(ratio_index)`` for the space diagram (ISO scales), or a fixed
+    ``size`` for a vector polygon drawn at its construction's scale."""
+
+    key: str
+    size: tuple[float, float] | None = None
+    size_for_width: Callable[[float, float], tuple[float, float] | None] | None = None
+
+
+@dataclass(frozen=True)
+class Plan:
+    viewports: dict[str, Rect]
+    text_slots: tuple[tuple[str, Rect], ...]
+    title_block: Rect
+    separators: tuple[tuple[float, float, float, float], ...]
+    # a text slot that, when it stays empty, goes back to a viewport: slot -> (viewport, whole rect, separator)
+    reclaim: tuple[tuple[str, str, Rect, tuple[float, float, float, float]], ...] = ()
+
+
+TEXT_COL_MIN = 120.0
+SPACE_MIN_H = 40.0
+LEFTOVER_MIN_H = 30.0
+GUTTER = 3.0
+
+
+def plan_landscape(paper: Paper, tb_height: Callable[[float], float], space: ViewportNeed | None,
+                   vectors: Sequence[ViewportNeed]) -> Plan:
+    F = paper.frame
+    vec_w = max((v.size[0] for v in vectors), default=0.0)
+    diag_need = max(vec_w, 100.0 if space else 0.0)
+    if not space and not vectors:
+        tbw = paper.title_block_max_width
+        tb = Rect(F.right - tbw, F.bottom - tb_height(tbw), tbw, tb_height(tbw))
+        slots = [("text:0", Rect.from_edges(F.x + GUTTER, F.y + GUTTER, F.right - GUTTER, tb.y - GUTTER))]
+        return Plan({}, tuple(slots), tb, ())
+    pref = min(paper.title_block_max_width, 0.5 * F.w)
+    # two arrangements of the vector viewports: stacked in one column, or side by side in a row;
+    # take the one that leaves the space diagram the most height (the row needs a wider column)
+    row_w = sum(v.size[0] for v in vectors)
+    options = []
+    for side_by_side, need_w, vec_h in ((False, diag_need, sum(v.size[1] for v in vectors)),
+                                        (True, max(row_w, diag_need), max((v.size[1] for v in vectors), default=0.0))):
+        if side_by_side and len(vectors) < 2:
+            continue
+        wt = max(TEXT_COL_MIN, min(pref, F.w - need_w))
+        if F.w - wt >= need_w - 1e-9:
+            options.append((F.h - vec_h, side_by_side, wt))
+    if not options:
+        raise LayoutError(f"the diagrams need {diag_need:.0f} mm of width beside the text column and "
+                          f"{paper.name} {paper.orientation} has {F.w - TEXT_COL_MIN:.0f} mm; use A3")
+    _, side_by_side, wt = max(options, key=lambda o: (o[0] >= (SPACE_MIN_H if space else 0.0), o[0], o[2]))
+    xd = F.right - wt
+    tbw = min(paper.title_block_max_width, wt)
+    h_tb = tb_height(tbw)
+    tb = Rect(F.right - tbw, F.bottom - h_tb, tbw, h_tb)
+    # vector viewports from the bottom of the diagram column up: stacked, or side by side
+    viewports: dict[str, Rect] = {}
+    seps: list[tuple[float, float, float, float]] = [(xd, F.top, xd, F.bottom)]
+    dw = xd - F.x
+    if side_by_side:
+        row_h = max(v.size[1] for v in vectors)
+        spare = (dw - row_w) / len(vectors)
+        x = F.x
+        for v in vectors:
+            w = v.size[0] + spare
+            viewports[v.key] = Rect(x, F.bottom - row_h, w, row_h)
+            if x > F.x:
+                seps.append((x, F.bottom - row_h, x, F.bottom))
+            x += w
+        vec_top = F.bottom - row_h
+        if space:
+            seps.append((F.x, vec_top, xd, vec_top))
+    else:
+        y = F.bottom
+        for v in reversed(vectors):
+            y -= v.size[1]
+            viewports[v.key] = Rect(F.x, y, dw, v.size[1])
+            if y > F.top + 1e-9:
+                seps.append((F.x, y, xd, y))
+        vec_top = y
+    if vec_top < F.top - 1e-9 or (space and vec_top - F.top < SPACE_MIN_H):
+        raise LayoutError(f"the vector polygons need {F.bottom - vec_top:.0f} mm of height and leave no "
+                          f"room for the space diagram on {paper.name} {paper.orientation}; use A3")
+    slots = [("text:0", Rect.from_edges(xd + GUTTER, F.top + GUTTER, F.right - GUTTER, tb.top - GUTTER))]
+    if space:
+        full = Rect.from_edges(F.x, F.top, xd, vec_top)
+        got = space.size_for_width(full.w, full.h) if space.size_for_width else None
+        if got is not None and full.h - got[1] >= LEFTOVER_MIN_H:
+            # the space diagram needs less than the column offers: the rest takes text
+            viewports[space.key] = Rect(F.x, F.top, full.w, got[1])
+            sep = (F.x, F.top + got[1], xd, F.top + got[1])
+            slots.append(("text:1", Rect.from_edges(F.x + GUTTER, F.top + got[1] + GUTTER, xd - GUTTER,
+                                                     vec_top - GUTTER)))
+            return Plan(viewports, tuple(slots), tb, tuple(seps), (("text:1", space.key, full, sep),))
+        viewports[space.key] = full
+    elif vec_top - F.top >= LEFTOVER_MIN_H:
+        slots.append(("text:1", Rect.from_edges(F.x + GUTTER, F.top + GUTTER, xd - GUTTER, vec_top - GUTTER)))
+    return Plan(viewports, tuple(slots), tb, tuple(seps))
+
+
+def plan_portrait(paper: Paper, tb_height: Callable[[float], float], space: ViewportNeed | None,
+                  vectors: Sequence[ViewportNeed]) -> Plan:
+    F = paper.frame
+    tbw = paper.title_block_max_width
+    h_tb = tb_height(tbw)
+    tb = Rect(F.right - tbw, F.bottom - h_tb, tbw, h_tb)
+    viewports: dict[str, Rect] = {}
+    seps: list[tuple[float, float, float, float]] = []
+    y = F.top
+    if space:
+        assert space.size_for_width is not None
+        got = space.size_for_width(F.w, 0.35 * F.h)
+        if got is None:
+            raise LayoutError(f"the space diagram does not fit {paper.name} {paper.orientation}; use A3")
+        viewports[space.key] = Rect(F.x, y, F.w, got[1])
+        y += got[1]
+        seps.append((F.x, y, F.right, y))
+    x = F.x
+    row_h = 0.0
+    for v in vectors:
+        w, h = v.size
+        if x > F.x and x + w > F.right:
+            y += row_h
+            seps.append((F.x, y, F.right, y))
+            x, row_h = F.x, 0.0
+        if w > F.w + 1e-9:
+            raise LayoutError(f"the {v.key} polygon needs {w:.0f} mm of width and {paper.name} "
+                              f"{paper.orientation} has {F.w:.0f} mm; use A3")
+        viewports[v.key] = Rect(x, y, w, h)
+        if x > F.x:
+            seps.append((x, y, x, y + h))
+        x += w
+        row_h = max(row_h, h)
+    last_row_right = x
+    y_end = y + row_h
+    if y_end > tb.top:
+        raise LayoutError(f"the diagrams need {y_end - F.top:.0f} mm of height on {paper.name} "
+                          f"{paper.orientation}; use A3 or landscape")
+    slots: list[tuple[str, Rect]] = []
+    if vectors and F.right - last_row_right >= 80.0:
+        slots.append((f"text:{len(slots)}", Rect.from_edges(last_row_right + GUTTER, y + GUTTER,
+                                                             F.right - GUTTER, y_end - GUTTER)))
+        seps.append((last_row_right, y, last_row_right, y_end))
+    if vectors:
+        seps.append((F.x, y_end, F.right, y_end))
+    if tb.top - y_end > 20.0:
+        slots.append((f"text:{len(slots)}", Rect.from_edges(F.x + GUTTER, y_end + GUTTER, F.right - GUTTER,
+                                                             tb.top - GUTTER)))
+    if tb.left - F.left >= 60.0:
+        slots.append((f"text:{len(slots)}", Rect.from_edges(F.x + GUTTER, tb.top + GUTTER, tb.left - GUTTER,
+                                                             F.bottom - GUTTER)))
+    return Plan(viewports, tuple(slots), tb, tuple(seps))

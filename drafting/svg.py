@@ -1,0 +1,105 @@
+"""SVG: the only module that imports svgwrite.
+
+One user unit is one millimetre (``width="297mm" viewBox="0 0 297 210"``).  Every command becomes one
+element with its style written out as presentation attributes (stroke, width, dashes, fill), which
+cairosvg reads reliably.  Coordinates are rounded to 3 decimals so the output is stable.  Nothing here
+uses what cairosvg cannot render: arrowheads are filled polygons (no markers), subscripts are tspans
+moved with ``dy`` (no ``baseline-shift``), label backgrounds are white rectangles (no ``paint-order``).
+"""
+
+from __future__ import annotations
+
+import svgwrite
+
+from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Text
+from .sheet import Sheet
+from .style import FONT_FAMILY, style
+
+
+def fmt(v: float) -> str:
+    """A coordinate in mm with at most 3 decimals and no '-0'."""
+    r = round(float(v), 3)
+    if r == 0:
+        r = 0.0
+    s = f"{r:.3f}".rstrip("0").rstrip(".")
+    return "0" if s in ("", "-0") else s
+
+
+def _paint(name: str) -> dict[str, str]:
+    st = style(name)
+    a: dict[str, str] = {"fill": st.fill or "none"}
+    if st.stroke is None:
+        a["stroke"] = "none"
+        return a
+    a["stroke"] = st.stroke
+    a["stroke-width"] = fmt(st.width)
+    a["stroke-linecap"] = st.cap
+    a["stroke-linejoin"] = st.join
+    if st.dash:
+        a["stroke-dasharray"] = ",".join(fmt(d) for d in st.dash)
+    return a
+
+
+def _element(dwg: svgwrite.Drawing, c: Command):
+    if isinstance(c, Line):
+        el = dwg.line(start=(0, 0), end=(0, 0))
+        el.attribs.update({"x1": fmt(c.x1), "y1": fmt(c.y1), "x2": fmt(c.x2), "y2": fmt(c.y2)})
+        el.attribs.update(_paint(c.style))
+        return el
+    if isinstance(c, Polyline):
+        el = dwg.polyline([(fmt(x), fmt(y)) for x, y in c.points])
+        el.attribs.update(_paint(c.style))
+        return el
+    if isinstance(c, Polygon):
+        el = dwg.polygon([(fmt(x), fmt(y)) for x, y in c.points])
+        el.attribs.update(_paint(c.style))
+        return el
+    if isinstance(c, Rectangle):
+        el = dwg.rect()
+        el.attribs.update({"x": fmt(c.x), "y": fmt(c.y), "width": fmt(c.w), "height": fmt(c.h)})
+        el.attribs.update(_paint(c.style))
+        return el
+    if isinstance(c, Circle):
+        el = dwg.circle()
+        el.attribs.update({"cx": fmt(c.cx), "cy": fmt(c.cy), "r": fmt(c.r)})
+        el.attribs.update(_paint(c.style))
+        return el
+    if isinstance(c, Text):
+        return _text(dwg, c)
+    raise TypeError(f"not a drawing command: {c!r}")
+
+
+def _text(dwg: svgwrite.Drawing, c: Text):
+    base = c.spans[0].size if c.spans else 3.5
+    el = dwg.text("")
+    el.attribs.update({"x": fmt(c.x), "y": fmt(c.y), "font-family": FONT_FAMILY, "font-size": fmt(base),
+                       "fill": "black", "xml:space": "preserve"})
+    shift = 0.0
+    for i, s in enumerate(c.spans):
+        if i == 0 and s.shift == 0 and not s.italic:
+            el.text = s.text
+            continue
+        ts = dwg.tspan(s.text)
+        dy = s.shift - shift
+        if abs(dy) > 5e-4:
+            ts.attribs["dy"] = fmt(dy)
+        shift = s.shift
+        if abs(s.size - base) > 5e-4:
+            ts.attribs["font-size"] = fmt(s.size)
+        if s.italic:
+            ts.attribs["font-style"] = "italic"
+        el.add(ts)
+    return el
+
+
+def sheet_to_svg(sheet: Sheet) -> str:
+    """The sheet as an SVG document, 1 user unit = 1 mm."""
+    w, h = sheet.width, sheet.height
+    dwg = svgwrite.Drawing(size=(f"{fmt(w)}mm", f"{fmt(h)}mm"), profile="full", debug=False)
+    dwg.attribs["viewBox"] = f"0 0 {fmt(w)} {fmt(h)}"
+    page = dwg.rect()
+    page.attribs.update({"x": "0", "y": "0", "width": fmt(w), "height": fmt(h), "fill": "white", "stroke": "none"})
+    dwg.add(page)
+    for c in sheet.commands:
+        dwg.add(_element(dwg, c))
+    return dwg.tostring()

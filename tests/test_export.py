@@ -1,0 +1,238 @@
+"""Export: PDF page size, true scale on the PDF, PNG output, atomic writes and clear errors.
+
+True scale is measured on the PDF itself: cairo writes the page content as a Flate-compressed stream of
+PDF path operators.  The test inflates it with zlib and runs a tiny interpreter over it that keeps the
+current transformation matrix (q / Q / cm) and maps every path point (m, l, re) to page space, in PDF
+points (1/72 in).  A sheet holding only a 100 mm scale bar must then span 100 mm = 283.465 pt.  The
+interpreter does not care which transform cairo chose (cairo writes a y-flip ``cm`` and user-unit
+scaling may move into the matrix in other versions), so the check is robust.  The PNG is checked the
+same way by rasterising at 254 dpi (10 px per mm) and measuring the black bar in pixels.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import zlib
+
+import pytest
+
+from constructions.geometry import Vec
+from constructions.record import Arrow, Construction, Diagram, Point, Role, ScaleBar
+from drafting import export as export_mod
+from drafting import layout as L
+from drafting.export import ExportError, write_sheet
+from drafting.paper import Text, paper
+from drafting.sheet import ResultRow, Sheet, SheetInfo, compose_sheet
+
+PT_PER_MM = 72 / 25.4
+
+
+def small_sheet(p: str = "A4", orientation: str = "landscape") -> Sheet:
+    V = Diagram.VELOCITY
+    c = Construction("Velocity")
+    c = c.then("Choose the pole O_v.", Point("pole", Role.LABEL, V, Vec(0, 0), "O_v"))
+    c = c.then("Choose the velocity scale.", ScaleBar("scale", Role.SCALE_BAR, V, "velocity", 0.01))
+    c = c.then("Draw V_B from O_v; its tip is b.", Arrow("V_B", Role.KNOWN, V, Vec(0, 0), Vec(-0.6, 0.5), "V_B"),
+               Point("b", Role.LABEL, V, Vec(-0.6, 0.5), "b"))
+    return compose_sheet(c, SheetInfo("Export test", "TOM-X-1", paper=p, orientation=orientation, date="2025-01-15"),
+                         [ResultRow("V_B", "781 mm/s", "781 mm/s", "0 %")])
+
+
+def bar_sheet(length: float = 100.0) -> Sheet:
+    """A blank A4 sheet with a single scale bar of ``length`` mm (no lettering, only paths)."""
+    cmds, _ = L.scale_bar(50.0, 50.0, length, length, "mm", name="bar")
+    return Sheet(paper("A4"), tuple(c for c in cmds if not isinstance(c, Text)))
+
+
+def pdf_streams(pdf: bytes) -> list[bytes]:
+    out = []
+    for m in re.finditer(rb"stream\r?\n(.*?)endstream", pdf, re.S):
+        data = m.group(1)
+        try:
+            out.append(zlib.decompress(data))
+        except zlib.error:
+            try:
+                out.append(zlib.decompressobj().decompress(data))
+            except zlib.error:
+                out.append(data)
+    return out
+
+
+def mul(a, b):
+    """PDF matrices [a b c d e f]: the product a x b (apply a, then b)."""
+    return (a[0] * b[0] + a[1] * b[2], a[0] * b[1] + a[1] * b[3],
+            a[2] * b[0] + a[3] * b[2], a[2] * b[1] + a[3] * b[3],
+            a[4] * b[0] + a[5] * b[2] + b[4], a[4] * b[1] + a[5] * b[3] + b[5])
+
+
+def path_points(content: bytes) -> list[tuple[float, float]]:
+    """Every path point of a content stream in page space (points), following q/Q/cm."""
+    ctm = (1.0, 0.0, 0.0, 1.0, 0.0, 0.0)
+    stack = []
+    operands: list[float] = []
+    pts = []
+
+    def page(x, y):
+        return (ctm[0] * x + ctm[2] * y + ctm[4], ctm[1] * x + ctm[3] * y + ctm[5])
+
+    for tok in re.findall(rb"[A-Za-z'\"*]+|-?\d*\.?\d+|\[|\]|/[^\s/\[\]()<>]+|\([^)]*\)", content):
+        try:
+            operands.append(float(tok))
+            continue
+        except ValueError:
+            pass
+        op = tok.decode("latin1")
+        if op == "q":
+            stack.append(ctm)
+        elif op == "Q":
+            ctm = stack.pop()
+        elif op == "cm" and len(operands) >= 6:
+            ctm = mul(tuple(operands[-6:]), ctm)
+        elif op in ("m", "l") and len(operands) >= 2:
+            pts.append(page(*operands[-2:]))
+        elif op == "re" and len(operands) >= 4:
+            x, y, w, h = operands[-4:]
+            pts += [page(x, y), page(x + w, y + h)]
+        elif op == "c" and len(operands) >= 6:
+            pts += [page(*operands[-2:])]
+        operands = []
+    return pts
+
+
+@pytest.mark.parametrize("p,orientation,w_mm,h_mm", [("A4", "landscape", 297, 210), ("A3", "portrait", 297, 420)])
+def test_pdf_page_is_exactly_the_paper(tmp_path, p, orientation, w_mm, h_mm):
+    paths = write_sheet(small_sheet(p, orientation), tmp_path, "sheet", ("pdf",))
+    assert paths == [tmp_path / "sheet.pdf"]
+    pdf = paths[0].read_bytes()
+    boxes = re.findall(rb"/MediaBox\s*\[\s*([-\d.\s]+)\]", pdf)
+    assert boxes
+    for b in boxes:
+        x0, y0, x1, y1 = (float(v) for v in b.split())
+        assert (x1 - x0) == pytest.approx(w_mm * PT_PER_MM, abs=0.01)
+        assert (y1 - y0) == pytest.approx(h_mm * PT_PER_MM, abs=0.01)
+    assert (297 * PT_PER_MM) == pytest.approx(841.89, abs=0.01)
+
+
+def test_a_100_mm_scale_bar_is_100_mm_on_the_pdf(tmp_path):
+    (pdf_path,) = write_sheet(bar_sheet(100.0), tmp_path, "bar", ("pdf",))
+    pts = []
+    for s in pdf_streams(pdf_path.read_bytes()):
+        pts += path_points(s)
+    assert pts, "no path found in the PDF content"
+    # the page background rectangle spans the page: leave it out
+    bar = [(x, y) for x, y in pts if 0.5 < x < 841.0]
+    xs = [x for x, _ in bar]
+    span = max(xs) - min(xs)
+    assert span == pytest.approx(100 * PT_PER_MM, abs=0.01)
+    assert min(xs) == pytest.approx(50 * PT_PER_MM, abs=0.01)
+    # the ticks are 20 mm apart (a 100 mm bar has five divisions)
+    ticks: list[float] = []
+    for x in sorted(xs):
+        if not ticks or x - ticks[-1] > 0.05:
+            ticks.append(x)
+    assert len(ticks) == 6
+    assert all(b - a == pytest.approx(20 * PT_PER_MM, abs=0.02) for a, b in zip(ticks, ticks[1:]))
+
+
+def test_png_is_written_at_true_scale(tmp_path):
+    from PIL import Image
+    (png,) = write_sheet(bar_sheet(100.0), tmp_path, "bar", ("png",), dpi=254)
+    img = Image.open(png).convert("L")
+    assert img.size == (2970, 2100)
+    # the bar is 1.6 mm high at y 50 + numbers... find the row through the middle of the bar
+    w, h = img.size
+    px = img.load()
+    best_row, best = None, 0
+    for y in range(400, 700):
+        dark = sum(1 for x in range(0, w, 2) if px[x, y] < 128)
+        if dark > best:
+            best_row, best = y, dark
+    row = [x for x in range(w) if px[x, best_row] < 128]
+    width_px = max(row) - min(row) + 1
+    # 100 mm at 10 px/mm, plus the 0.25 mm outline (half on each side): 1000..1003 px
+    assert 998 <= width_px <= 1004
+
+
+def test_all_formats_written_and_png_is_a_png(tmp_path):
+    from PIL import Image
+    out = tmp_path / "new" / "folder"
+    paths = write_sheet(small_sheet(), out, "sample")
+    assert [p.name for p in paths] == ["sample.svg", "sample.pdf", "sample.png"]
+    assert paths[0].read_text(encoding="utf-8").startswith("<svg")
+    assert paths[1].read_bytes().startswith(b"%PDF")
+    assert paths[2].read_bytes().startswith(b"\x89PNG")
+    with Image.open(paths[2]) as img:
+        assert img.size == (round(297 / 25.4 * 150), round(210 / 25.4 * 150))
+    assert sorted(os.listdir(out)) == ["sample.pdf", "sample.png", "sample.svg"]
+
+
+def test_failing_conversion_leaves_no_partial_and_no_temp_file(tmp_path, monkeypatch):
+    (tmp_path / "sheet.png").write_bytes(b"old")
+
+    def broken(svg, fh, dpi):
+        fh.write(b"\x89PNG half a file")
+        raise RuntimeError("cairo ran out of memory")
+
+    monkeypatch.setattr(export_mod, "_convert_png", broken)
+    with pytest.raises(ExportError) as err:
+        write_sheet(small_sheet(), tmp_path, "sheet")
+    assert str(tmp_path / "sheet.png") in str(err.value)
+    # nothing new appeared (the svg and pdf were not moved in either), no temp file is left,
+    # and the old file is untouched
+    assert sorted(os.listdir(tmp_path)) == ["sheet.png"]
+    assert (tmp_path / "sheet.png").read_bytes() == b"old"
+
+
+def test_failing_rename_leaves_no_temp_file(tmp_path, monkeypatch):
+    def refuse(src, dst):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(export_mod.os, "replace", refuse)
+    with pytest.raises(ExportError, match="sheet.svg"):
+        write_sheet(small_sheet(), tmp_path, "sheet", ("svg",))
+    assert os.listdir(tmp_path) == []
+
+
+def test_impossible_folder_raises_export_error_naming_it(tmp_path):
+    blocker = tmp_path / "a file"
+    blocker.write_text("not a folder")
+    target = blocker / "out"
+    with pytest.raises(ExportError) as err:
+        write_sheet(small_sheet(), target, "sheet")
+    msg = str(err.value)
+    assert str(target) in msg and msg.endswith(".") and msg.count(". ") == 0
+
+
+@pytest.mark.skipif(hasattr(os, "geteuid") and os.geteuid() == 0, reason="root can write anywhere")
+def test_unwritable_folder_raises_export_error_naming_it(tmp_path):
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    ro.chmod(0o500)
+    try:
+        with pytest.raises(ExportError) as err:
+            write_sheet(small_sheet(), ro, "sheet")
+        assert str(ro) in str(err.value)
+        assert os.listdir(ro) == []
+    finally:
+        ro.chmod(0o700)
+
+
+def test_folder_refusing_new_files_raises_export_error_naming_it(tmp_path, monkeypatch):
+    """The same as an unwritable folder, but also when the tests run as root."""
+    def refuse(*args, **kwargs):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(export_mod.tempfile, "mkstemp", refuse)
+    with pytest.raises(ExportError) as err:
+        write_sheet(small_sheet(), tmp_path, "sheet")
+    assert str(tmp_path) in str(err.value) and "Permission denied" in str(err.value)
+    assert os.listdir(tmp_path) == []
+
+
+def test_bad_format_and_stem(tmp_path):
+    with pytest.raises(ExportError, match="dxf"):
+        write_sheet(small_sheet(), tmp_path, "sheet", ("dxf",))
+    with pytest.raises(ExportError):
+        write_sheet(small_sheet(), tmp_path, "../escape", ("svg",))
+    assert os.listdir(tmp_path) == []
