@@ -383,7 +383,7 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
     c, s, wx, wy, d2, d, f1, f2, tmp, inv, al, be = (np.empty(m) for _ in range(12))
     bt = np.empty(m, dtype=bool)
 
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):  # NaN/inf handled explicitly below
         for i in range(0, n, CHUNK):
             j = min(i + CHUNK, n)
             k = j - i
@@ -570,7 +570,7 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
     c, s, y, h, tmp, px, py, inv = (np.empty(m) for _ in range(8))
     bt = np.empty(m, dtype=bool)
 
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):  # NaN/inf handled explicitly below
         for i in range(0, n, CHUNK):
             j = min(i + CHUNK, n)
             k = j - i
@@ -703,7 +703,7 @@ def coupler_point(Bx, By, VBx, VBy, theta2, omega2, *, distance, angle):
     Dx, Dy, VDx, VDy = (np.empty(n) for _ in range(4))
     m = min(CHUNK, max(n, 1))
     c, s, t, u = (np.empty(m) for _ in range(4))
-    with np.errstate(invalid="ignore"):
+    with np.errstate(all="ignore"):
         for i in range(0, n, CHUNK):
             j = min(i + CHUNK, n)
             k = j - i

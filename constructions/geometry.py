@@ -131,7 +131,7 @@ class Line:
         n = self.direction.norm()
         if not math.isfinite(n) or n == 0.0:
             raise DegenerateInput("a line needs a non-zero direction")
-        if abs(n - 1.0) > 1e-12:
+        if n != 1.0:
             object.__setattr__(self, "direction", self.direction / n)
 
     @classmethod

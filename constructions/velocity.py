@@ -37,8 +37,10 @@ def vector_scale(known: float, extent: float, *, known_mm: tuple[float, float] =
     """The 1-2-5 scale (units per paper mm) for a vector polygon.
 
     The finest scale at which the known vector is at most ``known_mm[1]`` long and the whole polygon
-    (``extent``, its larger bounding-box side) fits in ``max_extent_mm``; with a well-proportioned
-    polygon the known vector then comes out 50..100 mm long.
+    (``extent``, its larger bounding-box side) fits in ``max_extent_mm``.  The 1-2-5 series steps by up
+    to 2.5x, so with a well-proportioned polygon the known vector comes out 40..100 mm long (50..100
+    unless its magnitude is 2.0..2.5 times a power of ten); a scale of 2.5 would close that gap but is not
+    a 1-2-5 step, and a student's ruler reads 1-2-5 scales without arithmetic.
     """
     if not (known > 0 and math.isfinite(known) and math.isfinite(extent)):
         raise DegenerateInput("the known vector must be finite and non-zero to choose a scale")
@@ -199,8 +201,11 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter =
 def _image_steps(step: FixedToLink, pos, vel, rel, tol: Tolerance, fmt: Formatter):
     """Velocity image of point D on a link BC: the triangle bcd is similar to BCD (notes, Example 4).
 
-    Through b draw the perpendicular to BD, through c the perpendicular to CD; they meet at d.  When D
-    lies on the line BC the image is a straight line and d divides bc as D divides BC.
+    d is placed by the similar triangle itself (the notes' option 1): d - b = (c - b) z with z the complex
+    ratio (D - B) / (C - B), exact for a rigid link and well conditioned wherever D lies.  The notes'
+    option 2 -- the perpendiculars to BD through b and to CD through c -- is drawn as the visible
+    construction when those lines cross at a readable angle; on (or nearly on) the line BC they are
+    parallel and d simply divides bc as D divides BC.
     """
     a, link = step.point, step.link
     d = a.name
@@ -209,28 +214,28 @@ def _image_steps(step: FixedToLink, pos, vel, rel, tol: Tolerance, fmt: Formatte
     vp, vq = vel[p], vel[q]
     ip, iq, idd = image_name(p), image_name(q), image_name(d)
     out = []
-    pq = Q - P
-    collinear = abs(pq.unit().cross(D - P)) <= 1e-9 * max(pq.norm(), (D - P).norm())
-    if collinear:
-        t = (D - P).dot(pq) / pq.dot(pq)
-        vd = vp + (vq - vp) * t
-        out.append((f"{d} lies on {p}{q}: mark {idd} dividing {ip}{iq} as {d} divides {p}{q} "
-                    f"({p}{d}/{p}{q} = {t:.4g}).", (), None))
+    pq, pd, qd = Q - P, D - P, D - Q
+    t = pd.dot(pq) / pq.dot(pq)           # along BC
+    u = pq.cross(pd) / pq.dot(pq)         # square to BC (left positive)
+    bc = vq - vp
+    vd = vp + bc * t + bc.perp() * u
+    crossing = abs(pd.unit().cross(qd.unit())) if pd.norm() > 0 and qd.norm() > 0 else 0.0
+    if crossing < WARN_SINE:
+        out.append((f"{d} lies on (or next to) the line {p}{q}: mark {idd} dividing {ip}{iq} as {d} "
+                    f"divides {p}{q} ({p}{d}/{p}{q} = {t:.4g}).", (), None))
     else:
-        lp, lq = Line(vp, (D - P).perp()), Line(vq, (D - Q).perp())
-        hit = intersect_lines(lp, lq, Tolerance(tol.length_scale, sine=1e-12))
-        vd = hit.points[0]
         out.append((f"Velocity image of link {link.number}: through {ip} draw the perpendicular to {p}{d}, "
                     f"through {iq} the perpendicular to {q}{d}; they meet at {idd}.",
-                    (TrialLine(f"trial V_{d}{p}", Role.TRIAL, Diagram.VELOCITY, vp, (D - P).perp(),
+                    (TrialLine(f"trial V_{d}{p}", Role.TRIAL, Diagram.VELOCITY, vp, pd.perp(),
                                f"\u22a5 {p}{d}"),
-                     TrialLine(f"trial V_{d}{q}", Role.TRIAL, Diagram.VELOCITY, vq, (D - Q).perp(),
+                     TrialLine(f"trial V_{d}{q}", Role.TRIAL, Diagram.VELOCITY, vq, qd.perp(),
                                f"\u22a5 {q}{d}")), None))
     vel[d] = vd
     rel[(d, p)] = vd - vp
     out.append((f"{ip}{iq}{idd} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
                 f"V_{d} = {fmt('velocity', vd.norm())}.",
-                (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd), f"image of link {link.number}"),
+                (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd),
+                         f"image of link {link.number}"),
                  Point(f"image {d}", Role.LABEL, Diagram.VELOCITY, vd, idd),
                  Arrow(f"result V_{d}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vd, f"V_{d}")), None))
     return out
@@ -278,8 +283,10 @@ def _singular(m: Mechanism, step, pose: Pose, condition: float) -> Indeterminate
 
 
 def _change_point(m: Mechanism, pose: Pose) -> bool:
-    """All joints of the loop in one line (the branches of a four-bar meet)."""
-    pts = list(pose.positions.values())
+    """All joints of the loop in one line (the branches of a four-bar meet); points merely fixed to a
+    link do not count."""
+    joints = set(m.ground) | {j for k in m.links for j in k.joints}
+    pts = [p for n, p in pose.positions.items() if n in joints]
     far = max(pts, key=lambda p: p.distance_to(pts[0]))
     if far == pts[0]:
         return True
