@@ -81,7 +81,7 @@ def _styles() -> dict[str, Style]:
         Style("pin", width=THICK, fill="white"),
         Style("dot", stroke=None, fill="black"),
         Style("trial", width=THIN, cap="butt"),                     # thin continuous, ISO type 01.2
-        Style("path", width=THIN, dash=long_dash_dot(THIN)),         # loci and centre lines
+        Style("path", width=THIN),                                   # construction arcs (loci), thin solid
         Style("centre", width=THIN, dash=long_dash_dot(THIN)),
         Style("hidden", width=THIN, dash=dashed(THIN), cap="butt"),
         Style("vector", width=THICK, cap="butt"),                   # known and result vectors
