@@ -403,14 +403,11 @@ def test_zero_vector_has_no_direction_and_a_scene_needs_a_size():
             Tolerance(size)
 
 
-# -- known defects ------------------------------------------------------------------------------------
+# -- regressions ---------------------------------------------------------------------------------------
 
-@pytest.mark.xfail(strict=True, reason=(
-    "Line.__post_init__ only renormalises a direction whose norm differs from 1 by more than 1e-12, "
-    "so a direction of norm 1 + 9e-13 is kept as is; signed distances and feet are then off by ~1e-12 "
-    "relative, which near tangency shifts a depth of 1e-10 L by 1 % and the half-chord by 0.4 %. "
-    "Fix: divide by the norm whenever it is not exactly 1.0."))
 def test_a_nearly_unit_direction_is_normalised_before_it_measures_distances():
+    """Found by this suite: a direction of norm 1 + 9e-13 used to be kept un-normalised (the cut was
+    |n - 1| > 1e-12), which put the depth of a 1e-10 L crossing off by 1 % and its half-chord by 0.4 %."""
     r, y = 1.0, 1.0 - DEPTH
     line = Line(Vec(0.0, 0.0), Vec(1.0 + 2.0 ** -40, 0.0))
     hit = intersect_line_circle(line, Circle(Vec(0.3, y), r), Tolerance(1.0, **FINE))
