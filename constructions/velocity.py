@@ -29,6 +29,9 @@ conditioning of the measured values grows like 1/sine^2, so above 1e-4 they keep
 WARN_SINE = 1e-2
 """Below this the values are returned with a warning and an error estimate."""
 
+DEAD_CENTRE_SINE = 1e-9
+"""Crank and driven link closer to a line than this (sine of the angle between them) are at dead centre."""
+
 SCALE_SERIES = (1.0, 2.0, 5.0)
 
 
@@ -94,7 +97,6 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter =
     """Draw the velocity polygon of ``m`` at ``pose`` with crank angular velocity ``omega`` (rad/s,
     CCW positive).  ``scale`` (SI units per paper mm) overrides the 1-2-5 choice."""
     plan = assembly_plan(m)
-    where = describe_angle(pose.angle)
     if omega == 0.0 or not math.isfinite(omega):
         raise DegenerateInput(f"the crank speed must be finite and non-zero, not {omega!r} rad/s")
     pos = pose.positions
@@ -159,6 +161,9 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter =
                     f"{math.degrees(math.asin(min(hit.condition, 1.0))):.3g} deg; values are "
                     f"sensitive to the drawing (rounding error about "
                     f"{4.0 * 2.2e-16 / hit.condition ** 2:.1e} relative).")
+            dead = _dead_centre(pos, crank, arms, j)
+            if dead:
+                warnings.append(dead)
             measured = []
             for link, centre in arms:
                 v_rel = vj - vel[centre]
@@ -276,10 +281,25 @@ def _singular(m: Mechanism, step, pose: Pose, condition: float) -> Indeterminate
                   f"cannot close")
     else:
         kind = "limit position"
-        reason = (f"limit position: link {step.link.number} ({step.link.label}) is square to the guide "
+        reason = (f"limit position (lock): link {step.link.number} ({step.link.label}) is square to the guide "
                   f"of {j}, so the trial lines for V_{j} and V_{j}{step.centre} are parallel "
                   f"(sine {condition:.1e}) and the velocity polygon cannot close")
     return IndeterminatePosition(reason, position=where, kind=kind, condition=condition)
+
+
+def _dead_centre(pos, crank: CrankTip, arms, j: str) -> str | None:
+    """At a dead centre the crank and the link it drives are in line: for a driving crank the
+    polygon still closes (the driven joint is momentarily at rest along that link), but the position
+    is singular for motion driven from the output, so the reader is told."""
+    for link, centre in arms:
+        if centre == crank.tip:
+            a = pos[crank.tip] - pos[crank.pivot]
+            b = pos[j] - pos[centre]
+            if abs(a.unit().cross(b.unit())) < DEAD_CENTRE_SINE:
+                return (f"Dead centre: crank {crank.pivot}{crank.tip} and link {link.number} "
+                        f"({link.label}) are in line; driven by the crank the polygon closes, but the "
+                        f"output could not drive the crank from here.")
+    return None
 
 
 def _change_point(m: Mechanism, pose: Pose) -> bool:
