@@ -97,19 +97,25 @@ def results_text(study: Study) -> str:
 
 
 def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper: str | None) -> int:
+    """Render every scene; a scene that fails is reported in one line and the others still render."""
     from .export import ExportError, write_sheet
     from .layout import LayoutError
+    failed = 0
     for path in scenes:
-        study = _solve(_study(path, paper))
         try:
-            sheet = sheet_for(study)
-            written = write_sheet(sheet, out, path.stem, formats)
-        except (ExportError, LayoutError) as e:
-            raise UserError(f"{path}: {e}") from None
+            study = _solve(_study(path, paper))
+            try:
+                written = write_sheet(sheet_for(study), out, path.stem, formats)
+            except (ExportError, LayoutError) as e:
+                raise UserError(f"{path}: {e}") from None
+        except UserError as e:
+            print(f"drafting: error: {e}", file=sys.stderr)
+            failed += 1
+            continue
         print(results_text(study))
         for w in written:
             print(f"  wrote {w}")
-    return 0
+    return 2 if failed else 0
 
 
 def cmd_solve(path: Path, as_json: bool) -> int:

@@ -27,14 +27,23 @@ class ExportError(Exception):
     """An output file or folder cannot be written; the message names the path."""
 
 
-def _convert_pdf(svg: bytes, fh) -> None:
+FONTS_CONF = Path(__file__).resolve().parent / "fonts" / "fonts.conf"
+
+
+def _cairosvg():
+    """cairosvg, with fontconfig told about the bundled DejaVu Sans before cairo first looks for fonts,
+    so the PDF/PNG are set in the font the layout measured with (a user's FONTCONFIG_FILE wins)."""
+    os.environ.setdefault("FONTCONFIG_FILE", str(FONTS_CONF))
     import cairosvg
-    cairosvg.svg2pdf(bytestring=svg, write_to=fh)
+    return cairosvg
+
+
+def _convert_pdf(svg: bytes, fh) -> None:
+    _cairosvg().svg2pdf(bytestring=svg, write_to=fh)
 
 
 def _convert_png(svg: bytes, fh, dpi: float) -> None:
-    import cairosvg
-    cairosvg.svg2png(bytestring=svg, write_to=fh, dpi=dpi)
+    _cairosvg().svg2png(bytestring=svg, write_to=fh, dpi=dpi)
 
 
 def _writers(svg: bytes, dpi: float) -> dict[str, Callable[[object], None]]:

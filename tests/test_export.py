@@ -236,3 +236,14 @@ def test_bad_format_and_stem(tmp_path):
     with pytest.raises(ExportError):
         write_sheet(small_sheet(), tmp_path, "../escape", ("svg",))
     assert os.listdir(tmp_path) == []
+
+
+def test_pdf_is_set_in_the_bundled_font_only(tmp_path):
+    """DESIGN: bundle one font and name only it -- the PDF embeds DejaVu Sans and nothing else."""
+    import re
+    from drafting.cli import builtin_example, sheet_for
+    from drafting.scene import load_scene
+    from drafting.study import Study
+    (path,) = write_sheet(sheet_for(Study(load_scene(builtin_example()))), tmp_path, "font", ["pdf"])
+    names = set(re.findall(rb"/FontName /[A-Z]{6}\+([A-Za-z-]+)", path.read_bytes()))
+    assert names and names <= {b"DejaVuSans", b"DejaVuSans-Oblique"}

@@ -214,3 +214,55 @@ def test_readme_commands_are_what_ci_runs():
     assert len(readme) == 2
     for cmd in readme:
         assert cmd in ci
+
+
+# -- rendering ------------------------------------------------------------------------------------------
+
+def test_output_folder_that_cannot_be_written(tmp_path, capsys):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("not a folder")
+    code, out, err = run(["render", str(builtin_example()), "-o", str(blocker / "out")], capsys)
+    assert code == 2 and err.count("\n") == 1 and str(blocker / "out") in err and "Traceback" not in err
+
+
+def test_one_bad_scene_does_not_stop_the_others(tmp_path, capsys):
+    bad = write(tmp_path, EXAMPLE.replace("length = 94", "length = 30"), "bad.toml")
+    out_dir = tmp_path / "out"
+    code, out, err = run(["render", str(bad), str(builtin_example()), "-o", str(out_dir), "--format", "svg"],
+                         capsys)
+    assert code == 2 and "bad.toml" in err
+    assert sorted(p.name for p in out_dir.iterdir()) == ["notes-velocity-example-1.svg"]
+
+
+def test_bad_format_is_refused(capsys):
+    with pytest.raises(SystemExit) as e:
+        main(["render", str(builtin_example()), "--format", "svg,gif"])
+    assert e.value.code == 2 and "unknown format 'gif'" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("scene", sorted(GALLERY.glob("*.toml")), ids=lambda p: p.stem)
+def test_every_gallery_scene_renders(scene, tmp_path, capsys):
+    import xml.etree.ElementTree as ET
+    code, out, err = run(["render", str(scene), "-o", str(tmp_path), "--format", "svg"], capsys)
+    assert code == 0, err
+    svg = tmp_path / f"{scene.stem}.svg"
+    root = ET.parse(svg).getroot()
+    text = " ".join("".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text"))
+    for label in ("Ov", "b", "c", "Space diagram", "Velocity polygon", "Results", load_scene(scene).drawing_number):
+        assert label in text
+    assert root.get("width") == "297mm" and root.get("height") == "210mm"
+
+
+def test_default_command_writes_three_formats(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run([], capsys)
+    assert code == 0
+    assert "agree to 1e-9 relative" in out and "V_C" in out
+    for fmt in ("svg", "pdf", "png"):
+        assert (tmp_path / "drafting-output" / f"notes-velocity-example-1.{fmt}").stat().st_size > 1000
+
+
+def test_a3_override(tmp_path, capsys):
+    code, out, err = run(["render", str(builtin_example()), "-o", str(tmp_path), "--format", "svg",
+                          "--paper", "A3"], capsys)
+    assert code == 0 and 'width="420mm"' in (tmp_path / "notes-velocity-example-1.svg").read_text()
