@@ -317,6 +317,24 @@ _FOURBAR_FIELDS = ("Bx", "By", "Cx", "Cy", "theta2", "theta3", "omega2", "omega3
                    "VBx", "VBy", "VCx", "VCy", "condition")
 
 
+def _crank_tip(c, s, r1, o1x, o1y, w, Bx, By, VBx, VBy) -> None:
+    """B = O1 + r1 (cos, sin) and V_B = omega1 k x (B - O1) = omega1 r1 (-sin, cos), into the out arrays."""
+    np.multiply(c, r1, out=Bx)
+    if o1x:
+        Bx += o1x
+    np.multiply(s, r1, out=By)
+    if o1y:
+        By += o1y
+    if isinstance(w, float):
+        np.multiply(s, -w * r1, out=VBx)
+        np.multiply(c, w * r1, out=VBy)
+    else:
+        np.multiply(s, w, out=VBx)
+        VBx *= -r1
+        np.multiply(c, w, out=VBy)
+        VBy *= r1
+
+
 def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocker, branch):
     """Closed-form positions and velocities of a four-bar linkage, vectorised over crank angles.
 
@@ -398,21 +416,7 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
             w = _chunk_of(w1, i, j)
 
             _sincos(th[i:j], c, s, wx, wy)
-            # B = O1 + crank (cos, sin);  V_B = omega1 k x (B - O1) = omega1 crank (-sin, cos)
-            np.multiply(c, r1, out=Bx)
-            if o1x:
-                Bx += o1x
-            np.multiply(s, r1, out=By)
-            if o1y:
-                By += o1y
-            if isinstance(w, float):
-                np.multiply(s, -w * r1, out=VBx)
-                np.multiply(c, w * r1, out=VBy)
-            else:
-                np.multiply(s, w, out=VBx)
-                VBx *= -r1
-                np.multiply(c, w, out=VBy)
-                VBy *= r1
+            _crank_tip(c, s, r1, o1x, o1y, w, Bx, By, VBx, VBy)
             # w = O2 - B, d
             np.subtract(o2x, Bx, out=wx)
             np.subtract(o2y, By, out=wy)
@@ -585,20 +589,7 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
             w = _chunk_of(w1, i, j)
 
             _sincos(th[i:j], c, s, px, py)
-            np.multiply(c, r1, out=Bx)
-            if o1x:
-                Bx += o1x
-            np.multiply(s, r1, out=By)
-            if o1y:
-                By += o1y
-            if isinstance(w, float):
-                np.multiply(s, -w * r1, out=VBx)
-                np.multiply(c, w * r1, out=VBy)
-            else:
-                np.multiply(s, w, out=VBx)
-                VBx *= -r1
-                np.multiply(c, w, out=VBy)
-                VBy *= r1
+            _crank_tip(c, s, r1, o1x, o1y, w, Bx, By, VBx, VBy)
             # y = y0 + crank (s ex - c ey)   (signed distance of B from the guide)
             np.multiply(s, ex * r1, out=y)
             np.multiply(c, ey * r1, out=tmp)
