@@ -93,9 +93,10 @@ def _sense(omega: float) -> str:
 
 
 def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter = si_format,
-                     scale: float | None = None) -> VelocityAnalysis:
+                     scale: float | None = None, max_extent_mm: float = 110.0) -> VelocityAnalysis:
     """Draw the velocity polygon of ``m`` at ``pose`` with crank angular velocity ``omega`` (rad/s,
-    CCW positive).  ``scale`` (SI units per paper mm) overrides the 1-2-5 choice."""
+    CCW positive).  ``scale`` (SI units per paper mm) overrides the 1-2-5 choice, which otherwise keeps
+    the polygon within ``max_extent_mm`` of paper."""
     plan = assembly_plan(m)
     if omega == 0.0 or not math.isfinite(omega):
         raise DegenerateInput(f"the crank speed must be finite and non-zero, not {omega!r} rad/s")
@@ -190,7 +191,7 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter =
     # The scale: the finest 1-2-5 step that keeps the known vector <= 100 mm and the polygon in view.
     pts = list(vel.values())
     extent = max(max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
-    s = scale if scale is not None else vector_scale(v_tip.norm(), extent)
+    s = scale if scale is not None else vector_scale(v_tip.norm(), extent, max_extent_mm=max_extent_mm)
     rec = Construction("Velocity polygon")
     for caption, eq in equations:
         rec = rec.then(caption, equation=eq)

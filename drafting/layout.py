@@ -698,7 +698,10 @@ GUTTER = 3.0
 
 
 def plan_landscape(paper: Paper, tb_height: Callable[[float], float], space: ViewportNeed | None,
-                   vectors: Sequence[ViewportNeed]) -> Plan:
+                   vectors: Sequence[ViewportNeed], text_width: float | None = None) -> Plan:
+    """Diagrams in a column on the left, text and title block on the right.  ``text_width`` asks for a
+    text column of that width (at least TEXT_COL_MIN); by default it is half the frame, at most the
+    title block's width."""
     F = paper.frame
     vec_w = max((v.size[0] for v in vectors), default=0.0)
     diag_need = max(vec_w, 100.0 if space else 0.0)
@@ -707,7 +710,7 @@ def plan_landscape(paper: Paper, tb_height: Callable[[float], float], space: Vie
         tb = Rect(F.right - tbw, F.bottom - tb_height(tbw), tbw, tb_height(tbw))
         slots = [("text:0", Rect.from_edges(F.x + GUTTER, F.y + GUTTER, F.right - GUTTER, tb.y - GUTTER))]
         return Plan({}, tuple(slots), tb, ())
-    pref = min(paper.title_block_max_width, 0.5 * F.w)
+    pref = min(paper.title_block_max_width, 0.5 * F.w) if text_width is None else text_width
     # two arrangements of the vector viewports: stacked in one column, or side by side in a row;
     # take the one that leaves the space diagram the most height (the row needs a wider column)
     row_w = sum(v.size[0] for v in vectors)

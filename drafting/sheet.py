@@ -711,6 +711,57 @@ def compose_sheet(construction: Construction, info: SheetInfo, results: Sequence
         raise LayoutError(msg[:1].upper() + msg[1:] + ("" if msg.endswith(".") else ".")) from None
 
 
+COMFORTABLE_LETTERING = 3.0
+"""Lettering below this is taken only when nothing else fits."""
+
+
+def _best_plan(pp: Paper, tb_height, space_need, vec_needs, space_entities, sections, construction, results):
+    """The layout plan and its space scale and text flow.
+
+    Landscape sheets try the default text column and the narrowest one: a narrower column can let the
+    space diagram go up an ISO scale (1:2 -> 1:1 on A4 for the notes' slider-crank), which is worth it
+    when the text keeps its lettering size, or -- to bring a reduced space diagram up towards true
+    scale -- when it stays at least COMFORTABLE_LETTERING.
+    """
+    if pp.orientation == "landscape":
+        plans = [L.plan_landscape(pp, tb_height, space_need, vec_needs),
+                 L.plan_landscape(pp, tb_height, space_need, vec_needs, text_width=L.TEXT_COL_MIN)]
+    else:
+        plans = [L.plan_portrait(pp, tb_height, space_need, vec_needs)]
+    options = []
+    space_misfit = None
+    for plan in plans:
+        ratio = None
+        if space_entities:
+            r = plan.viewports["space"]  # the scale is the same if the viewport later takes an empty slot
+            got = _fit_space(space_entities, r.w, r.h)
+            if got is None:
+                space_misfit = space_misfit or (f"the space diagram does not fit its {r.w:.0f} x {r.h:.0f} mm "
+                                                f"viewport on {pp.name} {pp.orientation}; use A3")
+                continue
+            ratio = got[0]
+        # text: equations, steps, results, notes -- shrunk from 3.5 to 2.5 mm until they fit
+        slots = [(name, r) for name, r in plan.text_slots if r.w > 20 and r.h > 10]
+        flowed = L.flow_shrinking(sections, slots)
+        if flowed is None:
+            continue
+        options.append((plan, ratio, slots, flowed))
+    if not options and space_misfit:
+        raise LayoutError(space_misfit)
+    if not options:
+        raise LayoutError(f"the equations, {len(construction.steps)} steps and {len(results)} result rows do "
+                          f"not fit on {pp.name} {pp.orientation} even with 2.5 mm lettering; use A3")
+    first = options[0]
+    first_size = first[3][1]
+    reduced = first[1] is not None and L.ratio_factor(first[1]) < 1.0
+
+    def acceptable(o) -> bool:
+        size = o[3][1]
+        return o is first or size >= first_size - 1e-9 or (reduced and size >= COMFORTABLE_LETTERING - 1e-9)
+    readable = [o for o in options if acceptable(o)]
+    return max(readable, key=lambda o: (L.ratio_factor(o[1]) if o[1] else 0.0, o[3][1]))
+
+
 def _compose(construction: Construction, info: SheetInfo, results: Sequence[ResultRow], pp: Paper) -> Sheet:
     frame = pp.frame
     space_entities = tuple(e for e in construction.entities(Diagram.SPACE) if not isinstance(e, ScaleBar))
@@ -746,18 +797,13 @@ def _compose(construction: Construction, info: SheetInfo, results: Sequence[Resu
     def tb_height(width: float) -> float:
         return L.title_block(frame, width, info.title, tb_fields(probe_scale)).rect.h
 
-    planner = L.plan_landscape if pp.orientation == "landscape" else L.plan_portrait
-    plan = planner(pp, tb_height, space_need, vec_needs)
+    sections = _sections(construction, results, info.notes)
+    plan, ratio, slots, (text_cmds, size) = _best_plan(pp, tb_height, space_need, vec_needs, space_entities,
+                                                       sections, construction, results)
 
     specs: dict[str, DiagramSpec] = {s.key: s for s in vector_specs}
     scales: list[tuple[str, str]] = []
     if space_entities:
-        r = plan.viewports["space"]      # the scale is the same if the viewport later takes an empty slot
-        got = _fit_space(space_entities, r.w, r.h)
-        if got is None:
-            raise LayoutError(f"the space diagram does not fit its {r.w:.0f} x {r.h:.0f} mm viewport on "
-                              f"{pp.name} {pp.orientation}; use A3")
-        ratio = got[0]
         specs["space"] = DiagramSpec("space", f"Space diagram {L.ratio_text(ratio)}", space_entities,
                                      f"Space {L.ratio_text(ratio)}", "mm", L.ratio_factor(ratio),
                                      1000.0 * L.ratio_factor(ratio))
@@ -768,14 +814,6 @@ def _compose(construction: Construction, info: SheetInfo, results: Sequence[Resu
     tb = L.title_block(frame, plan.title_block.w, info.title, tb_fields(scale_text))
     regions: dict[str, Rect] = {"page": pp.page, "frame": frame, "title_block": tb.rect}
     cmds: list[Command] = [Rectangle(frame.x, frame.y, frame.w, frame.h, "frame", "frame")]
-    # text: equations, steps, results, notes -- shrunk from 3.5 to 2.5 mm until they fit
-    slots = [(name, r) for name, r in plan.text_slots if r.w > 20 and r.h > 10]
-    sections = _sections(construction, results, info.notes)
-    got = L.flow_shrinking(sections, slots)
-    if got is None:
-        raise LayoutError(f"the equations, {len(construction.steps)} steps and {len(results)} result rows do "
-                          f"not fit on {pp.name} {pp.orientation} even with 2.5 mm lettering; use A3")
-    text_cmds, size = got
     used = {c.region for c in text_cmds if isinstance(c, Text)}
     viewports = dict(plan.viewports)
     separators = list(plan.separators)

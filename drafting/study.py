@@ -20,6 +20,10 @@ from .scene import Scene
 from .units import format_value, from_si, unit_symbol
 
 
+POLYGON_EXTENT_MM = {"A4": 110.0, "A3": 160.0}
+"""The largest a vector polygon is drawn on each paper; the 1-2-5 scale is the finest that keeps it so."""
+
+
 class Study:
     def __init__(self, scene: Scene) -> None:
         self.scene = scene
@@ -41,7 +45,8 @@ class Study:
             return None
         pose = self.pose
         self._mark("velocity")
-        return velocity_polygon(self.scene.mechanism, pose, self.scene.omega, fmt=self.scene.units.format)
+        return velocity_polygon(self.scene.mechanism, pose, self.scene.omega, fmt=self.scene.units.format,
+                                max_extent_mm=POLYGON_EXTENT_MM[self.scene.paper])
 
     @cached_property
     def analytic(self) -> AnalyticSolution | None:
