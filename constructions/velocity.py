@@ -100,111 +100,124 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, fmt: Formatter =
     plan = assembly_plan(m)
     if omega == 0.0 or not math.isfinite(omega):
         raise DegenerateInput(f"the crank speed must be finite and non-zero, not {omega!r} rad/s")
-    pos = pose.positions
-    vel: dict[str, Vec] = {g: ORIGIN for g in m.ground}
-    rel: dict[tuple[str, str], Vec] = {}
-    ang: dict[int, float] = {s.number: 0.0 for s in m.slides}
-    cond: dict[str, float] = {}
-    warnings: list[str] = []
-    steps: list[tuple[str, tuple, VectorEquation | None]] = []
-
     crank = plan[0]
     assert isinstance(crank, CrankTip)
-    r_tip = pos[crank.tip] - pos[crank.pivot]
-    v_tip = r_tip.perp() * omega
-    vel[crank.tip] = v_tip
-    ang[crank.link.number] = omega
-    tol = Tolerance(v_tip.norm(), sine=SINGULAR_SINE)
-    b = image_name(crank.tip)
-    crank_name = f"{crank.pivot}{crank.tip}"
-    steps.append((
-        f"Draw V_{crank.tip} = \u03c9_{crank.link.number} \u00d7 {crank_name} from O_v, perpendicular to "
-        f"{crank_name} ({fmt('velocity', v_tip.norm())}, \u03c9_{crank.link.number} "
-        f"{_sense(omega)}); its tip is {b}.",
-        (Arrow(f"V_{crank.tip}", Role.KNOWN, Diagram.VELOCITY, ORIGIN, v_tip, f"V_{crank.tip}"),
-         Point(f"image {crank.tip}", Role.LABEL, Diagram.VELOCITY, v_tip, b)),
-        None))
-    equations: list[tuple[str, VectorEquation]] = []
-
+    poly = _Polygon(m, pose, crank, omega, fmt)
     for step in plan[1:]:
         if isinstance(step, (TwoCircles, CircleAndGuide)):
-            j = step.joint
-            jj = image_name(j)
-            if isinstance(step, TwoCircles):
-                arms = [(step.link_a, step.first), (step.link_b, step.second)]
-            else:
-                arms = [(step.link, step.centre)]
-            trials: list[Line] = []
-            for link, centre in arms:
-                pj = pos[j] - pos[centre]
-                through = vel[centre]
-                trials.append(Line(through, pj.perp()))
-                at = "O_v" if centre in m.ground else image_name(centre)
-                what = f"V_{j}" if centre in m.ground else f"V_{j}{centre}"
-                steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
-                              (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, through, pj.perp(),
-                                         f"\u22a5 {centre}{j}"),), None))
-            if isinstance(step, CircleAndGuide):
-                g = step.slide.line.direction
-                trials.append(Line(ORIGIN, g))
-                steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
-                              (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
-                                         "\u2225 guide"),), None))
-            hit = intersect_lines(trials[0], trials[1], tol)
-            if hit.contact is not Contact.CROSSING:
-                raise _singular(m, step, pose, hit.condition)
-            vj = hit.points[0]
-            vel[j] = vj
-            cond[j] = hit.condition
-            if hit.condition < WARN_SINE:
-                warnings.append(
-                    f"Near a singular position at {j}: the trial lines cross at "
-                    f"{math.degrees(math.asin(min(hit.condition, 1.0))):.3g} deg; values are "
-                    f"sensitive to the drawing (rounding error about "
-                    f"{4.0 * 2.2e-16 / hit.condition ** 2:.1e} relative).")
-            dead = _dead_centre(pos, crank, arms, j)
-            if dead:
-                warnings.append(dead)
-            measured = []
-            for link, centre in arms:
-                v_rel = vj - vel[centre]
-                rel[(j, centre)] = v_rel
-                r = pos[j] - pos[centre]
-                ang[link.number] = r.cross(v_rel) / r.dot(r)
-                what = f"V_{j}" if centre in m.ground else f"V_{j}{centre}"
-                measured.append(Arrow(f"result {what}", Role.RESULT, Diagram.VELOCITY, vel[centre], vj, what))
-            if isinstance(step, CircleAndGuide) or all(c not in m.ground for _, c in arms):
-                measured.append(Arrow(f"result V_{j}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vj, f"V_{j}"))
-            eq = _equation(arms, j, m, isinstance(step, CircleAndGuide))
-            equations.append((_equation_caption(eq, arms, j, m, step), eq))
-            omega_words = "; ".join(
-                f"\u03c9_{link.number} = {what}/{link.label} = {fmt('angular velocity', abs(ang[link.number]))} "
-                f"{_sense(ang[link.number])}"
-                for link, centre in arms
-                for what in [f"V_{j}" if centre in m.ground else f"V_{j}{centre}"])
-            values = ", ".join(f"{a.label} = {fmt('velocity', (a.tip - a.tail).norm())}" for a in measured)
-            steps.append((f"The trial lines meet at {jj}. Measure {values}; {omega_words}.",
-                          (Point(f"image {j}", Role.LABEL, Diagram.VELOCITY, vj, jj), *measured), None))
+            poly.dyad(step)
         elif isinstance(step, FixedToLink):
-            steps.extend(_image_steps(step, pos, vel, rel, tol, fmt))
-
-    # The scale: the finest 1-2-5 step that keeps the known vector <= 100 mm and the polygon in view.
-    pts = list(vel.values())
-    extent = max(max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
-    s = scale if scale is not None else vector_scale(v_tip.norm(), extent, max_extent_mm=max_extent_mm)
-    rec = Construction("Velocity polygon")
-    for caption, eq in equations:
-        rec = rec.then(caption, equation=eq)
-    rec = rec.then("Choose the pole O_v.", Point("pole O_v", Role.LABEL, Diagram.VELOCITY, ORIGIN, "O_v"))
-    rec = rec.then(f"Choose the velocity scale: 1 mm = {fmt('velocity', s)}; V_{crank.tip} is "
-                   f"{v_tip.norm() / s:.0f} mm long.",
-                   ScaleBar("velocity scale", Role.SCALE_BAR, Diagram.VELOCITY, "velocity", s))
-    for caption, entities, eq in steps:
-        rec = rec.then(caption, *entities, equation=eq)
-    return VelocityAnalysis(rec, pose, vel, rel, ang, cond, s, tuple(warnings))
+            poly.steps.extend(_image_steps(step, pose.positions, poly.vel, poly.rel, fmt))
+    return poly.analysis(scale, max_extent_mm)
 
 
-def _image_steps(step: FixedToLink, pos, vel, rel, tol: Tolerance, fmt: Formatter):
+class _Polygon:
+    """The polygon while it is drawn: image points found so far, measured values, pending steps."""
+
+    def __init__(self, m: Mechanism, pose: Pose, crank: CrankTip, omega: float, fmt: Formatter) -> None:
+        self.m, self.pose, self.crank, self.fmt = m, pose, crank, fmt
+        pos = pose.positions
+        self.vel: dict[str, Vec] = {g: ORIGIN for g in m.ground}
+        self.rel: dict[tuple[str, str], Vec] = {}
+        self.ang: dict[int, float] = {s.number: 0.0 for s in m.slides}
+        self.cond: dict[str, float] = {}
+        self.warnings: list[str] = []
+        self.equations: list[tuple[str, VectorEquation]] = []
+        self.steps: list[tuple[str, tuple, VectorEquation | None]] = []
+        # the known vector: V_B = omega1 k x O1B, drawn from the pole
+        v_tip = (pos[crank.tip] - pos[crank.pivot]).perp() * omega
+        self.v_known = v_tip
+        self.vel[crank.tip] = v_tip
+        self.ang[crank.link.number] = omega
+        self.tol = Tolerance(v_tip.norm(), sine=SINGULAR_SINE)
+        n, tip, name = crank.link.number, crank.tip, f"{crank.pivot}{crank.tip}"
+        self.steps.append((
+            f"Draw V_{tip} = \u03c9_{n} \u00d7 {name} from O_v, perpendicular to {name} "
+            f"({fmt('velocity', v_tip.norm())}, \u03c9_{n} {_sense(omega)}); its tip is {image_name(tip)}.",
+            (Arrow(f"V_{tip}", Role.KNOWN, Diagram.VELOCITY, ORIGIN, v_tip, f"V_{tip}"),
+             Point(f"image {tip}", Role.LABEL, Diagram.VELOCITY, v_tip, image_name(tip))),
+            None))
+
+    def _what(self, j: str, centre: str) -> str:
+        """The velocity a trial line carries: absolute V_J from a fixed centre, else relative V_JP."""
+        return f"V_{j}" if centre in self.m.ground else f"V_{j}{centre}"
+
+    def dyad(self, step: TwoCircles | CircleAndGuide) -> None:
+        """One vector equation, V_C = V_B + V_CB: two trial lines and their crossing c."""
+        m, pos, fmt = self.m, self.pose.positions, self.fmt
+        j = step.joint
+        guided = isinstance(step, CircleAndGuide)
+        arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
+        trials: list[Line] = []
+        for link, centre in arms:
+            pj = pos[j] - pos[centre]
+            trials.append(Line(self.vel[centre], pj.perp()))
+            at = "O_v" if centre in m.ground else image_name(centre)
+            what = self._what(j, centre)
+            self.steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
+                               (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, self.vel[centre],
+                                          pj.perp(), f"\u22a5 {centre}{j}"),), None))
+        if guided:
+            g = step.slide.line.direction
+            trials.append(Line(ORIGIN, g))
+            self.steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
+                               (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
+                                          "\u2225 guide"),), None))
+        hit = intersect_lines(trials[0], trials[1], self.tol)
+        if hit.contact is not Contact.CROSSING:
+            raise _singular(m, step, self.pose, hit.condition)
+        vj = hit.points[0]
+        self.vel[j] = vj
+        self.cond[j] = hit.condition
+        if hit.condition < WARN_SINE:
+            self.warnings.append(
+                f"Near a singular position at {j}: the trial lines cross at "
+                f"{math.degrees(math.asin(min(hit.condition, 1.0))):.3g} deg; values are sensitive to the "
+                f"drawing (rounding error about {4.0 * 2.2e-16 / hit.condition ** 2:.1e} relative).")
+        dead = _dead_centre(pos, self.crank, arms, j)
+        if dead:
+            self.warnings.append(dead)
+        # measure: the sides of the polygon, and the angular velocities they give
+        measured = []
+        for link, centre in arms:
+            v_rel = vj - self.vel[centre]
+            self.rel[(j, centre)] = v_rel
+            r = pos[j] - pos[centre]
+            self.ang[link.number] = r.cross(v_rel) / r.dot(r)
+            what = self._what(j, centre)
+            measured.append(Arrow(f"result {what}", Role.RESULT, Diagram.VELOCITY, self.vel[centre], vj, what))
+        if guided or all(c not in m.ground for _, c in arms):
+            measured.append(Arrow(f"result V_{j}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vj, f"V_{j}"))
+        eq = _equation(arms, j, m, guided)
+        self.equations.append((_equation_caption(eq, arms, j, m, step), eq))
+        omega_words = "; ".join(
+            f"\u03c9_{link.number} = {self._what(j, centre)}/{link.label} = "
+            f"{fmt('angular velocity', abs(self.ang[link.number]))} {_sense(self.ang[link.number])}"
+            for link, centre in arms)
+        values = ", ".join(f"{a.label} = {fmt('velocity', (a.tip - a.tail).norm())}" for a in measured)
+        self.steps.append((f"The trial lines meet at {image_name(j)}. Measure {values}; {omega_words}.",
+                           (Point(f"image {j}", Role.LABEL, Diagram.VELOCITY, vj, image_name(j)), *measured),
+                           None))
+
+    def analysis(self, scale: float | None, max_extent_mm: float) -> VelocityAnalysis:
+        """The record in the notes' order: equations, pole, scale, then the drawing steps."""
+        pts = list(self.vel.values())
+        extent = max(max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
+        known = self.v_known.norm()
+        s = scale if scale is not None else vector_scale(known, extent, max_extent_mm=max_extent_mm)
+        rec = Construction("Velocity polygon")
+        for caption, eq in self.equations:
+            rec = rec.then(caption, equation=eq)
+        rec = rec.then("Choose the pole O_v.", Point("pole O_v", Role.LABEL, Diagram.VELOCITY, ORIGIN, "O_v"))
+        rec = rec.then(f"Choose the velocity scale: 1 mm = {self.fmt('velocity', s)}; V_{self.crank.tip} is "
+                       f"{known / s:.0f} mm long.",
+                       ScaleBar("velocity scale", Role.SCALE_BAR, Diagram.VELOCITY, "velocity", s))
+        for caption, entities, eq in self.steps:
+            rec = rec.then(caption, *entities, equation=eq)
+        return VelocityAnalysis(rec, self.pose, self.vel, self.rel, self.ang, self.cond, s, tuple(self.warnings))
+
+
+def _image_steps(step: FixedToLink, pos, vel, rel, fmt: Formatter):
     """Velocity image of point D on a link BC: the triangle bcd is similar to BCD (notes, Example 4).
 
     d is placed by the similar triangle itself (the notes' option 1): d - b = (c - b) z with z the complex
