@@ -266,3 +266,22 @@ def test_a3_override(tmp_path, capsys):
     code, out, err = run(["render", str(builtin_example()), "-o", str(tmp_path), "--format", "svg",
                           "--paper", "A3"], capsys)
     assert code == 0 and 'width="420mm"' in (tmp_path / "notes-velocity-example-1.svg").read_text()
+
+
+def test_check_exits_1_when_graphical_and_analytic_disagree(monkeypatch, capsys):
+    """Perturb the analytic answer by 1e-6 relative: beyond the 1e-9 agreement, so `check` fails."""
+    import constructions.check as check
+    import drafting.study as study_module
+    from constructions.geometry import Vec
+
+    real = check.analytic_solution
+
+    def perturbed(m, angle, omega):
+        a = real(m, angle, omega)
+        vel = dict(a.velocities)
+        vel["C"] = vel["C"] + Vec(1e-6 * vel["C"].norm(), 0.0)
+        return check.AnalyticSolution(a.model, a.positions, vel, a.angular)
+
+    monkeypatch.setattr(study_module, "analytic_solution", perturbed)
+    code, out, err = run(["check", str(builtin_example())], capsys)
+    assert code == 1 and "DISAGREE" in out
