@@ -31,27 +31,33 @@ class AnalyticSolution:
 
 @dataclass(frozen=True)
 class Comparison:
-    """One measured quantity.  ``kind`` is "velocity" (Vec values) or "angular velocity" (floats)."""
+    """One measured quantity.  ``kind`` is "velocity" (Vec values) or "angular velocity" (floats).
+    ``analytic`` is None when there is no closed form for the mechanism: then nothing is compared and
+    ``difference``, ``relative`` and ``agrees`` are None too."""
 
     name: str
     kind: str
     graphical: Vec | float
-    analytic: Vec | float
+    analytic: Vec | float | None
     reference: float
 
     @property
-    def difference(self) -> float:
+    def difference(self) -> float | None:
+        if self.analytic is None:
+            return None
         if isinstance(self.graphical, Vec):
             return (self.graphical - self.analytic).norm()
         return abs(self.graphical - self.analytic)
 
     @property
-    def relative(self) -> float:
-        return self.difference / self.reference
+    def relative(self) -> float | None:
+        d = self.difference
+        return None if d is None else d / self.reference
 
     @property
-    def agrees(self) -> bool:
-        return self.relative <= AGREEMENT
+    def agrees(self) -> bool | None:
+        r = self.relative
+        return None if r is None else r <= AGREEMENT
 
 
 def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolution | None:
@@ -114,20 +120,21 @@ def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolut
     return AnalyticSolution(model, pos, vel, ang)
 
 
-def compare(m: Mechanism, g: VelocityAnalysis, a: AnalyticSolution) -> list[Comparison]:
+def compare(m: Mechanism, g: VelocityAnalysis, a: AnalyticSolution | None) -> list[Comparison]:
     """Absolute velocities of the moving joints and points, relative velocities, link angular
-    velocities -- each graphical value beside the analytic one."""
+    velocities -- each graphical value beside the analytic one (None where there is no closed form)."""
     v_ref = max(v.norm() for v in g.velocities.values())
     w_ref = max(abs(w) for w in g.angular.values())
     out: list[Comparison] = []
     for name, v in g.velocities.items():
-        if name not in m.ground and name in a.velocities:
-            out.append(Comparison(f"V_{name}", "velocity", v, a.velocities[name], v_ref))
+        if name not in m.ground:
+            out.append(Comparison(f"V_{name}", "velocity", v, a.velocities[name] if a else None, v_ref))
     for (j, p), v in g.relative.items():
-        if p not in m.ground and j in a.velocities and p in a.velocities:
-            out.append(Comparison(f"V_{j}{p}", "velocity", v, a.velocities[j] - a.velocities[p], v_ref))
+        if p not in m.ground:
+            out.append(Comparison(f"V_{j}{p}", "velocity", v,
+                                  a.velocities[j] - a.velocities[p] if a else None, v_ref))
     driven_or_sliding = {m.crank} | {s.number for s in m.slides}
     for n, w in sorted(g.angular.items()):
-        if n in a.angular and n not in driven_or_sliding:
-            out.append(Comparison(f"omega_{n}", "angular velocity", w, a.angular[n], w_ref))
+        if n not in driven_or_sliding:
+            out.append(Comparison(f"omega_{n}", "angular velocity", w, a.angular[n] if a else None, w_ref))
     return out

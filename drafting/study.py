@@ -57,7 +57,7 @@ class Study:
 
     @cached_property
     def comparisons(self) -> list[Comparison]:
-        if self.velocity is None or self.analytic is None:
+        if self.velocity is None:
             return []
         rows = compare(self.scene.mechanism, self.velocity, self.analytic)
         if self.scene.find is not None:
@@ -80,11 +80,13 @@ class Study:
         return tuple(w)
 
     def disagreements(self) -> list[Comparison]:
-        return [c for c in self.comparisons if not c.agrees]
+        return [c for c in self.comparisons if c.agrees is False]
 
     # -- presentation of values in the scene's units -------------------------------------------------
-    def value_text(self, c: Comparison, value: Vec | float) -> str:
+    def value_text(self, c: Comparison, value: Vec | float | None) -> str:
         u = self.scene.units
+        if value is None:
+            return "n/a"
         if isinstance(value, Vec):
             ang = _direction_deg(value)
             return f"{format_value(value.norm(), 'velocity', u.velocity)} at {ang:.1f}\u00b0"
@@ -92,6 +94,8 @@ class Study:
         return f"{format_value(abs(value), 'angular velocity', u.angular_velocity)} {sense}".strip()
 
     def difference_text(self, c: Comparison) -> str:
+        if c.difference is None:
+            return "n/a"
         unit = self.scene.units.velocity if c.kind == "velocity" else self.scene.units.angular_velocity
         return f"{from_si(c.difference, c.kind, unit):.1e} {unit_symbol(unit)}"
 
