@@ -21,9 +21,10 @@ from constructions.record import (Arc, Arrow, Bar, Block, Construction, Diagram,
 from drafting import layout as L
 from drafting.layout import LayoutError
 from drafting.paper import Line, Polygon, Rectangle
-from drafting.sheet import ResultRow, SheetInfo, compose_sheet, display_unit
+from drafting.sheet import ResultRow, SheetInfo, compose_sheet
 from drafting.style import MIN_TEXT, dashed, long_dash_dot, style
 from drafting.svg import sheet_to_svg
+from drafting.viewport import display_unit
 
 SVG = "{http://www.w3.org/2000/svg}"
 S, V = Diagram.SPACE, Diagram.VELOCITY

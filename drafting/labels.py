@@ -1,0 +1,148 @@
+"""Label placement: every label of a drawn diagram put where it overlaps no other label or symbol.
+
+``place_labels`` searches candidate positions around each label's anchor and scores them by how much
+line they would hide and how well they sit in the gap between the lines at the anchor.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .diagram import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
+from .layout import LayoutError
+from .paper import Command, Rect, Rectangle, Text
+from .style import LABEL, measure, rich
+
+LABEL_PAD = 0.4         # white margin of a label's background
+
+
+def _clip_len(a: Pt, b: Pt, r: Rect) -> float:
+    """Length of segment ab inside rectangle r (Liang-Barsky)."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, a[0] - r.left), (dx, r.right - a[0]), (-dy, a[1] - r.top), (dy, r.bottom - a[1])):
+        if abs(p) < 1e-12:
+            if q < 0:
+                return 0.0
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+        if t0 > t1:
+            return 0.0
+    return (t1 - t0) * math.hypot(dx, dy)
+
+
+def _edge(u: Pt, hw: float, hh: float) -> float:
+    """Distance from a box centre to its edge along unit ``u``."""
+    cands = []
+    if abs(u[0]) > 1e-9:
+        cands.append(hw / abs(u[0]))
+    if abs(u[1]) > 1e-9:
+        cands.append(hh / abs(u[1]))
+    return min(cands)
+
+
+def _candidates(req: LabelReq, hw: float, hh: float, incident: list[float], relax: int):
+    """(centre, cost) candidates for a label box of half sizes hw, hh."""
+    dists = (0.7, 1.6, 3.0, 4.5) if relax == 0 else (6.0, 8.0, 11.0, 15.0)
+    p = req.anchor
+    if req.kind in ("point", "polygon"):
+        if req.kind == "polygon" and relax == 0:
+            yield p, 0.0
+        for di, dist in enumerate(dists):
+            for i in range(16):
+                a = 2 * math.pi * i / 16
+                u = (math.cos(a), -math.sin(a))                # a measured CCW as seen on paper
+                ap = math.atan2(u[1], u[0])
+                gap = min((angle_gap(ap, b) for b in incident), default=math.pi)
+                t = req.r0 + dist + _edge(u, hw, hh)
+                cost = 2.0 * (math.pi - gap) + 0.8 * dist + 0.05 * angle_gap(a, math.pi / 4)
+                yield shifted(p, u, t), cost
+    elif req.kind == "arrow":
+        tail, tip = req.other, req.anchor
+        v = (tip[0] - tail[0], tip[1] - tail[1])
+        u = unit_vector(v)
+        n = (-u[1], u[0])
+        for dist in dists[:3] if relax == 0 else dists:
+            for f in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8):
+                a = shifted(tail, v, f)
+                for side in (1.0, -1.0):
+                    nn = (n[0] * side, n[1] * side)
+                    yield shifted(a, nn, dist + 0.3 + _edge(nn, hw, hh)), 3.0 * abs(f - 0.5) + 0.8 * dist + (side < 0) * 0.1
+    elif req.kind == "trial":
+        end, start = req.anchor, req.other
+        v = unit_vector((start[0] - end[0], start[1] - end[1]))
+        n = (-v[1], v[0])
+        for dist in dists[:3] if relax == 0 else dists:
+            for s in (3.0, 6.0, 10.0, 15.0, 22.0):
+                a = shifted(end, v, s)
+                for side in (1.0, -1.0):
+                    nn = (n[0] * side, n[1] * side)
+                    yield shifted(a, nn, dist + _edge(nn, hw, hh)), 0.1 * s + 0.8 * dist
+                    # the other end of the line as well
+                    b = shifted(start, v, -s)
+                    yield shifted(b, nn, dist + _edge(nn, hw, hh)), 0.1 * s + 0.8 * dist + 1.0
+
+
+def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> list[Command]:
+    """Put every label where it overlaps no other label, arrowhead or symbol, inside ``plot``.
+
+    A small candidate search: positions around the anchor are scored by how much line they would
+    cover (a white background hides it) and how well they sit in the widest gap between the lines at
+    the anchor; overlaps with labels, arrowheads, pins and dots are forbidden.  Optional labels
+    (on arrows, trial lines and images) are left out when no free place exists.
+    """
+    placed: list[Rect] = []
+    out: list[Command] = []
+    order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
+                                                        ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
+    for i in order:
+        req = d.labels[i]
+        spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
+        ext = measure(spans)
+        hw, hh = ext.width / 2 + LABEL_PAD, ext.height / 2 + LABEL_PAD
+        incident = incident_directions(req.anchor, d.segments) if req.kind == "point" else []
+        best = None
+        for relax in (0, 1):
+            for centre, cost in _candidates(req, hw, hh, incident, relax):
+                box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
+                if not plot.contains(box):
+                    continue
+                if any(box.overlaps(o, 0.3) for o in placed) or any(box.overlaps(o, 0.2) for o in d.hard):
+                    continue
+                thin = thick = 0.0
+                for a, b, heavy in d.segments:
+                    ln = _clip_len(a, b, box)
+                    if heavy:
+                        thick += ln
+                    else:
+                        thin += ln
+                if thick > 0 and not req.mandatory:
+                    continue                      # an optional label never hides part of a thick line
+                total = cost + 3.0 * thin + 20.0 * thick
+                if best is None or total < best[0]:
+                    best = (total, centre, box)
+            if best is not None:
+                break
+        if best is None:
+            if not req.mandatory:
+                continue
+            # last resort: the nearest position inside the plot that overlaps no other label
+            for relax in (0, 1):
+                for centre, cost in _candidates(req, hw, hh, incident, relax):
+                    box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
+                    if plot.contains(box) and not any(box.overlaps(o, 0.3) for o in placed):
+                        if best is None or cost < best[0]:
+                            best = (cost, centre, box)
+            if best is None:
+                raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
+        _, centre, box = best
+        placed.append(box)
+        x = centre[0] - ext.width / 2
+        y = centre[1] - (ext.top + ext.bottom) / 2
+        out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
+        out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
+    return out
