@@ -15,13 +15,14 @@ import argparse
 import datetime as _dt
 import json
 import sys
+from dataclasses import replace
 from importlib import resources
 from pathlib import Path
 from typing import Sequence
 
 from constructions.errors import ConstructionError
 
-from .scene import PAPERS, Scene, SceneError, load_scene
+from .scene import PAPERS, SceneError, load_scene
 from .study import Study
 
 FORMATS = ("svg", "pdf", "png")
@@ -41,14 +42,7 @@ def _study(path: Path, paper: str | None = None) -> Study:
         scene = load_scene(path)
     except SceneError as e:
         raise UserError(str(e)) from None
-    if paper is not None:
-        scene = _with_paper(scene, paper)
-    return Study(scene)
-
-
-def _with_paper(scene: Scene, paper: str) -> Scene:
-    from dataclasses import replace
-    return replace(scene, paper=paper)
+    return Study(scene if paper is None else replace(scene, paper=paper))
 
 
 def _solve(study: Study) -> Study:
