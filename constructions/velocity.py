@@ -251,10 +251,9 @@ def _image_steps(step: FixedToLink, pos, vel, rel, fmt: Formatter):
                                f"\u22a5 {q}{d}")), None))
     vel[d] = vd
     rel[(d, p)] = vd - vp
-    out.append((f"{ip}{iq}{idd} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
+    out.append((f"The shaded triangle {ip}{iq}{idd} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
                 f"V_{d} = {fmt('velocity', vd.norm())}.",
-                (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd),
-                         f"image of link {link.number}"),
+                (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd)),
                  Point(f"image {d}", Role.LABEL, Diagram.VELOCITY, vd, idd),
                  Arrow(f"result V_{d}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vd, f"V_{d}")), None))
     return out
