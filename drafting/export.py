@@ -12,7 +12,9 @@ paper size and a length of 100 mm on the sheet is 100 mm on the printed PDF.
 from __future__ import annotations
 
 import os
+import re
 import tempfile
+import time
 from pathlib import Path
 from typing import Callable, Sequence
 
@@ -39,7 +41,18 @@ def _cairosvg():
 
 
 def _convert_pdf(svg: bytes, fh) -> None:
-    _cairosvg().svg2pdf(bytestring=svg, write_to=fh)
+    fh.write(_reproducible(_cairosvg().svg2pdf(bytestring=svg)))
+
+
+def _reproducible(pdf: bytes) -> bytes:
+    """With SOURCE_DATE_EPOCH set (the reproducible-builds convention), the PDF's creation date is that
+    moment, so the same sheet gives the same bytes; cairo itself stamps the wall clock.  The stamp keeps
+    its length, so the cross-reference offsets stay valid."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH")
+    if not epoch or not epoch.isdigit():
+        return pdf
+    stamp = time.strftime("D:%Y%m%d%H%M%SZ", time.gmtime(int(epoch))).encode()
+    return re.sub(rb"/CreationDate \(D:\d{14}Z\)", b"/CreationDate (" + stamp + b")", pdf, count=1)
 
 
 def _convert_png(svg: bytes, fh, dpi: float) -> None:

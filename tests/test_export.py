@@ -247,3 +247,17 @@ def test_pdf_is_set_in_the_bundled_font_only(tmp_path):
     (path,) = write_sheet(sheet_for(Study(load_scene(builtin_example()))), tmp_path, "font", ["pdf"])
     names = set(re.findall(rb"/FontName /[A-Z]{6}\+([A-Za-z-]+)", path.read_bytes()))
     assert names and names <= {b"DejaVuSans", b"DejaVuSans-Oblique"}
+
+
+def test_source_date_epoch_makes_the_pdf_reproducible(tmp_path, monkeypatch):
+    import time as _time
+    from drafting.cli import builtin_example, sheet_for
+    from drafting.scene import load_scene
+    from drafting.study import Study
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    sheet = sheet_for(Study(load_scene(builtin_example())))
+    (a,) = write_sheet(sheet, tmp_path / "a", "s", ["pdf"])
+    _time.sleep(1.1)
+    (b,) = write_sheet(sheet, tmp_path / "b", "s", ["pdf"])
+    assert a.read_bytes() == b.read_bytes()
+    assert b"/CreationDate (D:20231114221320Z)" in a.read_bytes()
