@@ -83,7 +83,12 @@ def parse_scene(text: str, path: Path | str = "<scene>") -> Scene:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
         raise SceneError(path, "", f"is not valid TOML ({e})") from None
-    return _Reader(path, data).scene()
+    return scene_from_data(data, path)
+
+
+def scene_from_data(data: dict[str, Any], path: Path | str = "<scene>") -> Scene:
+    """A scene from already-parsed TOML data (``path`` names it in errors)."""
+    return _Reader(Path(path), data).scene()
 
 
 class _Reader:
