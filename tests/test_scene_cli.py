@@ -285,3 +285,17 @@ def test_check_exits_1_when_graphical_and_analytic_disagree(monkeypatch, capsys)
     monkeypatch.setattr(study_module, "analytic_solution", perturbed)
     code, out, err = run(["check", str(builtin_example())], capsys)
     assert code == 1 and "DISAGREE" in out
+
+
+@pytest.mark.parametrize("factor,unit,expect", [(1e-3, "um", "Space 500:1"), (1.0, "mm", "Space 1:1"),
+                                                (1e3, "m", "Space 1:2000")])
+def test_sheet_of_a_scaled_mechanism_keeps_its_drawing(factor, unit, expect, tmp_path, capsys):
+    """The same slider-crank in micrometres, millimetres and metres: same decisions, an ISO 5455 space
+    scale that follows the size (its series extended by powers of ten), and the same velocity polygon
+    since V_B is the same."""
+    text = EXAMPLE.replace('length = "mm"', f'length = "{unit}"')
+    p = write(tmp_path, text)
+    code, out, err = run(["render", str(p), "-o", str(tmp_path), "--format", "svg"], capsys)
+    assert code == 0, err
+    svg = (tmp_path / "scene.svg").read_text()
+    assert expect in svg and "velocity 1 mm = 10 mm/s" in svg
