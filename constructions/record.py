@@ -226,7 +226,8 @@ class Construction:
 
     @property
     def equations(self) -> tuple[VectorEquation, ...]:
-        return tuple(s.equation for s in self.steps if s.equation is not None)
+        """The distinct equations the steps work on, in the order they first appear."""
+        return tuple(dict.fromkeys(s.equation for s in self.steps if s.equation is not None))
 
     def diagrams(self) -> tuple[Diagram, ...]:
         seen: dict[Diagram, None] = {}

@@ -148,6 +148,8 @@ class _Polygon:
         j = step.joint
         guided = isinstance(step, CircleAndGuide)
         arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
+        eq = _equation(arms, j, m, guided)
+        self.equations.append((_equation_caption(eq, arms, j, m, step), eq))
         trials: list[Line] = []
         for link, centre in arms:
             pj = pos[j] - pos[centre]
@@ -156,13 +158,13 @@ class _Polygon:
             what = self._what(j, centre)
             self.steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
                                (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, self.vel[centre],
-                                          pj.perp(), f"\u22a5 {centre}{j}"),), None))
+                                          pj.perp(), f"\u22a5 {centre}{j}"),), eq))
         if guided:
             g = step.slide.line.direction
             trials.append(Line(ORIGIN, g))
             self.steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
                                (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
-                                          "\u2225 guide"),), None))
+                                          "\u2225 guide"),), eq))
         hit = intersect_lines(trials[0], trials[1], self.tol)
         if hit.contact is not Contact.CROSSING:
             raise _singular(m, step, self.pose, hit.condition)
@@ -188,8 +190,6 @@ class _Polygon:
             measured.append(Arrow(f"result {what}", Role.RESULT, Diagram.VELOCITY, self.vel[centre], vj, what))
         if guided or all(c not in m.ground for _, c in arms):
             measured.append(Arrow(f"result V_{j}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vj, f"V_{j}"))
-        eq = _equation(arms, j, m, guided)
-        self.equations.append((_equation_caption(eq, arms, j, m, step), eq))
         omega_words = "; ".join(
             f"\u03c9_{link.number} = {self._what(j, centre)}/{link.label} = "
             f"{fmt('angular velocity', abs(self.ang[link.number]))} {_sense(self.ang[link.number])}"
@@ -197,7 +197,7 @@ class _Polygon:
         values = ", ".join(f"{a.label} = {fmt('velocity', (a.tip - a.tail).norm())}" for a in measured)
         self.steps.append((f"The trial lines meet at {image_name(j)}. Measure {values}; {omega_words}.",
                            (Point(f"image {j}", Role.LABEL, Diagram.VELOCITY, vj, image_name(j)), *measured),
-                           None))
+                           eq))
 
     def analysis(self, scale: float | None, max_extent_mm: float) -> VelocityAnalysis:
         """The record in the notes' order: equations, pole, scale, then the drawing steps."""

@@ -32,7 +32,9 @@ class SceneError(Exception):
 
     def __init__(self, path: Path | str, key: str, problem: str) -> None:
         self.path, self.key, self.problem = str(path), key, problem
-        super().__init__(f"{path}: {key}: {problem}" if key else f"{path}: {problem}")
+        text = f"{path}: {key}: {problem}" if key else f"{path}: {problem}"
+        # one line, whatever the file contains: control characters from keys or values are escaped
+        super().__init__("".join(c if c.isprintable() else c.encode("unicode_escape").decode() for c in text))
 
 
 @dataclass(frozen=True)

@@ -98,10 +98,7 @@ class Sheet:
 
 def _sections(construction: Construction, results: Sequence[ResultRow], notes: Sequence[str]) -> list[L.Section]:
     secs: list[L.Section] = []
-    eqs = []
-    for eq in construction.equations:
-        if eq not in eqs:
-            eqs.append(eq)
+    eqs = construction.equations
     if eqs:
         items: list[L.Item] = [L.EquationItem(eq, name=f"equation {i + 1}") for i, eq in enumerate(eqs)]
         items.append(L.Paragraph(f"Marks over each vector: magnitude, then direction; "
