@@ -1,8 +1,9 @@
 """Graphical against analytic: every measured value beside its vector-loop value and their difference.
 
-:func:`analytic_solution` recognises the mechanisms the analytic module solves in closed form (the
-four-bar and the slider-crank, with points fixed to any of their links) and evaluates it; it reads only
-the mechanism's dimensions, never the construction.  :func:`compare` lines the two up.
+:func:`analytic_solution` evaluates the vector-loop solution: the fast closed forms of
+:mod:`constructions.analytic` for a plain four-bar or slider-crank (with points fixed to their links),
+and :mod:`constructions.vector_loops` for any other crank-plus-dyads chain (six-bars, toggle linkages).
+It reads only the mechanism's dimensions, never the construction.  :func:`compare` lines the two up.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from . import analytic
 from .geometry import Vec
 from .linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, TwoCircles, assembly_plan
 from .velocity import VelocityAnalysis
+from .vector_loops import chain_solution
 
 AGREEMENT = 1e-9
 """Graphical and analytic agree when they differ by less than this, relative to the reference value
@@ -23,7 +25,7 @@ AGREEMENT = 1e-9
 
 @dataclass(frozen=True)
 class AnalyticSolution:
-    model: str                                  # "four-bar" or "slider-crank"
+    model: str                                  # "four-bar", "slider-crank" or "dyad chain"
     positions: Mapping[str, Vec]
     velocities: Mapping[str, Vec]
     angular: Mapping[int, float]
@@ -61,27 +63,50 @@ class Comparison:
 
 
 def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolution | None:
-    """The vector-loop solution of ``m`` at ``angle``, or None for a topology it has no closed form for."""
+    """The vector-loop solution of ``m`` at ``angle``, or None where the mechanism does not assemble.
+
+    A plain four-bar or slider-crank (one dyad hung from the crank tip and the frame, points fixed to
+    any of its links) is evaluated by the closed forms of :mod:`constructions.analytic`; any other
+    crank followed by dyads by the dyad-chain vector loops of :mod:`constructions.vector_loops`."""
     plan = assembly_plan(m)
     crank = plan[0]
     assert isinstance(crank, CrankTip)
     dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide))]
     fixed = [s for s in plan if isinstance(s, FixedToLink)]
-    if len(dyads) != 1:
-        return None
+    b = crank.tip
+    # Is it a plain four-bar or slider-crank?  (Topology only; the closed forms below then apply.)
+    plain = False
+    if len(dyads) == 1:
+        d = dyads[0]
+        if isinstance(d, TwoCircles):
+            arms = {d.first: d.link_a, d.second: d.link_b}
+            ground = [c for c in arms if c in m.ground]
+            plain = b in arms and len(ground) == 1
+        else:
+            plain = d.centre == b
+        if plain:
+            solved = {crank.link.number} | {k.number for k in (arms.values() if isinstance(d, TwoCircles)
+                                                               else (d.link,))}
+            plain = all(f.point.link in solved for f in fixed)
+    if not plain:
+        st = chain_solution(m, angle, omega)
+        if not bool(st.assembles):
+            return None
+        at = st.at()
+        return AnalyticSolution("dyad chain",
+                                {n: Vec(*p) for n, p in at.positions.items()},
+                                {n: Vec(*v) for n, v in at.velocities.items()},
+                                dict(at.angular))
     d = dyads[0]
     O1 = m.ground[crank.pivot]
-    b, j = crank.tip, d.joint
+    j = d.joint
     pos: dict[str, Vec] = dict(m.ground)
     vel: dict[str, Vec] = {g: Vec(0.0, 0.0) for g in m.ground}
     ang: dict[int, float] = {crank.link.number: omega}
     theta: dict[int, tuple[str, float]] = {crank.link.number: (crank.pivot, angle)}
     if isinstance(d, TwoCircles):
         arms = {d.first: d.link_a, d.second: d.link_b}
-        ground = [c for c in arms if c in m.ground]
-        if b not in arms or len(ground) != 1:
-            return None
-        o2 = ground[0]
+        o2 = next(c for c in arms if c in m.ground)
         coupler, rocker = arms[b], arms[o2]
         sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
         s = analytic.four_bar(angle, omega, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
@@ -91,8 +116,6 @@ def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolut
         ang[rocker.number] = float(s.omega3)
         theta[rocker.number] = (o2, float(s.theta3))
     else:
-        if d.centre != b:
-            return None
         coupler = d.link
         s = analytic.slider_crank(angle, omega, crank_pivot=O1.as_tuple(), crank=crank.link.length,
                                   coupler=coupler.length, guide_point=d.slide.through.as_tuple(),
@@ -107,8 +130,6 @@ def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolut
     theta[coupler.number] = (b, float(s.theta2))
     for f in fixed:
         a = f.point
-        if a.link not in theta:
-            return None
         start, th = theta[a.link]
         # angle of the direction from a.base to the link's other joint
         direction = th if a.base == start else th + math.pi

@@ -76,7 +76,7 @@ class Study:
     def warnings(self) -> tuple[str, ...]:
         w = list(self.velocity.warnings) if self.velocity is not None else []
         if self.velocity is not None and self.analytic is None:
-            w.append("No analytic check: the vector-loop solver covers four-bars and slider-cranks only.")
+            w.append("No analytic check: the vector-loop solution does not assemble at this position.")
         return tuple(w)
 
     def disagreements(self) -> list[Comparison]:

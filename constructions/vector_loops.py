@@ -1,0 +1,421 @@
+"""Vector-loop solution of any linkage that is a crank followed by dyads, vectorised over crank angles.
+
+This is the analytic check for compound mechanisms (a four-bar driving a slider through a second
+coupler, Watt and Stephenson six-bars, ...) that :mod:`constructions.analytic` has no single closed
+form for.  It is an independent code path from the graphical construction: it reads only the data of
+the :class:`~constructions.linkage.Mechanism` (pivots, link lengths, guides, branches) and never calls
+the geometry kernel, the construction's assembly plan, or the velocity polygon.  It orders the joints
+itself, and solves each dyad in a different form from the kernel's circle intersections:
+
+* RRR dyad (joint J on a link of length a to a known joint P and a link of length b to a known joint
+  Q): the angle form of the law of cosines, theta_PJ = angle(Q - P) +/- A with the triangle angle A
+  at P taken as atan2 of its sine and cosine (Heron and the law of cosines, below).
+* RRP dyad (joint J on a link of length a to a known joint P, J's block on a fixed straight guide):
+  the quadratic in the slider parameter s along the guide.
+* Velocities by differentiating the loop-closure (constant-length) equations and solving the
+  resulting linear equations (Cramer's rule); link angular velocities from the relative velocities.
+
+Conventions
+-----------
+* SI, angles CCW from +x, omega CCW positive, as everywhere in the engine.
+* ``theta`` and ``omega`` are broadcast against each other; every array in the result has that
+  shape (0-d for scalars) and is read-only.
+* Branches follow :class:`~constructions.linkage.Branch`: for two links, sign +1 puts J to the LEFT
+  of the directed line reference[0] -> reference[1] (cross(ref1 - ref0, J - ref0) > 0); for a guide,
+  +1 puts J AHEAD of the foot of the perpendicular from reference[0], along the guide direction
+  (cos angle, sin angle).
+* An angle at which some dyad cannot close gives ``assembles == False`` and NaN for every moving
+  joint, point and velocity, and for every angular velocity except the crank's (the input) and the
+  slider blocks' (0).  The fixed pivots keep their coordinates and zero velocity.
+* Decisions are three-way with a tolerance ``ASSEMBLY_RTOL * L`` relative to the mechanism scale
+  ``L`` (sum of the link lengths plus the largest distance of a pivot or guide point from the
+  origin): a gap factor within the tolerance of zero is a tangency, snapped to exactly zero -- the
+  mechanism assembles, the joint lies on the line of centres (or square to the guide), its
+  condition is 0 and its velocities are NaN.
+* ``conditions[J]`` is the sine of the angle between the two velocity trial lines of J (the sine of
+  the angle between the two links at J, or |cos| of the angle between the link and the guide).
+  Where it is below :data:`SINGULAR` the velocity system is singular (toggle, lock) and V_J (and
+  everything that depends on it) is NaN -- never inf.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Mapping
+
+import numpy as np
+
+from .errors import DegenerateInput
+from .linkage import Attached, Branch, Link, Mechanism, Slide
+
+__all__ = ["ASSEMBLY_RTOL", "SINGULAR", "ChainPoint", "ChainState", "chain_solution", "solving_order"]
+
+#: Gap factors of a dyad within +-ASSEMBLY_RTOL * L of zero are a tangency (snapped to zero).
+ASSEMBLY_RTOL = 64 * np.finfo(np.float64).eps
+
+#: Relative determinant (sine of the angle between the velocity trial lines) below which the velocity
+#: system of a joint is singular and its velocity NaN.
+SINGULAR = 1e-12
+
+
+# -- the order of solution -------------------------------------------------------------------------
+
+@dataclass(frozen=True, slots=True)
+class _Crank:
+    joint: str          # the crank tip
+    pivot: str
+    link: Link
+
+
+@dataclass(frozen=True, slots=True)
+class _RRR:
+    """J = the joint left (sign +1) or right of P -> Q, |PJ| = link_p.length, |QJ| = link_q.length."""
+
+    joint: str
+    p: str
+    q: str
+    link_p: Link
+    link_q: Link
+    sign: int
+
+
+@dataclass(frozen=True, slots=True)
+class _RRP:
+    """J on the guide of ``slide``, |PJ| = link.length, ahead (sign +1) of or behind the foot of P."""
+
+    joint: str
+    p: str
+    link: Link
+    slide: Slide
+    sign: int
+
+
+@dataclass(frozen=True, slots=True)
+class _Point:
+    point: Attached
+    link: Link
+
+
+def _links_between(m: Mechanism, a: str, b: str) -> list[Link]:
+    return [k for k in m.links if set(k.joints) == {a, b}]
+
+
+def _order(m: Mechanism) -> tuple[_Crank, tuple[_RRR | _RRP, ...], tuple[_Point, ...]]:
+    """Which joint is solvable from which known ones.
+
+    Known at the start: the fixed pivots and the crank tip.  A joint becomes solvable when it is carried
+    by a slider block and the joint its branch refers to is known and linked to it (an RRP dyad), or
+    when both joints its branch refers to are known and each is linked to it (an RRR dyad).  The
+    branch names the two (or one) known joints, so the dyad found does not depend on the order in
+    which joints are visited.
+    """
+    crank = next((k for k in m.links if k.number == m.crank), None)
+    if crank is None:
+        raise DegenerateInput(f"the crank, link {m.crank}, is not a binary link of the mechanism")
+    pivots = [j for j in crank.joints if j in m.ground]
+    if len(pivots) != 1:
+        raise DegenerateInput(f"the crank, link {crank.number}, must join one fixed pivot to one moving joint")
+    tip = crank.other(pivots[0])
+    slides: dict[str, Slide] = {}
+    for s in m.slides:
+        if s.joint in m.ground:
+            raise DegenerateInput(f"slider joint {s.joint} is also a fixed pivot")
+        if s.joint in slides:
+            raise DegenerateInput(f"joint {s.joint} is carried by two slider blocks")
+        if s.joint == tip:
+            raise DegenerateInput(f"the crank tip {tip} cannot also run on a guide")
+        slides[s.joint] = s
+    joints = {j for k in m.links for j in k.joints} | set(slides)
+    known = set(m.ground) | {tip}
+    dyads: list[_RRR | _RRP] = []
+    progress = True
+    while progress:
+        progress = False
+        for j in sorted(joints - known):
+            b: Branch | None = m.branches.get(j)
+            if b is None or not all(r in known for r in b.reference):
+                continue
+            if j in slides:
+                if len(b.reference) != 1:
+                    raise DegenerateInput(f"the branch of slider joint {j} must be \"ahead of\" or "
+                                          f"\"behind\" the joint it hangs from")
+                (p,) = b.reference
+                ks = _links_between(m, p, j)
+                if not ks:
+                    raise DegenerateInput(f"the branch of {j} refers to {p}, which has no link to {j}")
+                dyads.append(_RRP(j, p, ks[0], slides[j], 1 if b.sign > 0 else -1))
+            else:
+                if len(b.reference) != 2:
+                    raise DegenerateInput(f"the branch of {j} must be \"left of\" or \"right of\" a line "
+                                          f"between the two joints it is found from")
+                p, q = b.reference
+                kp, kq = _links_between(m, p, j), _links_between(m, q, j)
+                if not kp or not kq:
+                    raise DegenerateInput(f"the branch of {j} refers to {p} and {q}, but {j} is not linked "
+                                          f"to both")
+                dyads.append(_RRR(j, p, q, kp[0], kq[0], 1 if b.sign > 0 else -1))
+            known.add(j)
+            progress = True
+    missing = sorted(joints - known)
+    if missing:
+        j = missing[0]
+        why = ("it has no assembly branch" if j not in m.branches else
+               "it needs two links to known joints, or one link to a known joint and a slider guide")
+        raise DegenerateInput(f"joint {j} cannot be solved: {why}")
+    points: list[_Point] = []
+    for a in m.attached:
+        link = next((k for k in m.links if k.number == a.link), None)
+        if link is None:
+            raise DegenerateInput(f"point {a.name} is on link {a.link}, which is not a binary link")
+        if a.base not in link.joints:
+            raise DegenerateInput(f"point {a.name} is measured from {a.base}, which is not a joint of "
+                                  f"link {link.number}")
+        points.append(_Point(a, link))
+    return _Crank(tip, pivots[0], crank), tuple(dyads), tuple(points)
+
+
+def solving_order(m: Mechanism) -> tuple[str, ...]:
+    """The joints in the order the chain is solved (crank tip first), then the points fixed to links."""
+    crank, dyads, points = _order(m)
+    return (crank.joint,) + tuple(d.joint for d in dyads) + tuple(p.point.name for p in points)
+
+
+# -- results ----------------------------------------------------------------------------------------
+
+def _readonly(a: np.ndarray) -> np.ndarray:
+    a.flags.writeable = False
+    return a
+
+
+@dataclass(frozen=True)
+class ChainPoint:
+    """One crank angle of a :class:`ChainState`, as plain floats (no arrays, no Vec)."""
+
+    positions: Mapping[str, tuple[float, float]]
+    velocities: Mapping[str, tuple[float, float]]
+    angular: Mapping[int, float]
+    conditions: Mapping[str, float]
+    assembles: bool
+
+
+@dataclass(frozen=True, eq=False)
+class ChainState:
+    """Positions, velocities and link angular velocities of a dyad chain over a set of crank angles.
+
+    Attributes
+    ----------
+    positions, velocities : mapping of name -> (x array, y array)
+        Every fixed pivot, joint and point fixed to a link (m, m/s).
+    angular : mapping of link number -> array
+        Every link's angular velocity (rad/s, CCW positive); the crank's is the input omega, slider
+        blocks translate (0).
+    conditions : mapping of joint -> array
+        Sine of the angle between the velocity trial lines of each joint found by a dyad (0 at a
+        toggle or lock, where its velocity is NaN).
+    assembles : bool array
+        True where every dyad closes.
+    order : tuple of str
+        The joints in the order they were solved, then the points fixed to links.
+    """
+
+    positions: Mapping[str, tuple[np.ndarray, np.ndarray]]
+    velocities: Mapping[str, tuple[np.ndarray, np.ndarray]]
+    angular: Mapping[int, np.ndarray]
+    conditions: Mapping[str, np.ndarray]
+    assembles: np.ndarray
+    order: tuple[str, ...] = field(default=())
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return self.assembles.shape
+
+    def at(self, index=()) -> ChainPoint:
+        """Element ``index`` (an int or a tuple; ``()`` for a scalar crank angle) as plain floats."""
+        def xy(p):
+            return float(p[0][index]), float(p[1][index])
+        return ChainPoint(
+            positions=MappingProxyType({n: xy(p) for n, p in self.positions.items()}),
+            velocities=MappingProxyType({n: xy(v) for n, v in self.velocities.items()}),
+            angular=MappingProxyType({n: float(w[index]) for n, w in self.angular.items()}),
+            conditions=MappingProxyType({n: float(c[index]) for n, c in self.conditions.items()}),
+            assembles=bool(self.assembles[index]))
+
+
+# -- the solution -----------------------------------------------------------------------------------
+
+def _scale(m: Mechanism) -> float:
+    pts = list(m.ground.values()) + [s.through for s in m.slides]
+    far = max((math.hypot(p.x, p.y) for p in pts), default=0.0)
+    return sum(k.length for k in m.links) + far
+
+
+def _snap(f: np.ndarray, tol: float, ok: np.ndarray, tangent: np.ndarray) -> np.ndarray:
+    """Three-way decision on a gap factor f (which must be >= 0 for the dyad to close): f < -tol apart
+    (clears ``ok``), |f| <= tol tangent (f := 0, sets ``tangent``), f > tol crossing."""
+    ok &= ~(f < -tol)
+    touch = np.abs(f) <= tol
+    tangent |= touch
+    return np.where(touch, 0.0, f)
+
+
+def chain_solution(m: Mechanism, theta, omega) -> ChainState:
+    """Solve the mechanism ``m`` (a crank followed by dyads) at crank angle(s) ``theta`` (rad, direction
+    pivot -> tip, CCW from +x) turning at ``omega`` (rad/s, CCW positive).
+
+    Raises DegenerateInput when the mechanism is not a crank followed by RRR and RRP dyads (it says
+    which joint cannot be solved).
+    """
+    crank, dyads, points = _order(m)
+    th = np.asarray(theta, dtype=np.float64)
+    w1 = np.asarray(omega, dtype=np.float64)
+    shape = np.broadcast_shapes(th.shape, w1.shape)
+    th = np.broadcast_to(th, shape)
+    w1 = np.broadcast_to(w1, shape)
+    L = _scale(m)
+    tol = ASSEMBLY_RTOL * L
+
+    zeros = np.zeros(shape)
+    pos: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    vel: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    cond: dict[str, np.ndarray] = {}
+    ok = np.ones(shape, dtype=bool)
+    for g, p in m.ground.items():
+        pos[g] = (np.full(shape, float(p.x)), np.full(shape, float(p.y)))
+        vel[g] = (zeros, zeros)
+
+    with np.errstate(all="ignore"):  # NaN where a dyad does not close, handled explicitly
+        # Crank: B = O + r (cos, sin)(theta);  V_B = d/dt of it = omega r (-sin, cos) = omega k x (B - O).
+        c, s = np.cos(th), np.sin(th)
+        r = crank.link.length
+        ox, oy = pos[crank.pivot]
+        pos[crank.joint] = (ox + r * c, oy + r * s)
+        vel[crank.joint] = (-w1 * r * s, w1 * r * c)
+
+        for d in dyads:
+            tangent = np.zeros(shape, dtype=bool)
+            if isinstance(d, _RRR):
+                (Px, Py), (Qx, Qy) = pos[d.p], pos[d.q]
+                a, b = d.link_p.length, d.link_q.length
+                # Position, angle form.  In the triangle P Q J with sides a = |PJ|, b = |QJ|,
+                # e = |PQ|, the law of cosines gives 2 a e cos A = a^2 + e^2 - b^2 for the angle A at P,
+                # and Heron gives the area: 16 area^2 = (a+b+e)(a+b-e)(e+a-b)(e-a+b) =: H, while
+                # area = a e sin A / 2, so 2 a e sin A = sqrt(H).  Hence
+                #   A = atan2(sqrt(H), a^2 + (e - b)(e + b))  in [0, pi],
+                # both arguments carrying the same factor 2 a e.  The triangle closes iff the three
+                # small factors of H are >= 0 (three-way with tol).  J left of P -> Q means
+                # cross(Q - P, J - P) = a e sin(+A) > 0, so
+                #   theta_PJ = atan2(Q - P) + sign A,   J = P + a (cos, sin)(theta_PJ).
+                ex, ey = Qx - Px, Qy - Py
+                e = np.hypot(ex, ey)
+                ok &= e > tol                      # coincident centres: no definite triangle
+                f1 = _snap(a + b - e, tol, ok, tangent)
+                f2 = _snap(e + a - b, tol, ok, tangent)
+                f3 = _snap(e - a + b, tol, ok, tangent)
+                H = (a + b + e) * f1 * f2 * f3
+                A = np.arctan2(np.sqrt(H), a * a + (e - b) * (e + b))
+                t = np.arctan2(ey, ex) + d.sign * A
+                Jx, Jy = Px + a * np.cos(t), Py + a * np.sin(t)
+                # Velocity: differentiate |J - P|^2 = a^2 and |J - Q|^2 = b^2 in time:
+                #   (J - P).(V_J - V_P) = 0,  (J - Q).(V_J - V_Q) = 0,
+                # i.e. the 2x2 system  [r1; r2] V_J = [r1.V_P; r2.V_Q] with r1 = J - P, r2 = J - Q.
+                # Cramer: det = cross(r1, r2), V_Jx = (k1 r2y - r1y k2)/det, V_Jy = (r1x k2 - r2x k1)/det.
+                # |det| / (|r1| |r2|) is the sine of the angle between the links at J, i.e. between
+                # the two velocity trial lines (each square to its link).
+                (VPx, VPy), (VQx, VQy) = vel[d.p], vel[d.q]
+                r1x, r1y, r2x, r2y = Jx - Px, Jy - Py, Jx - Qx, Jy - Qy
+                k1 = r1x * VPx + r1y * VPy
+                k2 = r2x * VQx + r2y * VQy
+                det = r1x * r2y - r1y * r2x
+                sine = np.abs(det) / (np.hypot(r1x, r1y) * np.hypot(r2x, r2y))
+                sine = np.where(tangent, 0.0, sine)
+                inv = np.where(sine >= SINGULAR, 1.0 / det, np.nan)
+                VJx = (k1 * r2y - r1y * k2) * inv
+                VJy = (r1x * k2 - r2x * k1) * inv
+            else:
+                (Px, Py) = pos[d.p]
+                a = d.link.length
+                gam = d.slide.angle
+                gx, gy = math.cos(gam), math.sin(gam)
+                Gx, Gy = float(d.slide.through.x), float(d.slide.through.y)
+                # Position, quadratic in the slider parameter.  J = G + s g (g the unit guide
+                # direction, n = k x g).  |J - P|^2 = a^2 with w = P - G reads
+                #   s^2 - 2 (w.g) s + |w|^2 - a^2 = 0,  so  s = w.g +- sqrt((w.g)^2 - |w|^2 + a^2),
+                # and since |w|^2 = (w.g)^2 + (w.n)^2 the discriminant is a^2 - y^2 = (a - y)(a + y)
+                # with y = w.n (signed distance of P from the guide), free of cancellation.  w.g is
+                # the parameter of the foot of P, so AHEAD (+1) takes +sqrt.
+                wx, wy = Px - Gx, Py - Gy
+                foot = wx * gx + wy * gy
+                y = -wx * gy + wy * gx
+                h1 = _snap(a - y, tol, ok, tangent)
+                h2 = _snap(a + y, tol, ok, tangent)
+                sp = foot + d.sign * np.sqrt(h1 * h2)
+                Jx, Jy = Gx + sp * gx, Gy + sp * gy
+                # Velocity: V_J = sdot g.  Differentiating |J - P|^2 = a^2 gives
+                #   (J - P).(sdot g - V_P) = 0  =>  sdot = ((J - P).V_P) / ((J - P).g).
+                # |(J - P).g| / |J - P| is the sine of the angle between the trial lines (square to PJ,
+                # along g); 0 when the link stands square to the guide (lock).
+                VPx, VPy = vel[d.p]
+                rx, ry = Jx - Px, Jy - Py
+                rg = rx * gx + ry * gy
+                sine = np.abs(rg) / np.hypot(rx, ry)
+                sine = np.where(tangent, 0.0, sine)
+                sdot = np.where(sine >= SINGULAR, (rx * VPx + ry * VPy) / rg, np.nan)
+                VJx, VJy = sdot * gx, sdot * gy
+            pos[d.joint] = (Jx, Jy)
+            vel[d.joint] = (VJx, VJy)
+            cond[d.joint] = sine
+
+        # Angular velocity of a rigid link P J: V_J - V_P = omega k x (J - P); taking cross(J - P, .)
+        # of both sides, cross(r, omega k x r) = omega |r|^2, so omega = cross(r, V_J - V_P) / |r|^2.
+        ang: dict[int, np.ndarray] = {}
+        for k in m.links:
+            if k.number == crank.link.number:
+                continue
+            p, j = k.joints
+            (Px, Py), (Jx, Jy) = pos[p], pos[j]
+            (VPx, VPy), (VJx, VJy) = vel[p], vel[j]
+            rx, ry = Jx - Px, Jy - Py
+            ang[k.number] = (rx * (VJy - VPy) - ry * (VJx - VPx)) / (rx * rx + ry * ry)
+        ang[crank.link.number] = w1 + 0.0
+        for s_ in m.slides:
+            ang[s_.number] = zeros
+
+        # Points fixed to a link: D = base + distance (cos, sin)(psi + angle), psi the direction from
+        # base to the link's other joint; rigid body: V_D = V_base + omega k x (D - base),
+        # with k x (x, y) = (-y, x).
+        for pt in points:
+            a, link = pt.point, pt.link
+            (Bx, By), (Ox, Oy) = pos[a.base], pos[link.other(a.base)]
+            VBx, VBy = vel[a.base]
+            psi = np.arctan2(Oy - By, Ox - Bx) + a.angle
+            Dx, Dy = Bx + a.distance * np.cos(psi), By + a.distance * np.sin(psi)
+            wl = ang[link.number]
+            pos[a.name] = (Dx, Dy)
+            vel[a.name] = (VBx - wl * (Dy - By), VBy + wl * (Dx - Bx))
+
+    # where any dyad fails the mechanism has no configuration: NaN for everything that moves
+    if not ok.all():
+        bad = ~ok
+        moving = [n for n in pos if n not in m.ground]
+        for n in moving:
+            pos[n] = tuple(np.where(bad, np.nan, v) for v in pos[n])
+            vel[n] = tuple(np.where(bad, np.nan, v) for v in vel[n])
+        for n in cond:
+            cond[n] = np.where(bad, np.nan, cond[n])
+        fixed_speed = {crank.link.number} | {s_.number for s_ in m.slides}
+        for n in ang:
+            if n not in fixed_speed:
+                ang[n] = np.where(bad, np.nan, ang[n])
+
+    def freeze(a) -> np.ndarray:
+        return _readonly(np.array(np.broadcast_to(a, shape), dtype=np.float64))
+
+    return ChainState(
+        positions=MappingProxyType({n: (freeze(x), freeze(y)) for n, (x, y) in pos.items()}),
+        velocities=MappingProxyType({n: (freeze(x), freeze(y)) for n, (x, y) in vel.items()}),
+        angular=MappingProxyType({n: freeze(w) for n, w in sorted(ang.items())}),
+        conditions=MappingProxyType({n: freeze(c) for n, c in cond.items()}),
+        assembles=_readonly(np.array(ok)),
+        order=(crank.joint,) + tuple(d.joint for d in dyads) + tuple(p.point.name for p in points))
