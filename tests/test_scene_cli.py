@@ -183,6 +183,15 @@ def test_notes_example_2_within_drawing_accuracy():
     assert not r["study"].disagreements()
 
 
+def test_notes_example_3_toggle_linkage():
+    """V_D = 4 m/s to the left, omega_2 and omega_3 counter-clockwise, omega_4 clockwise (notes)."""
+    study = Study(load_scene(GALLERY / "notes-velocity-example-3.toml"))
+    v = study.velocity
+    assert v.velocities["D"].x == pytest.approx(-4.0, rel=0.02) and abs(v.velocities["D"].y) < 1e-12
+    assert v.angular[2] > 0 and v.angular[3] > 0 and v.angular[4] < 0
+    assert study.analytic.model == "dyad chain" and not study.disagreements()
+
+
 def test_notes_example_4_velocity_image():
     study = Study(load_scene(GALLERY / "notes-velocity-example-4.toml"))
     v = study.velocity
