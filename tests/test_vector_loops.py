@@ -15,14 +15,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from constructions.errors import CannotAssemble
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from constructions import analytic
 from constructions.check import AGREEMENT, analytic_solution, compare
-from constructions.errors import DegenerateInput
+from constructions.errors import CannotAssemble, DegenerateInput
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
 from constructions.velocity import velocity_polygon
