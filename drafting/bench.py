@@ -51,6 +51,26 @@ def render_rows(repeats: int = 7) -> list[dict]:
     return rows
 
 
+def chain_rows(sizes=(10**3, 10**4, 10**5, 10**6), repeats: int = 3) -> list[dict]:
+    """The dyad-chain vector loop (compound mechanisms) over crank-angle arrays: the notes' toggle
+    linkage of gallery Example 3 (two dyads, a slider)."""
+    import numpy as np
+
+    from constructions.vector_loops import chain_solution
+    from .scene import load_scene
+
+    root = Path(__file__).resolve().parents[1] / "gallery" / "notes-velocity-example-3.toml"
+    if not root.exists():
+        return []
+    m = load_scene(root).mechanism
+    rows = []
+    for n in sizes:
+        theta = np.linspace(0.0, 2 * np.pi, n)
+        t = _median_seconds(lambda: chain_solution(m, theta, 100.0), repeats)
+        rows.append({"n": n, "median_seconds": t, "angles_per_second": n / t})
+    return rows
+
+
 def run_benchmarks(quick: bool = False) -> str:
     repeats = 3 if quick else 7
     sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
@@ -60,4 +80,11 @@ def run_benchmarks(quick: bool = False) -> str:
     lines.append("")
     lines.append("Analytic sweep, positions and velocities (one core, numpy):")
     lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))
+    chain = chain_rows((10**3, 10**4, 10**5) if quick else (10**3, 10**4, 10**5, 10**6))
+    if chain:
+        lines.append("")
+        lines.append("Dyad-chain vector loop, toggle linkage (gallery Example 3), positions and velocities:")
+        for r in chain:
+            lines.append(f"  {r['n']:>9.0e} angles  {r['median_seconds'] * 1e3:9.2f} ms  "
+                         f"{r['angles_per_second']:9.3g} angles/s")
     return "\n".join(lines)
