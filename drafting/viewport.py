@@ -106,7 +106,7 @@ def vector_spec(diagram: Diagram, entities: tuple[Entity, ...], units: str) -> D
     f = _unit_factor(si_unit, unit)
     per_mm = upm * f
     shown = re.sub(r"\^\s*2|\*\*\s*2", "\u00b2", unit)          # mm/s^2 is printed mm/s²
-    return DiagramSpec(diagram.value, heading, entities, f"{kind} 1 mm = {L.number_text(per_mm)} {shown}",
+    return DiagramSpec(diagram.key, heading, entities, f"{kind} 1 mm = {L.number_text(per_mm)} {shown}",
                        shown, 1.0 / per_mm, 1.0 / upm)
 
 
