@@ -1,23 +1,28 @@
 """The independent analytic check: vector-loop closed forms, vectorised over crank angles.
 
-This module is the yardstick for the graphical velocity-polygon constructions, so it deliberately
+This module is the yardstick for the graphical velocity- and acceleration-polygon constructions, so it
+deliberately
 shares no code with them: it is pure numpy and imports nothing from :mod:`constructions` or
 :mod:`drafting`.  Every formula below is derived here from first principles (the derivations are in
 the comments next to the code); none is copied from the course notes, whose vector-loop section has
-known sign and matrix mistakes.
+known sign and matrix mistakes (its four-bar acceleration matrix among them).
 
 Conventions
 -----------
-* SI throughout: metres, radians, rad/s.  Angles are measured CCW from +x; omega is CCW positive.
-* ``theta1`` and ``omega1`` may be scalars or numpy arrays; they are broadcast against each other and
-  every returned field is a float64 (or bool) array of the broadcast shape (a 0-d array for scalars).
-  The returned arrays are read-only; the containers are frozen dataclasses.
-* A crank angle at which the loop cannot close gives NaN for every position and velocity field
-  (including B and V_B: the mechanism has no configuration there), NaN ``condition`` and
-  ``assembles == False``.
+* SI throughout: metres, radians, rad/s, rad/s^2.  Angles are measured CCW from +x; omega and alpha
+  are CCW positive.
+* ``theta1``, ``omega1`` and ``alpha1`` may be scalars or numpy arrays; they are broadcast against
+  each other and every returned field is a float64 (or bool) array of the broadcast shape (a 0-d
+  array for scalars).  The returned arrays are read-only; the containers are frozen dataclasses.
+* A crank angle at which the loop cannot close gives NaN for every position, velocity and
+  acceleration field (including B, V_B and A_B: the mechanism has no configuration there), NaN
+  ``condition`` and ``assembles == False``.
 * ``condition`` is the sine of the angle between the two velocity trial lines.  Where it is below
   :data:`SINE_TOL` (1e-12) the velocity solution is indeterminate (toggle / dead centre) and every
-  velocity that depends on the solve is NaN -- never inf, never a huge number.  V_B stays finite.
+  velocity and acceleration that depends on the solve is NaN -- never inf, never a huge number.  V_B
+  and A_B stay finite.  The acceleration loop has the same 2x2 matrix as the velocity loop (only the
+  right-hand side differs), so it is singular exactly where the velocity loop is; near a toggle the
+  accelerations grow like 1/condition^3 (the velocities like 1/condition).
 
 Numerical notes
 ---------------
@@ -102,7 +107,7 @@ def _freeze(obj) -> None:
 
 @dataclass(frozen=True, eq=False)
 class FourBarState:
-    """Positions and velocities of a four-bar O1-B-C-O2 over a set of crank angles.
+    """Positions, velocities and accelerations of a four-bar O1-B-C-O2 over a set of crank angles.
 
     Attributes
     ----------
@@ -118,11 +123,15 @@ class FourBarState:
         Coupler and rocker angular velocities (rad/s, CCW positive).
     VBx, VBy, VCx, VCy : ndarray
         Absolute velocities of B and C (m/s).
+    alpha2, alpha3 : ndarray
+        Coupler and rocker angular accelerations (rad/s^2, CCW positive).
+    ABx, ABy, ACx, ACy : ndarray
+        Absolute accelerations of B and C (m/s^2).
     assembles : ndarray of bool
         True where the loop closes at this crank angle.
     condition : ndarray
         ``|sin|`` of the angle between coupler and rocker (the sine of the transmission angle);
-        0 at a toggle, where the velocities are NaN.
+        0 at a toggle, where the velocities and accelerations are NaN.
     """
 
     Bx: np.ndarray
@@ -137,6 +146,12 @@ class FourBarState:
     VBy: np.ndarray
     VCx: np.ndarray
     VCy: np.ndarray
+    alpha2: np.ndarray
+    alpha3: np.ndarray
+    ABx: np.ndarray
+    ABy: np.ndarray
+    ACx: np.ndarray
+    ACy: np.ndarray
     assembles: np.ndarray
     condition: np.ndarray
 
@@ -146,7 +161,7 @@ class FourBarState:
 
 @dataclass(frozen=True, eq=False)
 class SliderCrankState:
-    """Positions and velocities of an (offset) slider-crank O1-B-C, C on a straight guide.
+    """Positions, velocities and accelerations of an (offset) slider-crank O1-B-C, C on a straight guide.
 
     Attributes
     ----------
@@ -162,6 +177,12 @@ class SliderCrankState:
         Absolute velocities of B and C (m/s); V_C is parallel to the guide.
     slider_speed : ndarray
         Signed speed of C along the guide direction ``(cos guide_angle, sin guide_angle)`` (m/s).
+    alpha2 : ndarray
+        Coupler angular acceleration (rad/s^2, CCW positive).
+    ABx, ABy, ACx, ACy : ndarray
+        Absolute accelerations of B and C (m/s^2); A_C is parallel to the guide.
+    slider_acceleration : ndarray
+        Signed acceleration of C along the guide direction (m/s^2).
     assembles : ndarray of bool
         True where the coupler reaches the guide at this crank angle.
     condition : ndarray
@@ -180,6 +201,12 @@ class SliderCrankState:
     VCx: np.ndarray
     VCy: np.ndarray
     slider_speed: np.ndarray
+    alpha2: np.ndarray
+    ABx: np.ndarray
+    ABy: np.ndarray
+    ACx: np.ndarray
+    ACy: np.ndarray
+    slider_acceleration: np.ndarray
     assembles: np.ndarray
     condition: np.ndarray
 
@@ -189,7 +216,7 @@ class SliderCrankState:
 
 @dataclass(frozen=True, eq=False)
 class PointState:
-    """Position and velocity of a point D fixed to a link.
+    """Position, velocity and acceleration of a point D fixed to a link.
 
     Attributes
     ----------
@@ -197,12 +224,17 @@ class PointState:
         Position of D (m).
     VDx, VDy : ndarray
         Absolute velocity of D (m/s).
+    ADx, ADy : ndarray
+        Absolute acceleration of D (m/s^2); NaN when the base point's acceleration and the link's
+        angular acceleration were not given.
     """
 
     Dx: np.ndarray
     Dy: np.ndarray
     VDx: np.ndarray
     VDy: np.ndarray
+    ADx: np.ndarray
+    ADy: np.ndarray
 
     def __post_init__(self) -> None:
         _freeze(self)
@@ -236,19 +268,22 @@ def _branch(value) -> float:
     return float(value)
 
 
-def _angles(theta1, omega1):
-    """Broadcast theta1 and omega1; return flat theta, omega (float or flat array) and the shape."""
+def _angles(theta1, omega1, alpha1):
+    """Broadcast theta1, omega1 and alpha1; return flat theta, omega and alpha (each a float if it
+    was given as a scalar, else a flat array) and the shape."""
     th = np.asarray(theta1, dtype=np.float64)
     w = np.asarray(omega1, dtype=np.float64)
-    shape = np.broadcast_shapes(th.shape, w.shape)
+    a = np.asarray(alpha1, dtype=np.float64)
+    shape = np.broadcast_shapes(th.shape, w.shape, a.shape)
     if th.shape != shape:
         th = np.broadcast_to(th, shape)
     th = np.ascontiguousarray(th).reshape(-1)
-    if w.ndim == 0:
-        wv = float(w)
-    else:
-        wv = np.ascontiguousarray(np.broadcast_to(w, shape)).reshape(-1)
-    return th, wv, shape
+
+    def flat(v):
+        if v.ndim == 0:
+            return float(v)
+        return np.ascontiguousarray(np.broadcast_to(v, shape)).reshape(-1)
+    return th, flat(w), flat(a), shape
 
 
 def _chunk_of(w, i, j):
@@ -314,7 +349,8 @@ def _sincos(th, c, s, t, u):
 # --------------------------------------------------------------------------------------------
 
 _FOURBAR_FIELDS = ("Bx", "By", "Cx", "Cy", "theta2", "theta3", "omega2", "omega3",
-                   "VBx", "VBy", "VCx", "VCy", "condition")
+                   "VBx", "VBy", "VCx", "VCy", "alpha2", "alpha3", "ABx", "ABy", "ACx", "ACy",
+                   "condition")
 
 
 def _crank_tip(c, s, r1, o1x, o1y, w, Bx, By, VBx, VBy) -> None:
@@ -335,8 +371,38 @@ def _crank_tip(c, s, r1, o1x, o1y, w, Bx, By, VBx, VBy) -> None:
         VBy *= r1
 
 
-def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocker, branch):
-    """Closed-form positions and velocities of a four-bar linkage, vectorised over crank angles.
+def _crank_tip_acceleration(c, s, r1, w, a, ABx, ABy, t, u) -> None:
+    """A_B = d/dt V_B into ABx, ABy; t and u are scratch.
+
+    V_B = omega1 r1 (-sin, cos)(theta1) with theta1' = omega1 and omega1' = alpha1, so
+    A_B = alpha1 r1 (-sin, cos) - omega1^2 r1 (cos, sin) = alpha1 k x r - omega1^2 r, r = B - O1:
+    the tangential part square to the crank, the normal part towards O1.
+    """
+    if isinstance(w, float):
+        nrm = -w * w * r1
+    else:
+        np.multiply(w, w, out=t)
+        t *= -r1
+        nrm = t
+    np.multiply(c, nrm, out=ABx)  # -omega1^2 r1 cos
+    np.multiply(s, nrm, out=ABy)  # -omega1^2 r1 sin
+    if isinstance(a, float):
+        if a != 0.0:
+            np.multiply(s, -a * r1, out=u)
+            ABx += u
+            np.multiply(c, a * r1, out=u)
+            ABy += u
+    else:
+        np.multiply(s, a, out=u)
+        u *= -r1
+        ABx += u
+        np.multiply(c, a, out=u)
+        u *= r1
+        ABy += u
+
+
+def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, coupler, rocker, branch):
+    """Closed-form positions, velocities and accelerations of a four-bar, vectorised over crank angles.
 
     Parameters
     ----------
@@ -344,6 +410,9 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
         Crank angle(s), direction O1 -> B (rad, CCW from +x).
     omega1 : float or array_like
         Crank angular velocity (rad/s, CCW positive); broadcast against ``theta1``.
+    alpha1 : float or array_like, optional
+        Crank angular acceleration (rad/s^2, CCW positive), default 0 (constant speed); broadcast
+        against ``theta1`` and ``omega1``.
     crank_pivot, rocker_pivot : pair of float
         Fixed pivots O1 and O2 (m).
     crank, coupler, rocker : float
@@ -355,7 +424,7 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
     Returns
     -------
     FourBarState
-        Arrays of the broadcast shape of ``theta1`` and ``omega1``.
+        Arrays of the broadcast shape of ``theta1``, ``omega1`` and ``alpha1``.
 
     Notes
     -----
@@ -377,6 +446,19 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
     |cross(p, q)| / (coupler rocker) = sqrt(P) / (2 coupler rocker) is the sine of the angle between
     coupler and rocker.  Checked against finite differences and complex-step derivatives of the
     positions in the tests.
+
+    Acceleration.  Differentiate the velocity loop V_B + omega2 k x p = omega3 k x q once more in
+    time.  p and q are fixed in their links, so p' = omega2 k x p and q' = omega3 k x q, and
+    k x (k x p) = -p in the plane; hence
+    A_B + alpha2 k x p - omega2^2 p = alpha3 k x q - omega3^2 q   (A_B = alpha1 k x r1 - omega1^2 r1).
+    Collect the known terms R = A_B - omega2^2 p + omega3^2 q, so R + alpha2 k x p = alpha3 k x q:
+    the same 2x2 system as for the velocities with V_B replaced by R.  Dotting with q and with p as
+    before: alpha2 = -(R . q) / cross(p, q), alpha3 = -(R . p) / cross(p, q) and
+    A_C = alpha3 k x q - omega3^2 q.  With |p| = coupler, |q| = rocker and
+    p . q = (coupler^2 + rocker^2 - d^2) / 2 (from |p - q|^2 = |O2 - B|^2 = d^2) the right-hand sides are
+    R . q = A_B . q - omega2^2 (p . q) + omega3^2 rocker^2 and
+    R . p = A_B . p - omega2^2 coupler^2 + omega3^2 (p . q).  Checked against the dyad-chain solver,
+    finite differences of the velocities in time and the notes' examples in the tests.
     """
     o1x, o1y = _point("crank_pivot", crank_pivot)
     o2x, o2y = _point("rocker_pivot", rocker_pivot)
@@ -384,7 +466,7 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
     r2 = _length("coupler", coupler)
     r3 = _length("rocker", rocker)
     br = _branch(branch)
-    th, w1, shape = _angles(theta1, omega1)
+    th, w1, a1, shape = _angles(theta1, omega1, alpha1)
     n = th.size
 
     scale = r1 + r2 + r3 + math.hypot(o1x, o1y) + math.hypot(o2x, o2y)
@@ -394,6 +476,8 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
     K = (r2 - r3) * (r2 + r3)  # coupler^2 - rocker^2 without squaring cancellation
     inv_2r2r3 = 1.0 / (2.0 * r2 * r3)
     check_d0 = T <= tol  # only then can d = 0 pass the gap test
+    r2sq, r3sq = r2 * r2, r3 * r3
+    half_sumsq = 0.5 * (r2sq + r3sq)  # p . q = half_sumsq - d^2 / 2
 
     out = {name: np.empty(n) for name in _FOURBAR_FIELDS}
     asm_all = np.empty(n, dtype=bool)
@@ -410,13 +494,15 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
                     a[:k] for a in (c, s, wx, wy, d2, d, f1, f2, tmp, inv, al, be))
                 bt = bt[:k]
                 m = k
-            Bx, By, Cx, Cy, t2, t3, om2, om3, VBx, VBy, VCx, VCy, cond = (
-                out[name][i:j] for name in _FOURBAR_FIELDS)
+            (Bx, By, Cx, Cy, t2, t3, om2, om3, VBx, VBy, VCx, VCy,
+             al2, al3, ABx, ABy, ACx, ACy, cond) = (out[name][i:j] for name in _FOURBAR_FIELDS)
             asm = asm_all[i:j]
             w = _chunk_of(w1, i, j)
+            a = _chunk_of(a1, i, j)
 
             _sincos(th[i:j], c, s, wx, wy)
             _crank_tip(c, s, r1, o1x, o1y, w, Bx, By, VBx, VBy)
+            _crank_tip_acceleration(c, s, r1, w, a, ABx, ABy, wx, wy)
             # w = O2 - B, d
             np.subtract(o2x, Bx, out=wx)
             np.subtract(o2y, By, out=wy)
@@ -456,6 +542,8 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
                 By += tmp
                 VBx += tmp
                 VBy += tmp
+                ABx += tmp
+                ABy += tmp
             np.multiply(f1, inv_2r2r3, out=cond)
             # p = C - B = alpha w + beta (k x w)
             np.divide(0.5, d2, out=inv)
@@ -495,6 +583,37 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
             np.multiply(om3, wy, out=VCx)
             np.negative(VCx, out=VCx)
             np.multiply(om3, wx, out=VCy)
+            # accelerations (see Notes): al = omega2^2, be = omega3^2, c = p . q
+            np.multiply(om2, om2, out=al)
+            np.multiply(om3, om3, out=be)
+            np.multiply(d2, -0.5, out=c)
+            c += half_sumsq
+            # alpha2 = -(R . q)/cross(p, q),  R . q = A_B . q - omega2^2 (p . q) + omega3^2 rocker^2
+            np.multiply(ABx, wx, out=al2)
+            np.multiply(ABy, wy, out=tmp)
+            al2 += tmp
+            np.multiply(al, c, out=tmp)
+            al2 -= tmp
+            np.multiply(be, r3sq, out=tmp)
+            al2 += tmp
+            al2 *= inv
+            # alpha3 = -(R . p)/cross(p, q),  R . p = A_B . p - omega2^2 coupler^2 + omega3^2 (p . q)
+            np.multiply(ABx, f2, out=al3)
+            np.multiply(ABy, d, out=tmp)
+            al3 += tmp
+            np.multiply(al, r2sq, out=tmp)
+            al3 -= tmp
+            np.multiply(be, c, out=tmp)
+            al3 += tmp
+            al3 *= inv
+            # A_C = alpha3 k x q - omega3^2 q = (-alpha3 q_y - omega3^2 q_x, alpha3 q_x - omega3^2 q_y)
+            np.multiply(al3, wy, out=ACx)
+            np.multiply(be, wx, out=tmp)
+            ACx += tmp
+            np.negative(ACx, out=ACx)
+            np.multiply(al3, wx, out=ACy)
+            np.multiply(be, wy, out=tmp)
+            ACy -= tmp
 
     res = {name: out[name].reshape(shape) for name in _FOURBAR_FIELDS}
     return FourBarState(assembles=asm_all.reshape(shape), **res)
@@ -505,11 +624,13 @@ def four_bar(theta1, omega1, *, crank_pivot, rocker_pivot, crank, coupler, rocke
 # --------------------------------------------------------------------------------------------
 
 _SLIDER_FIELDS = ("Bx", "By", "Cx", "Cy", "theta2", "omega2", "VBx", "VBy", "VCx", "VCy",
-                  "slider_speed", "condition")
+                  "slider_speed", "alpha2", "ABx", "ABy", "ACx", "ACy", "slider_acceleration",
+                  "condition")
 
 
-def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, guide_angle, branch):
-    """Closed-form positions and velocities of an (offset) slider-crank, vectorised over angles.
+def slider_crank(theta1, omega1, alpha1=0.0, *, crank_pivot, crank, coupler, guide_point, guide_angle,
+                 branch):
+    """Closed-form positions, velocities and accelerations of an (offset) slider-crank, vectorised.
 
     Parameters
     ----------
@@ -517,6 +638,9 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
         Crank angle(s), direction O1 -> B (rad, CCW from +x).
     omega1 : float or array_like
         Crank angular velocity (rad/s, CCW positive); broadcast against ``theta1``.
+    alpha1 : float or array_like, optional
+        Crank angular acceleration (rad/s^2, CCW positive), default 0 (constant speed); broadcast
+        against ``theta1`` and ``omega1``.
     crank_pivot : pair of float
         Fixed pivot O1 (m).
     crank, coupler : float
@@ -532,7 +656,7 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
     Returns
     -------
     SliderCrankState
-        Arrays of the broadcast shape of ``theta1`` and ``omega1``.
+        Arrays of the broadcast shape of ``theta1``, ``omega1`` and ``alpha1``.
 
     Notes
     -----
@@ -549,6 +673,16 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
     slider_speed = V_B . e + omega2 y and V_C = slider_speed e.  The condition measure is
     |p . e| / l = h / l.  Checked against finite differences and complex-step derivatives of
     the positions in the tests.
+
+    Acceleration.  Differentiate V_C = V_B + omega2 k x p once more (p' = omega2 k x p,
+    k x (k x p) = -p): A_C = A_B + alpha2 k x p - omega2^2 p, with A_C = sddot e parallel to the
+    guide (the guide is fixed and straight, so there is no Coriolis or normal term for the block).
+    Put R = A_B - omega2^2 p.  Dotting with n removes A_C: R . n + alpha2 (k x p) . n = 0, and
+    (k x p) . n = p . e = branch h as for the velocities, so alpha2 = -(R . n) / (branch h), with
+    R . n = A_B . n + omega2^2 y (p . n = -y).  Dotting with e:
+    sddot = R . e + alpha2 (k x p) . e = A_B . e - omega2^2 branch h + alpha2 y.
+    Checked against the dyad-chain solver, finite differences of the velocities in time, the exact
+    in-line formula and the notes' examples in the tests.
     """
     o1x, o1y = _point("crank_pivot", crank_pivot)
     gx, gy = _point("guide_point", guide_point)
@@ -558,7 +692,7 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
     if not math.isfinite(g):
         raise ValueError(f"guide_angle must be finite, got {guide_angle!r}")
     br = _branch(branch)
-    th, w1, shape = _angles(theta1, omega1)
+    th, w1, a1, shape = _angles(theta1, omega1, alpha1)
     n = th.size
 
     ex, ey = math.cos(g), math.sin(g)
@@ -583,13 +717,15 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
                     a[:k] for a in (c, s, y, h, tmp, px, py, inv))
                 bt = bt[:k]
                 m = k
-            Bx, By, Cx, Cy, t2, om2, VBx, VBy, VCx, VCy, spd, cond = (
-                out[name][i:j] for name in _SLIDER_FIELDS)
+            (Bx, By, Cx, Cy, t2, om2, VBx, VBy, VCx, VCy, spd,
+             al2, ABx, ABy, ACx, ACy, acc, cond) = (out[name][i:j] for name in _SLIDER_FIELDS)
             asm = asm_all[i:j]
             w = _chunk_of(w1, i, j)
+            a = _chunk_of(a1, i, j)
 
             _sincos(th[i:j], c, s, px, py)
             _crank_tip(c, s, r1, o1x, o1y, w, Bx, By, VBx, VBy)
+            _crank_tip_acceleration(c, s, r1, w, a, ABx, ABy, px, py)
             # y = y0 + crank (s ex - c ey)   (signed distance of B from the guide)
             np.multiply(s, ex * r1, out=y)
             np.multiply(c, ey * r1, out=tmp)
@@ -619,6 +755,8 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
                 By += tmp
                 VBx += tmp
                 VBy += tmp
+                ABx += tmp
+                ABy += tmp
             np.multiply(h, inv_l, out=cond)
             # p = C - B = -y n + branch h e
             if br < 0:
@@ -649,6 +787,25 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
             spd += tmp
             np.multiply(spd, ex, out=VCx)
             np.multiply(spd, ey, out=VCy)
+            # accelerations (see Notes), c = omega2^2 (c, s are free after the crank tip):
+            # alpha2 = -(A_B . n + omega2^2 y) / (branch h)
+            np.multiply(om2, om2, out=c)
+            np.multiply(ABx, nx, out=al2)
+            np.multiply(ABy, ny, out=tmp)
+            al2 += tmp
+            np.multiply(c, y, out=tmp)
+            al2 += tmp
+            al2 *= inv
+            # sddot = A_B . e - omega2^2 (branch h) + alpha2 y;  A_C = sddot e
+            np.multiply(ABx, ex, out=acc)
+            np.multiply(ABy, ey, out=tmp)
+            acc += tmp
+            np.multiply(c, h, out=tmp)
+            acc -= tmp
+            np.multiply(al2, y, out=tmp)
+            acc += tmp
+            np.multiply(acc, ex, out=ACx)
+            np.multiply(acc, ey, out=ACy)
 
     res = {name: out[name].reshape(shape) for name in _SLIDER_FIELDS}
     return SliderCrankState(assembles=asm_all.reshape(shape), **res)
@@ -659,26 +816,37 @@ def slider_crank(theta1, omega1, *, crank_pivot, crank, coupler, guide_point, gu
 # --------------------------------------------------------------------------------------------
 
 
-def coupler_point(Bx, By, VBx, VBy, theta2, omega2, *, distance, angle):
-    """Position and velocity of a point D fixed to the coupler.
+def coupler_point(Bx, By, VBx, VBy, theta2, omega2, *, distance, angle, ABx=None, ABy=None,
+                  alpha2=None):
+    """Position, velocity and acceleration of a point D fixed to a link (e.g. the coupler).
 
     Parameters
     ----------
     Bx, By, VBx, VBy : array_like
-        Position (m) and velocity (m/s) of the coupler pin B, e.g. from :func:`four_bar`.
+        Position (m) and velocity (m/s) of the link's base point B, e.g. from :func:`four_bar`.
     theta2, omega2 : array_like
-        Coupler angle (rad, direction B -> C) and angular velocity (rad/s, CCW positive).
+        Link angle (rad, the direction from B to the link's other joint) and angular velocity
+        (rad/s, CCW positive).
     distance : float
         |BD| (m), non-negative.
     angle : float
-        Angle of BD measured CCW from BC (rad).
+        Angle of BD measured CCW from the link direction (rad).
+    ABx, ABy, alpha2 : array_like, optional
+        Acceleration of B (m/s^2) and angular acceleration of the link (rad/s^2, CCW positive).
+        Give all three or none; without them ``ADx`` and ``ADy`` are NaN.
 
     Returns
     -------
     PointState
-        ``D = B + distance (cos(theta2 + angle), sin(theta2 + angle))`` and
-        ``V_D = V_B + omega2 k x (D - B)`` (rigid-body velocity; k x (x, y) = (-y, x)),
-        broadcast over the inputs.  NaN inputs give NaN outputs.
+        ``D = B + distance (cos(theta2 + angle), sin(theta2 + angle))``,
+        ``V_D = V_B + omega2 k x r`` and ``A_D = A_B + alpha2 k x r - omega2^2 r`` with r = D - B
+        (rigid body; k x (x, y) = (-y, x)), broadcast over the inputs.  NaN inputs give NaN outputs.
+
+    Notes
+    -----
+    r = D - B turns with the link: r' = omega2 k x r.  Differentiating V_D = V_B + omega2 k x r gives
+    A_D = A_B + alpha2 k x r + omega2 k x (omega2 k x r) = A_B + alpha2 k x r - omega2^2 r, i.e.
+    (ABx - alpha2 r_y - omega2^2 r_x, ABy + alpha2 r_x - omega2^2 r_y).
     """
     dist = float(distance)
     if not (math.isfinite(dist) and dist >= 0.0):
@@ -686,12 +854,23 @@ def coupler_point(Bx, By, VBx, VBy, theta2, omega2, *, distance, angle):
     ang = float(angle)
     if not math.isfinite(ang):
         raise ValueError(f"angle must be finite, got {angle!r}")
-    arrs = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64)
-                                 for a in (Bx, By, VBx, VBy, theta2, omega2)))
+    given = [v is not None for v in (ABx, ABy, alpha2)]
+    if any(given) and not all(given):
+        raise ValueError("give ABx, ABy and alpha2 together (the acceleration of the base point and "
+                         "the angular acceleration of the link), or none of them")
+    accel = all(given)
+    inputs = [Bx, By, VBx, VBy, theta2, omega2] + ([ABx, ABy, alpha2] if accel else [])
+    arrs = np.broadcast_arrays(*(np.asarray(v, dtype=np.float64) for v in inputs))
     shape = arrs[0].shape
-    bx, by, vbx, vby, t2, w2 = (np.ascontiguousarray(a).reshape(-1) for a in arrs)
+    flat = [np.ascontiguousarray(v).reshape(-1) for v in arrs]
+    bx, by, vbx, vby, t2, w2 = flat[:6]
     n = bx.size
     Dx, Dy, VDx, VDy = (np.empty(n) for _ in range(4))
+    if accel:
+        abx, aby, a2 = flat[6:]
+        ADx, ADy = np.empty(n), np.empty(n)
+    else:
+        ADx = ADy = None
     m = min(CHUNK, max(n, 1))
     c, s, t, u = (np.empty(m) for _ in range(4))
     with np.errstate(all="ignore"):
@@ -699,7 +878,7 @@ def coupler_point(Bx, By, VBx, VBy, theta2, omega2, *, distance, angle):
             j = min(i + CHUNK, n)
             k = j - i
             if k != m:
-                c, s, t, u = (a[:k] for a in (c, s, t, u))
+                c, s, t, u = (v[:k] for v in (c, s, t, u))
                 m = k
             np.add(t2[i:j], ang, out=t)
             _sincos(t, c, s, u, Dx[i:j])  # u and the Dx slice are scratch here
@@ -712,5 +891,20 @@ def coupler_point(Bx, By, VBx, VBy, theta2, omega2, *, distance, angle):
             np.subtract(vbx[i:j], VDx[i:j], out=VDx[i:j])
             np.multiply(w2[i:j], c, out=VDy[i:j])
             VDy[i:j] += vby[i:j]
+            if accel:
+                # A_D = A_B + alpha2 (-r_y, r_x) - omega2^2 (r_x, r_y)
+                np.multiply(w2[i:j], w2[i:j], out=t)  # omega2^2
+                np.multiply(a2[i:j], s, out=u)
+                np.subtract(abx[i:j], u, out=ADx[i:j])
+                np.multiply(t, c, out=u)
+                ADx[i:j] -= u
+                np.multiply(a2[i:j], c, out=u)
+                np.add(aby[i:j], u, out=ADy[i:j])
+                np.multiply(t, s, out=u)
+                ADy[i:j] -= u
+    if not accel:
+        ADx = np.full(n, np.nan)
+        ADy = np.full(n, np.nan)
     return PointState(Dx=Dx.reshape(shape), Dy=Dy.reshape(shape),
-                      VDx=VDx.reshape(shape), VDy=VDy.reshape(shape))
+                      VDx=VDx.reshape(shape), VDy=VDy.reshape(shape),
+                      ADx=ADx.reshape(shape), ADy=ADy.reshape(shape))

@@ -14,28 +14,33 @@ itself, and solves each dyad in a different form from the kernel's circle inters
   the quadratic in the slider parameter s along the guide.
 * Velocities by differentiating the loop-closure (constant-length) equations and solving the
   resulting linear equations (Cramer's rule); link angular velocities from the relative velocities.
+* Accelerations by differentiating the constraint equations a second time: the same 2x2 matrix as
+  for the velocities, a right-hand side with the squared relative speeds; link angular
+  accelerations from the relative accelerations.
 
 Conventions
 -----------
-* SI, angles CCW from +x, omega CCW positive, as everywhere in the engine.
-* ``theta`` and ``omega`` are broadcast against each other; every array in the result has that
-  shape (0-d for scalars) and is read-only.
+* SI, angles CCW from +x, omega and alpha CCW positive, as everywhere in the engine.
+* ``theta``, ``omega`` and ``alpha`` are broadcast against each other; every array in the result has
+  that shape (0-d for scalars) and is read-only.
 * Branches follow :class:`~constructions.linkage.Branch`: for two links, sign +1 puts J to the LEFT
   of the directed line reference[0] -> reference[1] (cross(ref1 - ref0, J - ref0) > 0); for a guide,
   +1 puts J AHEAD of the foot of the perpendicular from reference[0], along the guide direction
   (cos angle, sin angle).
 * An angle at which some dyad cannot close gives ``assembles == False`` and NaN for every moving
-  joint, point and velocity, and for every angular velocity except the crank's (the input) and the
-  slider blocks' (0).  The fixed pivots keep their coordinates and zero velocity.
+  joint, point, velocity and acceleration, and for every angular velocity and angular acceleration
+  except the crank's (the inputs) and the slider blocks' (0).  The fixed pivots keep their
+  coordinates and zero velocity and acceleration.
 * Decisions are three-way with a tolerance ``ASSEMBLY_RTOL * L`` relative to the mechanism scale
   ``L`` (sum of the link lengths plus the largest distance of a pivot or guide point from the
   origin): a gap factor within the tolerance of zero is a tangency, snapped to exactly zero -- the
   mechanism assembles, the joint lies on the line of centres (or square to the guide), its
-  condition is 0 and its velocities are NaN.
+  condition is 0 and its velocities and accelerations are NaN.
 * ``conditions[J]`` is the sine of the angle between the two velocity trial lines of J (the sine of
   the angle between the two links at J, or |cos| of the angle between the link and the guide).
-  Where it is below :data:`SINGULAR` the velocity system is singular (toggle, lock) and V_J (and
-  everything that depends on it) is NaN -- never inf.
+  Where it is below :data:`SINGULAR` the velocity system is singular (toggle, lock) and V_J and A_J
+  (and everything that depends on them) are NaN -- never inf.  The acceleration system of a joint
+  has the same matrix as its velocity system, so it is singular exactly there too.
 """
 
 from __future__ import annotations
@@ -198,19 +203,25 @@ class ChainPoint:
     angular: Mapping[int, float]
     conditions: Mapping[str, float]
     assembles: bool
+    accelerations: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
+    angular_acceleration: Mapping[int, float] = field(default_factory=lambda: MappingProxyType({}))
 
 
 @dataclass(frozen=True, eq=False)
 class ChainState:
-    """Positions, velocities and link angular velocities of a dyad chain over a set of crank angles.
+    """Positions, velocities, accelerations and link angular velocities and accelerations of a dyad
+    chain over a set of crank angles.
 
     Attributes
     ----------
-    positions, velocities : mapping of name -> (x array, y array)
-        Every fixed pivot, joint and point fixed to a link (m, m/s).
+    positions, velocities, accelerations : mapping of name -> (x array, y array)
+        Every fixed pivot, joint and point fixed to a link (m, m/s, m/s^2).
     angular : mapping of link number -> array
         Every link's angular velocity (rad/s, CCW positive); the crank's is the input omega, slider
         blocks translate (0).
+    angular_acceleration : mapping of link number -> array
+        Every link's angular acceleration (rad/s^2, CCW positive); the crank's is the input alpha,
+        slider blocks 0.
     conditions : mapping of joint -> array
         Sine of the angle between the velocity trial lines of each joint found by a dyad (0 at a
         toggle or lock, where its velocity is NaN).
@@ -226,6 +237,9 @@ class ChainState:
     conditions: Mapping[str, np.ndarray]
     assembles: np.ndarray
     order: tuple[str, ...] = field(default=())
+    accelerations: Mapping[str, tuple[np.ndarray, np.ndarray]] = field(
+        default_factory=lambda: MappingProxyType({}))
+    angular_acceleration: Mapping[int, np.ndarray] = field(default_factory=lambda: MappingProxyType({}))
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -240,7 +254,10 @@ class ChainState:
             velocities=MappingProxyType({n: xy(v) for n, v in self.velocities.items()}),
             angular=MappingProxyType({n: float(w[index]) for n, w in self.angular.items()}),
             conditions=MappingProxyType({n: float(c[index]) for n, c in self.conditions.items()}),
-            assembles=bool(self.assembles[index]))
+            assembles=bool(self.assembles[index]),
+            accelerations=MappingProxyType({n: xy(a) for n, a in self.accelerations.items()}),
+            angular_acceleration=MappingProxyType(
+                {n: float(a[index]) for n, a in self.angular_acceleration.items()}))
 
 
 # -- the solution -----------------------------------------------------------------------------------
@@ -260,41 +277,112 @@ def _snap(f: np.ndarray, tol: float, ok: np.ndarray, tangent: np.ndarray) -> np.
     return np.where(touch, 0.0, f)
 
 
-def chain_solution(m: Mechanism, theta, omega) -> ChainState:
+#: Crank angles solved per chunk: the chain's many temporaries then stay in cache (2**11 .. 2**14
+#: measure within noise of each other; whole 1e6-angle arrays are about twice as slow).
+CHUNK = 2**12
+
+
+def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
     """Solve the mechanism ``m`` (a crank followed by dyads) at crank angle(s) ``theta`` (rad, direction
-    pivot -> tip, CCW from +x) turning at ``omega`` (rad/s, CCW positive).
+    pivot -> tip, CCW from +x) turning at ``omega`` (rad/s, CCW positive) with angular acceleration
+    ``alpha`` (rad/s^2, CCW positive; default 0, constant speed).
 
     Raises DegenerateInput when the mechanism is not a crank followed by RRR and RRP dyads (it says
     which joint cannot be solved).
     """
     crank, dyads, points = _order(m)
-    th = np.asarray(theta, dtype=np.float64)
-    w1 = np.asarray(omega, dtype=np.float64)
-    shape = np.broadcast_shapes(th.shape, w1.shape)
-    th = np.broadcast_to(th, shape)
-    w1 = np.broadcast_to(w1, shape)
-    L = _scale(m)
-    tol = ASSEMBLY_RTOL * L
+    th, w1, a1 = np.broadcast_arrays(*(np.asarray(v, dtype=np.float64) for v in (theta, omega, alpha)))
+    shape = th.shape
+    th, w1, a1 = (np.ascontiguousarray(v).reshape(-1) for v in (th, w1, a1))
+    n = th.size
+    tol = ASSEMBLY_RTOL * _scale(m)
 
-    zeros = np.zeros(shape)
-    pos: dict[str, tuple[np.ndarray, np.ndarray]] = {}
-    vel: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    out: dict[str, dict] | None = None
+    ok_all = np.empty(n, dtype=bool)
+    for i in range(0, max(n, 1), CHUNK):
+        j = min(i + CHUNK, n)
+        res = _solve(m, crank, dyads, points, th[i:j], w1[i:j], a1[i:j], tol)
+        if out is None:   # the names are known after the first chunk: allocate the outputs
+            out = {kind: {name: ((np.empty(n), np.empty(n)) if kind in _VECTORS else np.empty(n))
+                          for name in res[kind]} for kind in _KINDS}
+        for kind in _KINDS:
+            for name, v in res[kind].items():
+                if kind in _VECTORS:
+                    out[kind][name][0][i:j] = v[0]
+                    out[kind][name][1][i:j] = v[1]
+                else:
+                    out[kind][name][i:j] = v
+        ok_all[i:j] = res["ok"]
+
+    # where any dyad fails the mechanism has no configuration: NaN for everything that moves
+    if not ok_all.all():
+        bad = ~ok_all
+        for kind in _VECTORS:
+            for name, (x, y) in out[kind].items():
+                if name not in m.ground:
+                    x[bad] = np.nan
+                    y[bad] = np.nan
+        for c in out["conditions"].values():
+            c[bad] = np.nan
+        fixed = {crank.link.number} | {s_.number for s_ in m.slides}
+        for kind in ("angular", "angular_acceleration"):
+            for number, w in out[kind].items():
+                if number not in fixed:
+                    w[bad] = np.nan
+
+    def freeze(a: np.ndarray) -> np.ndarray:
+        return _readonly(a.reshape(shape))
+
+    def vectors(kind):
+        return MappingProxyType({name: (freeze(x), freeze(y)) for name, (x, y) in out[kind].items()})
+
+    def scalars(kind, key=None):
+        items = out[kind].items() if key is None else sorted(out[kind].items(), key=key)
+        return MappingProxyType({name: freeze(v) for name, v in items})
+
+    return ChainState(
+        positions=vectors("positions"),
+        velocities=vectors("velocities"),
+        angular=scalars("angular", key=lambda kv: kv[0]),
+        conditions=scalars("conditions"),
+        assembles=_readonly(ok_all.reshape(shape)),
+        order=(crank.joint,) + tuple(d.joint for d in dyads) + tuple(p.point.name for p in points),
+        accelerations=vectors("accelerations"),
+        angular_acceleration=scalars("angular_acceleration", key=lambda kv: kv[0]))
+
+
+_VECTORS = ("positions", "velocities", "accelerations")
+_KINDS = _VECTORS + ("angular", "angular_acceleration", "conditions")
+
+
+def _solve(m: Mechanism, crank: _Crank, dyads, points, th: np.ndarray, w1: np.ndarray, a1: np.ndarray,
+           tol: float) -> dict:
+    """One chunk of :func:`chain_solution` (1-D arrays); fixed pivots as plain floats."""
+    k = th.size
+    pos: dict[str, tuple] = {}
+    vel: dict[str, tuple] = {}
+    acc: dict[str, tuple] = {}
     cond: dict[str, np.ndarray] = {}
-    ok = np.ones(shape, dtype=bool)
+    ok = np.ones(k, dtype=bool)
     for g, p in m.ground.items():
-        pos[g] = (np.full(shape, float(p.x)), np.full(shape, float(p.y)))
-        vel[g] = (zeros, zeros)
+        pos[g] = (float(p.x), float(p.y))
+        vel[g] = (0.0, 0.0)
+        acc[g] = (0.0, 0.0)
 
     with np.errstate(all="ignore"):  # NaN where a dyad does not close, handled explicitly
-        # Crank: B = O + r (cos, sin)(theta);  V_B = d/dt of it = omega r (-sin, cos) = omega k x (B - O).
+        # Crank: B = O + r (cos, sin)(theta);  V_B = d/dt of it = omega r (-sin, cos) = omega k x (B - O);
+        # A_B = d/dt V_B (theta' = omega, omega' = alpha) = alpha r (-sin, cos) - omega^2 r (cos, sin)
+        #     = alpha k x (B - O) - omega^2 (B - O).
         c, s = np.cos(th), np.sin(th)
         r = crank.link.length
         ox, oy = pos[crank.pivot]
         pos[crank.joint] = (ox + r * c, oy + r * s)
         vel[crank.joint] = (-w1 * r * s, w1 * r * c)
+        wsq = w1 * w1
+        acc[crank.joint] = (-(a1 * s + wsq * c) * r, (a1 * c - wsq * s) * r)
 
         for d in dyads:
-            tangent = np.zeros(shape, dtype=bool)
+            tangent = np.zeros(k, dtype=bool)
             if isinstance(d, _RRR):
                 (Px, Py), (Qx, Qy) = pos[d.p], pos[d.q]
                 a, b = d.link_p.length, d.link_q.length
@@ -333,6 +421,17 @@ def chain_solution(m: Mechanism, theta, omega) -> ChainState:
                 inv = np.where(sine >= SINGULAR, 1.0 / det, np.nan)
                 VJx = (k1 * r2y - r1y * k2) * inv
                 VJy = (r1x * k2 - r2x * k1) * inv
+                # Acceleration: differentiate (J - P).(V_J - V_P) = 0 once more:
+                #   |V_J - V_P|^2 + (J - P).(A_J - A_P) = 0,  likewise for Q,
+                # i.e. the same matrix [r1; r2] A_J = [r1.A_P - |V_J - V_P|^2; r2.A_Q - |V_J - V_Q|^2]:
+                # singular exactly where the velocity system is (inv is NaN there).
+                (APx, APy), (AQx, AQy) = acc[d.p], acc[d.q]
+                ux, uy = VJx - VPx, VJy - VPy
+                k1 = r1x * APx + r1y * APy - (ux * ux + uy * uy)
+                ux, uy = VJx - VQx, VJy - VQy
+                k2 = r2x * AQx + r2y * AQy - (ux * ux + uy * uy)
+                AJx = (k1 * r2y - r1y * k2) * inv
+                AJy = (r1x * k2 - r2x * k1) * inv
             else:
                 (Px, Py) = pos[d.p]
                 a = d.link.length
@@ -361,61 +460,61 @@ def chain_solution(m: Mechanism, theta, omega) -> ChainState:
                 rg = rx * gx + ry * gy
                 sine = np.abs(rg) / np.hypot(rx, ry)
                 sine = np.where(tangent, 0.0, sine)
-                sdot = np.where(sine >= SINGULAR, (rx * VPx + ry * VPy) / rg, np.nan)
+                inv = np.where(sine >= SINGULAR, 1.0 / rg, np.nan)
+                sdot = (rx * VPx + ry * VPy) * inv
                 VJx, VJy = sdot * gx, sdot * gy
+                # Acceleration: the guide is fixed and straight, so A_J = sddot g (no normal or
+                # Coriolis term).  Differentiating (J - P).(V_J - V_P) = 0 once more:
+                #   |V_J - V_P|^2 + (J - P).(sddot g - A_P) = 0
+                #   =>  sddot = ((J - P).A_P - |V_J - V_P|^2) / ((J - P).g),  NaN at a lock.
+                APx, APy = acc[d.p]
+                ux, uy = VJx - VPx, VJy - VPy
+                sddot = (rx * APx + ry * APy - (ux * ux + uy * uy)) * inv
+                AJx, AJy = sddot * gx, sddot * gy
             pos[d.joint] = (Jx, Jy)
             vel[d.joint] = (VJx, VJy)
+            acc[d.joint] = (AJx, AJy)
             cond[d.joint] = sine
 
         # Angular velocity of a rigid link P J: V_J - V_P = omega k x (J - P); taking cross(J - P, .)
         # of both sides, cross(r, omega k x r) = omega |r|^2, so omega = cross(r, V_J - V_P) / |r|^2.
+        # Angular acceleration: A_J - A_P = alpha k x r - omega^2 r; cross(r, k x r) = |r|^2 and
+        # cross(r, r) = 0 (also exactly in floating point: r_x r_y - r_y r_x), so the normal term drops
+        # out and alpha = cross(r, A_J - A_P) / |r|^2 (= cross(r, A_J - A_P + omega^2 r) / |r|^2).
         ang: dict[int, np.ndarray] = {}
-        for k in m.links:
-            if k.number == crank.link.number:
+        angacc: dict[int, np.ndarray] = {}
+        for link in m.links:
+            if link.number == crank.link.number:
                 continue
-            p, j = k.joints
+            p, j = link.joints
             (Px, Py), (Jx, Jy) = pos[p], pos[j]
             (VPx, VPy), (VJx, VJy) = vel[p], vel[j]
+            (APx, APy), (AJx, AJy) = acc[p], acc[j]
             rx, ry = Jx - Px, Jy - Py
-            ang[k.number] = (rx * (VJy - VPy) - ry * (VJx - VPx)) / (rx * rx + ry * ry)
-        ang[crank.link.number] = w1 + 0.0
+            rr = rx * rx + ry * ry
+            ang[link.number] = (rx * (VJy - VPy) - ry * (VJx - VPx)) / rr
+            angacc[link.number] = (rx * (AJy - APy) - ry * (AJx - APx)) / rr
+        ang[crank.link.number] = w1
+        angacc[crank.link.number] = a1
         for s_ in m.slides:
-            ang[s_.number] = zeros
+            ang[s_.number] = 0.0
+            angacc[s_.number] = 0.0
 
         # Points fixed to a link: D = base + distance (cos, sin)(psi + angle), psi the direction from
-        # base to the link's other joint; rigid body: V_D = V_base + omega k x (D - base),
-        # with k x (x, y) = (-y, x).
+        # base to the link's other joint; rigid body, r = D - base turning with the link (r' = omega k x r):
+        # V_D = V_base + omega k x r and A_D = A_base + alpha k x r - omega^2 r, with k x (x, y) = (-y, x).
         for pt in points:
             a, link = pt.point, pt.link
             (Bx, By), (Ox, Oy) = pos[a.base], pos[link.other(a.base)]
             VBx, VBy = vel[a.base]
+            ABx, ABy = acc[a.base]
             psi = np.arctan2(Oy - By, Ox - Bx) + a.angle
-            Dx, Dy = Bx + a.distance * np.cos(psi), By + a.distance * np.sin(psi)
-            wl = ang[link.number]
-            pos[a.name] = (Dx, Dy)
-            vel[a.name] = (VBx - wl * (Dy - By), VBy + wl * (Dx - Bx))
+            rx, ry = a.distance * np.cos(psi), a.distance * np.sin(psi)
+            wl, al = ang[link.number], angacc[link.number]
+            pos[a.name] = (Bx + rx, By + ry)
+            vel[a.name] = (VBx - wl * ry, VBy + wl * rx)
+            wsq = wl * wl
+            acc[a.name] = (ABx - al * ry - wsq * rx, ABy + al * rx - wsq * ry)
 
-    # where any dyad fails the mechanism has no configuration: NaN for everything that moves
-    if not ok.all():
-        bad = ~ok
-        moving = [n for n in pos if n not in m.ground]
-        for n in moving:
-            pos[n] = tuple(np.where(bad, np.nan, v) for v in pos[n])
-            vel[n] = tuple(np.where(bad, np.nan, v) for v in vel[n])
-        for n in cond:
-            cond[n] = np.where(bad, np.nan, cond[n])
-        fixed_speed = {crank.link.number} | {s_.number for s_ in m.slides}
-        for n in ang:
-            if n not in fixed_speed:
-                ang[n] = np.where(bad, np.nan, ang[n])
-
-    def freeze(a) -> np.ndarray:
-        return _readonly(np.array(np.broadcast_to(a, shape), dtype=np.float64))
-
-    return ChainState(
-        positions=MappingProxyType({n: (freeze(x), freeze(y)) for n, (x, y) in pos.items()}),
-        velocities=MappingProxyType({n: (freeze(x), freeze(y)) for n, (x, y) in vel.items()}),
-        angular=MappingProxyType({n: freeze(w) for n, w in sorted(ang.items())}),
-        conditions=MappingProxyType({n: freeze(c) for n, c in cond.items()}),
-        assembles=_readonly(np.array(ok)),
-        order=(crank.joint,) + tuple(d.joint for d in dyads) + tuple(p.point.name for p in points))
+    return dict(positions=pos, velocities=vel, accelerations=acc, angular=ang,
+                angular_acceleration=angacc, conditions=cond, ok=ok)
