@@ -10,17 +10,34 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping
+from typing import Mapping, Sequence
 
 from . import analytic
 from .geometry import Vec
 from .linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, TwoCircles, assembly_plan
-from .velocity import VelocityAnalysis
+from .quantities import Measured
 from .vector_loops import chain_solution
 
 AGREEMENT = 1e-9
 """Graphical and analytic agree when they differ by less than this, relative to the reference value
-(|V| of the crank tip for velocities, |omega| of the crank for angular velocities)."""
+(the largest measured value of the same kind), at well-conditioned positions."""
+
+SAFETY = 64.0
+"""Headroom over the rounding estimate when the tolerance widens near a singular position."""
+
+_ORDER = {"velocity": 2, "angular velocity": 2, "acceleration": 3, "angular acceleration": 3}
+
+
+def agreement(kind: str, condition: float) -> float:
+    """The relative tolerance for a value of ``kind`` read at a crossing of sine ``condition``.
+
+    Rounding in a crossing of trial lines at sine s grows as eps/s^2 for the velocities (the crossing
+    itself and the lines' directions), one power more for accelerations (built on the velocities);
+    so the tolerance is max(1e-9, 64 eps / s^p), which is 1e-9 wherever the position is well
+    conditioned and widens only where the construction warns that it is near a singular position."""
+    p = _ORDER.get(kind, 1)
+    c = max(condition, 1e-300)
+    return max(AGREEMENT, SAFETY * 2.220446049250313e-16 / c ** p)
 
 
 @dataclass(frozen=True)
@@ -29,19 +46,22 @@ class AnalyticSolution:
     positions: Mapping[str, Vec]
     velocities: Mapping[str, Vec]
     angular: Mapping[int, float]
+    accelerations: Mapping[str, Vec] | None = None
+    angular_acceleration: Mapping[int, float] | None = None
 
 
 @dataclass(frozen=True)
 class Comparison:
-    """One measured quantity.  ``kind`` is "velocity" (Vec values) or "angular velocity" (floats).
-    ``analytic`` is None when there is no closed form for the mechanism: then nothing is compared and
-    ``difference``, ``relative`` and ``agrees`` are None too."""
+    """One measured quantity beside its analytic value.  ``analytic`` is None when there is no analytic
+    model for the quantity: then nothing is compared and ``difference``, ``relative`` and ``agrees``
+    are None too.  ``tolerance`` is relative to ``reference`` (see :func:`agreement`)."""
 
     name: str
     kind: str
     graphical: Vec | float
     analytic: Vec | float | None
     reference: float
+    tolerance: float = AGREEMENT
 
     @property
     def difference(self) -> float | None:
@@ -59,15 +79,34 @@ class Comparison:
     @property
     def agrees(self) -> bool | None:
         r = self.relative
-        return None if r is None else r <= AGREEMENT
+        return None if r is None else r <= self.tolerance
 
 
-def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolution | None:
-    """The vector-loop solution of ``m`` at ``angle``, or None where the mechanism does not assemble.
+def compare(measured: Sequence[Measured], analytic: Mapping[str, Vec | float] | None) -> list[Comparison]:
+    """Each measured quantity beside the analytic value of the same name (None where there is none).
+
+    The reference of a value is the largest measured value of its kind (so a quantity that is nearly
+    zero is judged against the scale of the polygon it was read from); the tolerance widens with the
+    conditioning of the crossing it was read at."""
+    ref: dict[str, float] = {}
+    for q in measured:
+        ref[q.kind] = max(ref.get(q.kind, 0.0), q.magnitude)
+    out = []
+    for q in measured:
+        a = analytic.get(q.name) if analytic is not None else None
+        out.append(Comparison(q.name, q.kind, q.value, a, ref[q.kind] or 1.0, agreement(q.kind, q.condition)))
+    return out
+
+
+def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0.0, *,
+                      accelerations: bool = True) -> AnalyticSolution | None:
+    """The vector-loop solution of ``m`` at ``angle`` (crank turning at ``omega`` with angular
+    acceleration ``alpha``), or None where the mechanism does not assemble.
 
     A plain four-bar or slider-crank (one dyad hung from the crank tip and the frame, points fixed to
     any of its links) is evaluated by the closed forms of :mod:`constructions.analytic`; any other
-    crank followed by dyads by the dyad-chain vector loops of :mod:`constructions.vector_loops`."""
+    crank followed by dyads by the dyad-chain vector loops of :mod:`constructions.vector_loops`.
+    With ``accelerations`` False the acceleration fields are left None."""
     plan = assembly_plan(m)
     crank = plan[0]
     assert isinstance(crank, CrankTip)
@@ -89,44 +128,53 @@ def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolut
                                                                else (d.link,))}
             plain = all(f.point.link in solved for f in fixed)
     if not plain:
-        st = chain_solution(m, angle, omega)
+        st = chain_solution(m, angle, omega, alpha)
         if not bool(st.assembles):
             return None
         at = st.at()
         return AnalyticSolution("dyad chain",
                                 {n: Vec(*p) for n, p in at.positions.items()},
                                 {n: Vec(*v) for n, v in at.velocities.items()},
-                                dict(at.angular))
+                                dict(at.angular),
+                                {n: Vec(*a) for n, a in at.accelerations.items()} if accelerations else None,
+                                dict(at.angular_acceleration) if accelerations else None)
     d = dyads[0]
     O1 = m.ground[crank.pivot]
     j = d.joint
+    zero = Vec(0.0, 0.0)
     pos: dict[str, Vec] = dict(m.ground)
-    vel: dict[str, Vec] = {g: Vec(0.0, 0.0) for g in m.ground}
+    vel: dict[str, Vec] = {g: zero for g in m.ground}
+    acc: dict[str, Vec] = {g: zero for g in m.ground}
     ang: dict[int, float] = {crank.link.number: omega}
+    alp: dict[int, float] = {crank.link.number: alpha}
     theta: dict[int, tuple[str, float]] = {crank.link.number: (crank.pivot, angle)}
     if isinstance(d, TwoCircles):
         arms = {d.first: d.link_a, d.second: d.link_b}
         o2 = next(c for c in arms if c in m.ground)
         coupler, rocker = arms[b], arms[o2]
         sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
-        s = analytic.four_bar(angle, omega, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
+        s = analytic.four_bar(angle, omega, alpha, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
                               crank=crank.link.length, coupler=coupler.length, rocker=rocker.length,
                               branch=sign)
         model = "four-bar"
         ang[rocker.number] = float(s.omega3)
+        alp[rocker.number] = float(s.alpha3)
         theta[rocker.number] = (o2, float(s.theta3))
     else:
         coupler = d.link
-        s = analytic.slider_crank(angle, omega, crank_pivot=O1.as_tuple(), crank=crank.link.length,
+        s = analytic.slider_crank(angle, omega, alpha, crank_pivot=O1.as_tuple(), crank=crank.link.length,
                                   coupler=coupler.length, guide_point=d.slide.through.as_tuple(),
                                   guide_angle=d.slide.angle, branch=d.branch.sign)
         model = "slider-crank"
         ang[d.slide.number] = 0.0
+        alp[d.slide.number] = 0.0
     if not bool(s.assembles):
         return None
     pos[b], pos[j] = Vec(float(s.Bx), float(s.By)), Vec(float(s.Cx), float(s.Cy))
     vel[b], vel[j] = Vec(float(s.VBx), float(s.VBy)), Vec(float(s.VCx), float(s.VCy))
+    acc[b], acc[j] = Vec(float(s.ABx), float(s.ABy)), Vec(float(s.ACx), float(s.ACy))
     ang[coupler.number] = float(s.omega2)
+    alp[coupler.number] = float(s.alpha2)
     theta[coupler.number] = (b, float(s.theta2))
     for f in fixed:
         a = f.point
@@ -135,27 +183,45 @@ def analytic_solution(m: Mechanism, angle: float, omega: float) -> AnalyticSolut
         direction = th if a.base == start else th + math.pi
         base = pos[a.base]
         p = analytic.coupler_point(base.x, base.y, vel[a.base].x, vel[a.base].y, direction, ang[a.link],
-                                   distance=a.distance, angle=a.angle)
+                                   distance=a.distance, angle=a.angle, ABx=acc[a.base].x, ABy=acc[a.base].y,
+                                   alpha2=alp[a.link])
         pos[a.name] = Vec(float(p.Dx), float(p.Dy))
         vel[a.name] = Vec(float(p.VDx), float(p.VDy))
-    return AnalyticSolution(model, pos, vel, ang)
+        acc[a.name] = Vec(float(p.ADx), float(p.ADy))
+    return AnalyticSolution(model, pos, vel, ang, acc if accelerations else None, alp if accelerations else None)
 
 
-def compare(m: Mechanism, g: VelocityAnalysis, a: AnalyticSolution | None) -> list[Comparison]:
-    """Absolute velocities of the moving joints and points, relative velocities, link angular
-    velocities -- each graphical value beside the analytic one (None where there is no closed form)."""
-    v_ref = max(v.norm() for v in g.velocities.values())
-    w_ref = max(abs(w) for w in g.angular.values())
-    out: list[Comparison] = []
-    for name, v in g.velocities.items():
-        if name not in m.ground:
-            out.append(Comparison(f"V_{name}", "velocity", v, a.velocities[name] if a else None, v_ref))
-    for (j, p), v in g.relative.items():
-        if p not in m.ground:
-            out.append(Comparison(f"V_{j}{p}", "velocity", v,
-                                  a.velocities[j] - a.velocities[p] if a else None, v_ref))
-    driven_or_sliding = {m.crank} | {s.number for s in m.slides}
-    for n, w in sorted(g.angular.items()):
-        if n not in driven_or_sliding:
-            out.append(Comparison(f"omega_{n}", "angular velocity", w, a.angular[n] if a else None, w_ref))
+def analytic_values(m: Mechanism, a: AnalyticSolution | None) -> dict[str, Vec | float] | None:
+    """The analytic solution under the names the constructions measure: V_J, V_JP, omega_n (and, when
+    present, A_J, A_JP^t, A_JP^n, alpha_n for every pair of joints on a link)."""
+    if a is None:
+        return None
+    out: dict[str, Vec | float] = {}
+    for n, v in a.velocities.items():
+        out[f"V_{n}"] = v
+    names = list(a.velocities)
+    for j in names:
+        for p in names:
+            if j != p:
+                out[f"V_{j}{p}"] = a.velocities[j] - a.velocities[p]
+    for n, w in a.angular.items():
+        out[f"omega_{n}"] = w
+    if a.accelerations is not None:
+        for n, v in a.accelerations.items():
+            out[f"A_{n}"] = v
+        for n, al in (a.angular_acceleration or {}).items():
+            out[f"alpha_{n}"] = al
+        for k in m.links:
+            pts = list(k.joints) + [p.name for p in m.attached if p.link == k.number]
+            w, al = a.angular[k.number], (a.angular_acceleration or {}).get(k.number)
+            for j in pts:
+                for p in pts:
+                    if j == p or j not in a.positions or p not in a.positions:
+                        continue
+                    r = a.positions[j] - a.positions[p]
+                    name = f"A_{j}" if p in m.ground else f"A_{j}{p}"      # the notes drop a fixed pivot
+                    out[f"{name}^n"] = r * (-w * w)
+                    if al is not None:
+                        out[f"{name}^t"] = r.perp() * al
+                    out[f"A_{j}{p}"] = a.accelerations[j] - a.accelerations[p]
     return out

@@ -19,7 +19,7 @@ from .errors import CannotAssemble, DegenerateInput
 from .formatting import Formatter, si_format
 from .geometry import (Circle, Contact, Intersection, Line, Tolerance, Vec, intersect_circles,
                        intersect_line_circle)
-from .record import Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role
+from .record import Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role, StepKind, Value
 
 
 @dataclass(frozen=True, slots=True)
@@ -242,17 +242,17 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
     frame += [Guide(f"guide {s.joint}", Role.GIVEN, Diagram.SPACE, s.through, s.line.direction)
               for s in m.slides]
     rec = rec.then("Draw the frame: the fixed pivots" + (" and the slider guide" if m.slides else "")
-                   + " at the space scale.", *frame)
+                   + " at the space scale.", *frame, kind=StepKind.GIVEN)
     for step in plan:
         if isinstance(step, CrankTip):
             tip = pos[step.pivot] + Vec.polar(step.link.length, angle)
             pos[step.tip] = tip
             rec = rec.then(
-                f"Draw the crank {step.link.label} (link {step.link.number}) at "
-                f"{math.degrees(angle):.4g} deg.",
+                f"Draw the crank {step.link.label} (link {step.link.number}) at $angle.",
                 Bar(f"link {step.link.number}", Role.GIVEN, Diagram.SPACE, pos[step.pivot], tip,
                     step.link.number),
-                Point(f"joint {step.tip}", Role.LABEL, Diagram.SPACE, tip, step.tip))
+                Point(f"joint {step.tip}", Role.LABEL, Diagram.SPACE, tip, step.tip),
+                values={"angle": Value("angle", angle)}, kind=StepKind.GIVEN)
         elif isinstance(step, TwoCircles):
             ca = Circle(pos[step.first], step.link_a.length)
             cb = Circle(pos[step.second], step.link_b.length)
@@ -300,10 +300,10 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
             p = base + Vec.polar(a.distance, (other - base).angle() + a.angle)
             pos[a.name] = p
             rec = rec.then(
-                f"Mark {a.name} on link {link.number}: {a.base}{a.name} at "
-                f"{math.degrees(a.angle):.4g} deg from {link.label}.",
+                f"Mark {a.name} on link {link.number}: {a.base}{a.name} = $d at $angle from {link.label}.",
                 Plate(f"plate {a.name}", Role.GIVEN, Diagram.SPACE, (base, other, p), link.number),
-                Point(f"point {a.name}", Role.LABEL, Diagram.SPACE, p, a.name))
+                Point(f"point {a.name}", Role.LABEL, Diagram.SPACE, p, a.name),
+                values={"d": Value("length", a.distance), "angle": Value("angle", a.angle)})
     return Pose(angle, pos, rec, cond)
 
 

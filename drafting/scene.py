@@ -7,7 +7,9 @@ wrong.  The format is documented in README.md ("Scene files").
 from __future__ import annotations
 
 import math
+import os
 import re
+import stat
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -17,14 +19,19 @@ from constructions.errors import DegenerateInput
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan
 
-from .units import DEFAULT_UNITS, UnitError, check_unit, format_value, to_si
+from .unitset import KEYS as UNIT_KEYS, Units
+from . import limits
+from .textsafe import cut, cut_middle, one_line, printable
+from .units import UnitError, check_unit, to_si
 
-ANALYSES = ("position", "velocity")
-PLANNED = ("acceleration", "forces", "static forces", "dynamic forces")
+ANALYSES = ("position", "velocity", "acceleration")
+PLANNED = ("forces", "static forces", "dynamic forces", "sweep")
+KINDS = ("linkage",)
+PLANNED_KINDS = ("cam", "gear pair", "gear train")
 PAPERS = ("A4", "A3")
 ORIENTATIONS = ("landscape", "portrait")
 
-TOP_KEYS = {"drawing", "units", "frame", "link", "slider", "point", "input", "assembly", "ask"}
+TOP_KEYS = {"kind", "drawing", "units", "frame", "link", "slider", "point", "input", "assembly", "ask"}
 
 
 class SceneError(Exception):
@@ -32,25 +39,10 @@ class SceneError(Exception):
 
     def __init__(self, path: Path | str, key: str, problem: str) -> None:
         self.path, self.key, self.problem = str(path), key, problem
-        text = f"{path}: {key}: {problem}" if key else f"{path}: {problem}"
-        # one line, whatever the file contains: control characters from keys or values are escaped
-        super().__init__("".join(c if c.isprintable() else c.encode("unicode_escape").decode() for c in text))
-
-
-@dataclass(frozen=True)
-class Units:
-    length: str = DEFAULT_UNITS["length"]
-    velocity: str = DEFAULT_UNITS["velocity"]
-    angular_velocity: str = DEFAULT_UNITS["angular velocity"]
-    angle: str = DEFAULT_UNITS["angle"]
-
-    def of(self, kind: str) -> str:
-        return {"length": self.length, "velocity": self.velocity, "angular velocity": self.angular_velocity,
-                "angle": self.angle}[kind]
-
-    def format(self, kind: str, value: float) -> str:
-        """An SI value in this scene's unit of ``kind`` (the engine's Formatter signature)."""
-        return format_value(value, kind, self.of(kind))
+        # one line, whatever the file holds: control characters escaped, long names and quoted values
+        # cut (textsafe), so the file and the key always show
+        where, key = cut_middle(printable(str(path)), 120), cut(printable(key), 80)
+        super().__init__(one_line(f"{where}: {key}: {problem}" if key else f"{where}: {problem}"))
 
 
 @dataclass(frozen=True)
@@ -66,36 +58,91 @@ class Scene:
     omega: float          # crank angular velocity, rad/s CCW positive
     analyses: tuple[str, ...]
     find: tuple[str, ...] | None
+    alpha: float = 0.0    # crank angular acceleration, rad/s^2 CCW positive
+    kind: str = "linkage"
 
 
 def load_scene(path: Path | str) -> Scene:
+    """Read a scene file; the limits (:mod:`drafting.limits`) are checked before anything else."""
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise SceneError(path, "", "no such scene file") from None
-    except (OSError, UnicodeDecodeError) as e:
-        raise SceneError(path, "", f"cannot be read ({e.__class__.__name__}: {e})") from None
+    text = _read_text(path)
     return parse_scene(text, path)
+
+
+def _read_text(path: Path) -> str:
+    """The file as text: at most MAX_FILE_BYTES are ever read, and every failure is one sentence."""
+    try:
+        mode = os.stat(path).st_mode          # before opening: a FIFO would block the open itself
+        if stat.S_ISDIR(mode):
+            raise IsADirectoryError
+        if not stat.S_ISREG(mode):
+            raise SceneError(path, "", "is not a regular file")
+        with open(path, "rb") as fh:
+            raw = fh.read(limits.MAX_FILE_BYTES + 1)
+    except SceneError:
+        raise
+    except (FileNotFoundError, NotADirectoryError):
+        raise SceneError(path, "", "no such scene file") from None
+    except IsADirectoryError:
+        raise SceneError(path, "", "is a folder, not a scene file") from None
+    except PermissionError:
+        raise SceneError(path, "", "cannot be read: permission denied") from None
+    except OSError as e:
+        raise SceneError(path, "", f"cannot be read: {e.strerror or 'input/output error'}") from None
+    if len(raw) > limits.MAX_FILE_BYTES:
+        raise SceneError(path, "", f"is larger than {limits.MAX_FILE_BYTES // 1024} KiB; a scene file may "
+                                   f"be at most {limits.MAX_FILE_BYTES // 1024} KiB")
+    try:
+        return raw.decode("utf-8").removeprefix("\ufeff")
+    except UnicodeDecodeError as e:
+        line = raw.count(b"\n", 0, e.start) + 1
+        raise SceneError(path, "", f"is not UTF-8 text (byte 0x{raw[e.start]:02x} on line {line}); save "
+                                   f"it as UTF-8") from None
 
 
 def parse_scene(text: str, path: Path | str = "<scene>") -> Scene:
     path = Path(path)
     try:
+        limits.check_file_size(len(text.encode("utf-8", "surrogatepass")))
+        limits.check_text(text)               # nesting and number sizes, before the TOML reader
+    except limits.LimitError as e:
+        raise SceneError(path, e.key, e.problem) from None
+    try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
         raise SceneError(path, "", f"is not valid TOML ({e})") from None
+    except (ValueError, RecursionError, MemoryError):   # int conversion limits, nesting (also scanned)
+        raise SceneError(path, "", "is not a TOML file this reader accepts (a value too large or "
+                                   "nested too deep)") from None
     return scene_from_data(data, path)
 
 
 def scene_from_data(data: dict[str, Any], path: Path | str = "<scene>") -> Scene:
-    """A scene from already-parsed TOML data (``path`` names it in errors)."""
-    return _Reader(Path(path), data).scene()
+    """A scene from already-parsed TOML data (``path`` names it in errors); counts, nesting, string
+    lengths and magnitudes are checked first (:mod:`drafting.limits`)."""
+    path = Path(path)
+    if not isinstance(data, dict):
+        raise SceneError(path, "", "must be a TOML table of sections")
+    try:
+        limits.check_data(data)
+    except limits.LimitError as e:
+        raise SceneError(path, e.key, e.problem) from None
+    reader = _Reader(path, data)
+    scene = reader.scene()
+    bad = limits.length_ratio_problem(reader.lengths)
+    if bad:
+        small, large, lo, hi = bad
+        ratio = f"{limits.LENGTH_RATIO:.0e}".replace("e+0", "e").replace("e+", "e")
+        raise SceneError(path, small, f"{scene.units.format('length', lo)} is too small beside "
+                                      f"{scene.units.format('length', hi)} at {large}: a scene's non-zero "
+                                      f"lengths must lie within a factor {ratio} of each other (write 0 for zero)")
+    return scene
 
 
 class _Reader:
     def __init__(self, path: Path, data: dict[str, Any]) -> None:
         self.path, self.data = path, data
+        self.lengths: list[tuple[str, float]] = []     # (key, SI) of every length read: limits
 
     # -- helpers ---------------------------------------------------------------------------------
     def fail(self, key: str, problem: str) -> SceneError:
@@ -128,9 +175,12 @@ class _Reader:
 
     def quantity(self, key: str, value: Any, kind: str, units: Units) -> float:
         try:
-            return to_si(value, kind, units.of(kind))
+            si = to_si(value, kind, units.of(kind))
         except UnitError as e:
             raise self.fail(key, str(e)) from None
+        if kind == "length":
+            self.lengths.append((key, si))
+        return si
 
     def point(self, key: str, value: Any, units: Units) -> Vec:
         if not (isinstance(value, list) and len(value) == 2):
@@ -160,6 +210,12 @@ class _Reader:
         unknown = sorted(set(self.data) - TOP_KEYS)
         if unknown:
             raise self.fail(unknown[0], f"unknown key; a scene has {', '.join(sorted(TOP_KEYS))}")
+        kind = self.data.get("kind", "linkage")
+        if kind in PLANNED_KINDS:
+            raise self.fail("kind", f"{kind!r} scenes are not available yet; this version reads "
+                                    f"{', '.join(KINDS)} scenes")
+        if kind not in KINDS:
+            raise self.fail("kind", f"{kind!r} is not a scene kind; choose from {', '.join(KINDS)}")
         drawing = self.table("drawing", {"title", "number", "paper", "orientation"})
         title = self.text("drawing.title", drawing.get("title", self.path.stem))
         number = self.text("drawing.number", drawing.get("number", "TOM-000"))
@@ -170,7 +226,7 @@ class _Reader:
         if orientation not in ORIENTATIONS:
             raise self.fail("drawing.orientation", f"{orientation!r} must be landscape or portrait")
         units = self.units()
-        mechanism, angle, omega = self.mechanism(units)
+        mechanism, angle, omega, alpha = self.mechanism(units)
         ask = self.table("ask", {"analyses", "find"})
         analyses = ask.get("analyses", ["velocity"])
         if not isinstance(analyses, list) or not all(isinstance(a, str) for a in analyses) or not analyses:
@@ -185,13 +241,12 @@ class _Reader:
         if find is not None and (not isinstance(find, list) or not all(isinstance(f, str) for f in find)):
             raise self.fail("ask.find", "must be a list of quantities, e.g. [\"V_C\", \"omega_2\"]")
         return Scene(self.path, title, number, paper, orientation, units, mechanism, angle, omega,
-                     tuple(dict.fromkeys(analyses)), tuple(find) if find is not None else None)
+                     tuple(dict.fromkeys(analyses)), tuple(find) if find is not None else None, alpha, kind)
 
     def units(self) -> Units:
-        t = self.table("units", {"length", "velocity", "angular_velocity", "angle"})
+        t = self.table("units", set(UNIT_KEYS))
         out = {}
-        for key, kind in (("length", "length"), ("velocity", "velocity"),
-                          ("angular_velocity", "angular velocity"), ("angle", "angle")):
+        for key, kind in UNIT_KEYS.items():
             if key in t:
                 try:
                     out[key] = check_unit(self.text(f"units.{key}", t[key]), kind)
@@ -199,7 +254,7 @@ class _Reader:
                     raise self.fail(f"units.{key}", str(e)) from None
         return Units(**out)
 
-    def mechanism(self, units: Units) -> tuple[Mechanism, float, float]:
+    def mechanism(self, units: Units) -> tuple[Mechanism, float, float, float]:
         frame = self.named_table("frame")
         if not frame:
             raise self.fail("frame", "is missing: name the fixed pivots, e.g. O1 = [0, 0]")
@@ -236,6 +291,8 @@ class _Reader:
             j = self.name(f"{k}.joint", t["joint"])
             if j not in joints:
                 raise self.fail(f"{k}.joint", f"joint {j} is on no link")
+            if any(s.joint == j for s in slides):      # one guide per joint (the guide is named after it)
+                raise self.fail(f"{k}.joint", f"joint {j} already slides on the guide of another slider")
             slides.append(Slide(n, j, self.point(f"{k}.through", t["through"], units),
                                 self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)))
 
@@ -247,6 +304,8 @@ class _Reader:
             nm = self.name(f"{k}.name", t["name"])
             if nm in joints or nm in ground:
                 raise self.fail(f"{k}.name", f"{nm} is already a joint")
+            if any(a.name == nm for a in attached):
+                raise self.fail(f"{k}.name", f"point {nm} is defined twice")
             ln = self.number(f"{k}.link", t["link"])
             link = next((x for x in links if x.number == ln), None)
             if link is None:
@@ -259,7 +318,7 @@ class _Reader:
                 raise self.fail(f"{k}.distance", "must be positive")
             attached.append(Attached(nm, ln, base, dist, self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)))
 
-        inp = self.table("input", {"link", "angle", "omega", "tip_speed", "sense"}, {"link", "angle"})
+        inp = self.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha"}, {"link", "angle"})
         crank_no = self.number("input.link", inp["link"])
         crank = next((x for x in links if x.number == crank_no), None)
         if crank is None:
@@ -284,6 +343,7 @@ class _Reader:
             omega = abs(omega) if sense == "ccw" else -abs(omega)
         if omega == 0 or not math.isfinite(omega):
             raise self.fail("input", "the crank must turn: omega or tip_speed must not be zero")
+        alpha = self.quantity("input.alpha", inp.get("alpha", 0), "angular acceleration", units)
 
         assembly = self.named_table("assembly")
         branches = {self.name(f"assembly.{j}", j): self.branch(f"assembly.{j}", v) for j, v in assembly.items()}
@@ -296,7 +356,7 @@ class _Reader:
         except DegenerateInput as e:
             key = "assembly" if "branch" in str(e) or "assemblies" in str(e) else "link"
             raise self.fail(key, str(e)) from None
-        return m, angle, omega
+        return m, angle, omega, alpha
 
     def branch(self, key: str, value: Any) -> Branch:
         v = self.text(key, value)

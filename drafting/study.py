@@ -1,7 +1,9 @@
-"""A lazy study of one scene: only the analyses the scene asks for are ever built.
+"""A lazy study of one scene: only the analyses the scene asks for (and what they need) are ever built.
 
-``Study.ran`` lists what has been computed so far ("position", "velocity", "analytic check"); the JSON
-output carries it, so a test can see that a velocity-only scene built nothing for accelerations.
+The analyses come from the scene's family (:mod:`drafting.families`) as a dependency chain: asking for
+"acceleration" runs "position" and "velocity" first; asking for "velocity" builds nothing for
+accelerations.  ``Study.ran`` lists what has been computed so far (e.g. "position", "velocity",
+"analytic check"); the JSON output carries it, so a test can see what a scene cost.
 """
 
 from __future__ import annotations
@@ -10,74 +12,96 @@ import math
 from functools import cached_property
 from typing import Any
 
-from constructions.check import AnalyticSolution, Comparison, analytic_solution, compare
+from constructions.check import Comparison, compare
 from constructions.geometry import Vec
-from constructions.linkage import Pose, assembly_plan, locate
+from constructions.quantities import key as quantity_key
 from constructions.record import Construction
-from constructions.velocity import VelocityAnalysis, velocity_polygon
 
+from .families import Family, family
 from .scene import Scene
-from .units import format_value, from_si, unit_symbol
-
-
-POLYGON_EXTENT_MM = {"A4": 110.0, "A3": 160.0}
-"""The largest a vector polygon is drawn on each paper; the 1-2-5 scale is the finest that keeps it so."""
 
 
 class Study:
     def __init__(self, scene: Scene) -> None:
         self.scene = scene
+        self.family: Family = family(scene.kind)
         self.ran: list[str] = []
+        self._results: dict[str, Any] = {}
 
-    def _mark(self, name: str) -> None:
-        if name not in self.ran:
-            self.ran.append(name)
-
+    # -- the registry ---------------------------------------------------------------------------------
     @cached_property
-    def pose(self) -> Pose:
-        self._mark("position")
-        m = self.scene.mechanism
-        return locate(m, self.scene.angle, assembly_plan(m), fmt=self.scene.units.format)
+    def needed(self) -> tuple[str, ...]:
+        """The analyses the scene asks for and everything they require, in dependency order."""
+        out: list[str] = []
 
-    @cached_property
-    def velocity(self) -> VelocityAnalysis | None:
-        if "velocity" not in self.scene.analyses:
-            return None
-        pose = self.pose
-        self._mark("velocity")
-        return velocity_polygon(self.scene.mechanism, pose, self.scene.omega, fmt=self.scene.units.format,
-                                max_extent_mm=POLYGON_EXTENT_MM[self.scene.paper])
+        def visit(name: str) -> None:
+            for r in self.family.analyses[name].requires:
+                visit(r)
+            if name not in out:
+                out.append(name)
+        for a in self.scene.analyses:
+            visit(a)
+        return tuple(out)
 
-    @cached_property
-    def analytic(self) -> AnalyticSolution | None:
-        if self.velocity is None:
-            return None
-        self._mark("analytic check")
-        return analytic_solution(self.scene.mechanism, self.scene.angle, self.scene.omega)
+    def asked(self, name: str) -> bool:
+        return name in self.needed
 
-    @cached_property
-    def comparisons(self) -> list[Comparison]:
-        if self.velocity is None:
-            return []
-        rows = compare(self.scene.mechanism, self.velocity, self.analytic)
-        if self.scene.find is not None:
-            wanted = {_key(f) for f in self.scene.find}
-            rows = [r for r in rows if _key(r.name) in wanted]
-        return rows
+    def get(self, name: str) -> Any:
+        """The result of analysis ``name``, computed (with what it requires) on first use."""
+        if name in self._results:
+            return self._results[name]
+        a = self.family.analyses[name]
+        for r in a.requires:
+            self.get(r)
+        result = a.run(self)
+        self._results[name] = result
+        label = a.label or a.name
+        if label not in self.ran:
+            self.ran.append(label)
+        return result
 
+    def result(self, name: str) -> Any:
+        """The result of ``name`` if the scene calls for it, else None (nothing is computed)."""
+        return self.get(name) if self.asked(name) else None
+
+    def __getattr__(self, name: str) -> Any:
+        # study.position / study.velocity / study.acceleration ...: the family's analyses by name
+        fam = self.__dict__.get("family")
+        if fam is not None and name in fam.analyses:
+            return self.result(name)
+        raise AttributeError(name)
+
+    def run(self) -> "Study":
+        """Run every analysis the scene calls for (errors propagate as ConstructionError)."""
+        for name in self.needed:
+            self.get(name)
+        self.comparisons
+        return self
+
+    # -- what every family offers -----------------------------------------------------------------------
     @property
     def construction(self) -> Construction:
-        c = self.pose.construction
-        if self.velocity is not None:
-            c = c + self.velocity.construction
-        return c
+        return self.family.construction(self)
 
     @property
     def warnings(self) -> tuple[str, ...]:
-        w = list(self.velocity.warnings) if self.velocity is not None else []
-        if self.velocity is not None and self.analytic is None:
-            w.append("No analytic check: the vector-loop solution does not assemble at this position.")
-        return tuple(w)
+        return self.family.warnings(self)
+
+    @cached_property
+    def comparisons(self) -> list[Comparison]:
+        measured = self.family.measured(self)
+        if not measured:
+            return []
+        rows = compare(measured, self.family.analytic(self))
+        if self.scene.find is not None:
+            wanted = {quantity_key(f) for f in self.scene.find}
+            rows = [r for r in rows if quantity_key(r.name) in wanted]
+        return rows
+
+    @property
+    def model(self) -> str | None:
+        """The analytic model the results were checked against, or None."""
+        return self.family.model_name(self)
 
     def disagreements(self) -> list[Comparison]:
         return [c for c in self.comparisons if c.agrees is False]
@@ -88,58 +112,43 @@ class Study:
         if value is None:
             return "n/a"
         if isinstance(value, Vec):
-            ang = _direction_deg(value)
-            return f"{format_value(value.norm(), 'velocity', u.velocity)} at {ang:.1f}\u00b0"
+            return f"{u.format(c.kind, value.norm())} at {direction_deg(value):.1f}\u00b0"
         sense = "CCW" if value > 0 else "CW" if value < 0 else ""
-        return f"{format_value(abs(value), 'angular velocity', u.angular_velocity)} {sense}".strip()
+        return f"{u.format(c.kind, abs(value))} {sense}".strip()
 
     def difference_text(self, c: Comparison) -> str:
         if c.difference is None:
             return "n/a"
-        unit = self.scene.units.velocity if c.kind == "velocity" else self.scene.units.angular_velocity
-        return f"{from_si(c.difference, c.kind, unit):.1e} {unit_symbol(unit)}"
+        return f"{self.scene.units.convert(c.kind, c.difference):.1e} {self.scene.units.symbol(c.kind)}"
 
     def table(self) -> list[tuple[str, str, str, str]]:
-        return [(c.name.replace("omega_", "\u03c9_"), self.value_text(c, c.graphical), self.value_text(c, c.analytic), self.difference_text(c))
-                for c in self.comparisons]
+        return [(display_name(c.name), self.value_text(c, c.graphical), self.value_text(c, c.analytic),
+                 self.difference_text(c)) for c in self.comparisons]
 
     def to_json(self) -> dict[str, Any]:
         """Machine-readable results in the scene's units, and the list of analyses that ran."""
         u = self.scene.units
-        out: dict[str, Any] = {"scene": str(self.scene.path), "title": self.scene.title,
-                               "units": {"length": u.length, "velocity": u.velocity,
-                                         "angular_velocity": u.angular_velocity, "angle": u.angle}}
-        pose = self.pose
-        out["position"] = {n: [from_si(p.x, "length", u.length), from_si(p.y, "length", u.length)]
-                           for n, p in pose.positions.items()}
-        v = self.velocity
-        if v is not None:
-            out["velocity"] = {f"V_{n}": _vec_json(p, u.velocity) for n, p in v.velocities.items()
-                               if n not in self.scene.mechanism.ground}
-            out["relative_velocity"] = {f"V_{j}{p}": _vec_json(w, u.velocity) for (j, p), w in v.relative.items()}
-            out["angular_velocity"] = {
-                f"omega_{n}": {"value": from_si(w, "angular velocity", u.angular_velocity),
-                               "sense": "ccw" if w > 0 else "cw" if w < 0 else "none"}
-                for n, w in sorted(v.angular.items())}
-            out["velocity_scale"] = {"per_mm": from_si(v.scale, "velocity", u.velocity), "unit": u.velocity}
+        out: dict[str, Any] = {"scene": str(self.scene.path), "kind": self.scene.kind, "title": self.scene.title,
+                               "units": u.as_dict()}
+        out.update(self.family.json(self))
+        if self.comparisons:
             out["check"] = {
-                "model": self.analytic.model if self.analytic else None,
-                "tolerance_relative": 1e-9,
-                "agrees": not self.disagreements() if self.analytic else None,
-                "rows": [{"quantity": c.name, "relative_difference": c.relative, "agrees": c.agrees}
-                         for c in self.comparisons]}
+                "model": self.model,
+                "tolerance_relative": min(c.tolerance for c in self.comparisons),
+                "agrees": (not self.disagreements()) if self.model else None,
+                "rows": [{"quantity": c.name, "relative_difference": c.relative, "tolerance": c.tolerance,
+                          "agrees": c.agrees} for c in self.comparisons]}
         out["warnings"] = list(self.warnings)
         out["analyses"] = list(self.ran)
         return out
 
 
-def _vec_json(v: Vec, unit: str) -> dict[str, float]:
-    return {"x": from_si(v.x, "velocity", unit), "y": from_si(v.y, "velocity", unit),
-            "magnitude": from_si(v.norm(), "velocity", unit),
-            "angle_deg": _direction_deg(v)}
+def display_name(name: str) -> str:
+    """omega_2 -> ω_2, alpha_2 -> α_2 (the rest of the name is the notes' markup already)."""
+    return name.replace("omega_", "\u03c9_").replace("alpha_", "\u03b1_")
 
 
-def _direction_deg(v: Vec) -> float:
+def direction_deg(v: Vec) -> float:
     """Direction CCW from +x in [0, 360), rounded so that 180 never prints as -180 or 360."""
     if v.norm() == 0:
         return 0.0
@@ -147,5 +156,10 @@ def _direction_deg(v: Vec) -> float:
     return 0.0 if d >= 360.0 else d
 
 
-def _key(name: str) -> str:
-    return name.replace("_", "").replace(" ", "").lower()
+def vec_json(v: Vec, kind: str, units) -> dict[str, float]:
+    return {"x": units.convert(kind, v.x), "y": units.convert(kind, v.y),
+            "magnitude": units.convert(kind, v.norm()), "angle_deg": direction_deg(v)}
+
+
+def rate_json(w: float, kind: str, units) -> dict[str, Any]:
+    return {"value": units.convert(kind, w), "sense": "ccw" if w > 0 else "cw" if w < 0 else "none"}

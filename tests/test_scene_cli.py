@@ -70,7 +70,7 @@ BAD = [
     ('C = "ahead of B"', 'C = "left of B->O1"', "assembly", "relative to the joints"),
     ('[assembly]\nC = "ahead of B"', '', "assembly", "choose one"),
     ('joint = "C"', 'joint = "E"', "slider[1].joint", "on no link"),
-    ('analyses = ["velocity"]', 'analyses = ["acceleration"]', "ask.analyses", "not available yet"),
+    ('analyses = ["velocity"]', 'analyses = ["forces"]', "ask.analyses", "not available yet"),
     ('paper = "A4"', 'paper = "Letter"', "drawing.paper", "not a paper size"),
 ]
 
@@ -124,7 +124,7 @@ def test_singular_position_is_reported(tmp_path, capsys):
         .replace("through = [0, 0]", "through = [0, 10]")
     p = write(tmp_path, text)
     code, out, err = run(["solve", str(p)], capsys)
-    assert code == 2 and "limit position" in err and "crank angle 90 deg" in err
+    assert code == 3 and "limit position" in err and "crank angle 90 deg" in err     # 3: singular
 
 
 # -- the lazy study ---------------------------------------------------------------------------------------
@@ -134,7 +134,7 @@ def test_velocity_scene_builds_nothing_else(capsys):
     assert code == 0
     data = json.loads(out)
     assert data["analyses"] == ["position", "velocity", "analytic check"]
-    assert "acceleration" not in out and "force" not in out
+    assert "acceleration" not in data and "angular_acceleration" not in data and "force" not in out
     assert data["velocity"]["V_C"]["magnitude"] == pytest.approx(568.536, abs=1e-3)
     assert data["angular_velocity"]["omega_2"]["sense"] == "cw"
     assert data["check"]["agrees"] is True
@@ -189,14 +189,14 @@ def test_notes_example_3_toggle_linkage():
     v = study.velocity
     assert v.velocities["D"].x == pytest.approx(-4.0, rel=0.02) and abs(v.velocities["D"].y) < 1e-12
     assert v.angular[2] > 0 and v.angular[3] > 0 and v.angular[4] < 0
-    assert study.analytic.model == "dyad chain" and not study.disagreements()
+    assert study.model == "dyad chain" and not study.disagreements()
 
 
 def test_notes_example_4_velocity_image():
     study = Study(load_scene(GALLERY / "notes-velocity-example-4.toml"))
     v = study.velocity
     # the image bcd is similar to BCD: |bd| / |BD| = |bc| / |BC| = |omega_2|
-    P = study.pose.positions
+    P = study.position.positions
     bd = (v.velocities["D"] - v.velocities["B"]).norm() / (P["D"] - P["B"]).norm()
     bc = (v.velocities["C"] - v.velocities["B"]).norm() / (P["C"] - P["B"]).norm()
     assert bd == pytest.approx(bc, rel=1e-12) == pytest.approx(abs(v.angular[2]), rel=1e-12)
@@ -280,18 +280,18 @@ def test_a3_override(tmp_path, capsys):
 def test_check_exits_1_when_graphical_and_analytic_disagree(monkeypatch, capsys):
     """Perturb the analytic answer by 1e-6 relative: beyond the 1e-9 agreement, so `check` fails."""
     import constructions.check as check
-    import drafting.study as study_module
+    import drafting.linkage_family as linkage_family
     from constructions.geometry import Vec
 
     real = check.analytic_solution
 
-    def perturbed(m, angle, omega):
-        a = real(m, angle, omega)
+    def perturbed(m, angle, omega, *args, **kwargs):
+        a = real(m, angle, omega, *args, **kwargs)
         vel = dict(a.velocities)
         vel["C"] = vel["C"] + Vec(1e-6 * vel["C"].norm(), 0.0)
         return check.AnalyticSolution(a.model, a.positions, vel, a.angular)
 
-    monkeypatch.setattr(study_module, "analytic_solution", perturbed)
+    monkeypatch.setattr(linkage_family, "analytic_solution", perturbed)
     code, out, err = run(["check", str(builtin_example())], capsys)
     assert code == 1 and "DISAGREE" in out
 

@@ -1,0 +1,142 @@
+"""What every vector polygon shares: the pole and image labels, the thresholds that name a singular
+position, the words for a sense of rotation, the 1-2-5 scale series, and the naming of singular
+positions (toggle, change point, limit position, dead centre) from the mechanism and its pose.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import DegenerateInput, IndeterminatePosition
+from ..geometry import Line, Vec
+from ..linkage import CrankTip, Mechanism, Pose, TwoCircles, describe_angle
+
+SINGULAR_SINE = 1e-4
+"""Trial lines crossing at a sine below this mark a singular position (toggle, limit, change point).
+The closest crossing a float figure can tell from a tangency (gap 1e-9 L) has a sine near 4.5e-5; the
+conditioning of the measured values grows like 1/sine^2, so above 1e-4 they keep at least 7 digits."""
+
+WARN_SINE = 1e-2
+"""Below this the values are returned with a warning and an error estimate."""
+
+DEAD_CENTRE_SINE = 1e-9
+"""Crank and driven link closer to a line than this (sine of the angle between them) are at dead centre."""
+
+ROUNDING = 4.0 * 2.2e-16
+"""Relative rounding of one crossing of well-conditioned trial lines; it grows as 1/sine^2."""
+
+SCALE_SERIES = (1.0, 2.0, 5.0)
+
+
+def rounding_estimate(condition: float) -> float:
+    """Rough relative error of values read off a crossing at sine ``condition``."""
+    return ROUNDING / max(condition, 1e-300) ** 2
+
+
+def vector_scale(known: float, extent: float, *, known_mm: tuple[float, float] = (50.0, 100.0),
+                 max_extent_mm: float = 110.0) -> float:
+    """The 1-2-5 scale (units per paper mm) for a vector polygon.
+
+    The finest scale at which the known vector is at most ``known_mm[1]`` long and the whole polygon
+    (``extent``, its larger bounding-box side) fits in ``max_extent_mm``.  The 1-2-5 series steps by up
+    to 2.5x, so with a well-proportioned polygon the known vector comes out 40..100 mm long (50..100
+    unless its magnitude is 2.0..2.5 times a power of ten); a student's ruler reads 1-2-5 scales without
+    arithmetic.  The drawing normally chooses the scale from the room it has; this is for a caller that
+    fixes it.
+    """
+    if not (known > 0 and math.isfinite(known) and math.isfinite(extent)):
+        raise DegenerateInput("the known vector must be finite and non-zero to choose a scale")
+    need = max(known / known_mm[1], extent / max_extent_mm)
+    decade = 10.0 ** math.floor(math.log10(need))
+    for m in SCALE_SERIES + (10.0,):
+        s = m * decade
+        if s >= need * (1 - 1e-12):
+            return s
+    raise AssertionError("unreachable")
+
+
+def image_name(joint: str, prime: str = "") -> str:
+    """The notes' lower-case label of a joint's image point: B -> b (velocity), b' (acceleration with
+    ``prime="'"``); O2 -> o2."""
+    return joint[0].lower() + joint[1:] + prime
+
+
+def sense(rate: float) -> str:
+    """Words for the sense of an angular velocity or acceleration (CCW positive)."""
+    return "counter-clockwise" if rate > 0 else "clockwise" if rate < 0 else "zero"
+
+
+def sense_short(rate: float) -> str:
+    return "CCW" if rate > 0 else "CW" if rate < 0 else ""
+
+
+def singular_position(m: Mechanism, step, pose: Pose, condition: float, polygon: str) -> IndeterminatePosition:
+    """The error for trial lines that do not cross: the position named (toggle, change point, limit
+    position) with the crank angle, the links in line and the transmission angle."""
+    j = step.joint
+    where = describe_angle(pose.angle)
+    if isinstance(step, TwoCircles):
+        a, b = step.link_a, step.link_b
+        kind = "change point" if change_point(m, pose) else "toggle"
+        mu = transmission_angle(pose, step)
+        reason = (f"{kind}: links {a.number} ({a.label}) and {b.number} ({b.label}) are in line "
+                  f"(transmission angle {mu:.3g} deg), so the trial lines for {j} are parallel "
+                  f"(sine {condition:.1e}) and the {polygon} cannot close")
+    else:
+        kind = "limit position"
+        reason = (f"limit position (lock): link {step.link.number} ({step.link.label}) is square to the guide "
+                  f"of {j}, so the trial lines for {j} are parallel (sine {condition:.1e}) and the {polygon} "
+                  f"cannot close")
+    return IndeterminatePosition(reason, position=where, kind=kind, condition=condition)
+
+
+def transmission_angle(pose: Pose, step: TwoCircles) -> float:
+    """The angle between the two links meeting at the joint a dyad finds, in degrees (0..180)."""
+    p = pose.positions
+    u = p[step.first] - p[step.joint]
+    v = p[step.second] - p[step.joint]
+    return math.degrees(abs(math.atan2(u.cross(v), u.dot(v))))
+
+
+def near_singular_warning(j: str, condition: float, what: str) -> str:
+    return (f"Near a singular position at {j} ({what}): the trial lines cross at "
+            f"{math.degrees(math.asin(min(condition, 1.0))):.3g} deg; values are sensitive to the "
+            f"drawing (rounding error about {rounding_estimate(condition):.1e} relative).")
+
+
+def dead_centre(pos, crank: CrankTip, arms, j: str) -> str | None:
+    """At a dead centre the crank and the link it drives are in line: for a driving crank the polygon
+    still closes (the driven joint is momentarily at rest along that link), but the position is
+    singular for motion driven from the output, so the reader is told."""
+    for link, centre in arms:
+        if centre == crank.tip:
+            a = pos[crank.tip] - pos[crank.pivot]
+            b = pos[j] - pos[centre]
+            if abs(a.unit().cross(b.unit())) < DEAD_CENTRE_SINE:
+                return (f"Dead centre: crank {crank.pivot}{crank.tip} and link {link.number} "
+                        f"({link.label}) are in line; driven by the crank the polygon closes, but the "
+                        f"output could not drive the crank from here.")
+    return None
+
+
+def change_point(m: Mechanism, pose: Pose) -> bool:
+    """All joints of the loop in one line (the branches of a four-bar meet); points merely fixed to a
+    link do not count."""
+    joints = set(m.ground) | {j for k in m.links for j in k.joints}
+    pts = [p for n, p in pose.positions.items() if n in joints]
+    far = max(pts, key=lambda p: p.distance_to(pts[0]))
+    if far == pts[0]:
+        return True
+    axis = Line.through(pts[0], far)
+    return all(abs(axis.signed_distance(p)) <= 1e-6 * m.size for p in pts)
+
+
+def image_point(P: Vec, Q: Vec, D: Vec, ip: Vec, iq: Vec) -> tuple[Vec, float, float]:
+    """The image d of a point D of a rigid link PQ, given the images p and q: the triangle pqd is similar
+    to PQD (same complex ratio (D - P)/(Q - P)), exact for velocity and acceleration images alike.
+    Returns d and (t, u), D's coordinates along PQ and square to it in units of |PQ|."""
+    pq, pd = Q - P, D - P
+    t = pd.dot(pq) / pq.dot(pq)
+    u = pq.cross(pd) / pq.dot(pq)
+    side = iq - ip
+    return ip + side * t + side.perp() * u, t, u

@@ -1,0 +1,266 @@
+"""The velocity polygon, drawn step by step as in the notes ("Graphical velocity analysis").
+
+From the pole O_v the known velocity of the crank tip is drawn to scale; every joint found by a dyad
+gives one vector equation, V_C = V_B + V_CB, solved by two trial lines of known direction whose crossing
+is the image point c.  Velocities of points fixed to a link come from its velocity image.  Every value
+returned is read off the figure: absolute velocities are the vectors O_v->j, relative velocities the
+sides of the polygon, and angular velocities the relative velocities divided by the link lengths.
+
+The scale is the drawing's choice (it knows the room it has): the record carries a scale bar whose
+value is filled in by the drawing, unless the caller fixes ``scale``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping
+
+from ..errors import DegenerateInput
+from ..geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
+from ..linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, assembly_plan
+from ..quantities import Measured
+from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
+                      TrialLine, Value, VectorEquation)
+from .common import (SINGULAR_SINE, WARN_SINE, dead_centre, image_name, image_point, near_singular_warning,
+                     rounding_estimate, sense, singular_position)
+
+
+@dataclass(frozen=True)
+class VelocityAnalysis:
+    """The velocity polygon at one position and the values measured off it (SI, CCW positive).
+
+    ``velocities`` maps every joint and point to its absolute velocity (fixed pivots: zero);
+    ``relative[(J, P)]`` is V_JP, the side p->j of the polygon; ``angular`` maps link numbers to their
+    angular velocity (slider blocks translate: 0); ``conditions`` maps each joint found by trial lines
+    to the sine of the angle at which they crossed; ``warnings`` says what the reader must know;
+    ``scale`` is the scale fixed by the caller (SI units per paper mm) or None (the drawing chooses).
+    """
+
+    construction: Construction
+    pose: Pose
+    velocities: Mapping[str, Vec]
+    relative: Mapping[tuple[str, str], Vec]
+    angular: Mapping[int, float]
+    conditions: Mapping[str, float]
+    scale: float | None
+    warnings: tuple[str, ...]
+    omega: float = 0.0
+
+    @property
+    def worst_condition(self) -> float:
+        return min(self.conditions.values(), default=1.0)
+
+    @property
+    def relative_error_estimate(self) -> float:
+        """Rough relative error of the measured values from rounding, growing as 1/sine^2 near
+        singular positions."""
+        return rounding_estimate(self.worst_condition)
+
+    def measured(self, m: Mechanism) -> list[Measured]:
+        """Absolute velocities of the moving joints and points, relative velocities between moving
+        joints, and the angular velocities of the links that are neither the crank nor a slider block."""
+        c = self.worst_condition
+        out = [Measured(f"V_{n}", "velocity", v, c) for n, v in self.velocities.items() if n not in m.ground]
+        out += [Measured(f"V_{j}{p}", "velocity", v, c) for (j, p), v in self.relative.items()
+                if p not in m.ground]
+        skip = {m.crank} | {s.number for s in m.slides}
+        out += [Measured(f"omega_{n}", "angular velocity", w, c) for n, w in sorted(self.angular.items())
+                if n not in skip]
+        return out
+
+
+def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, scale: float | None = None) -> VelocityAnalysis:
+    """Draw the velocity polygon of ``m`` at ``pose`` with crank angular velocity ``omega`` (rad/s,
+    CCW positive).  ``scale`` (SI units per paper mm) fixes the scale; by default the drawing chooses."""
+    plan = assembly_plan(m)
+    if omega == 0.0 or not math.isfinite(omega):
+        raise DegenerateInput(f"the crank speed must be finite and non-zero, not {omega!r} rad/s")
+    crank = plan[0]
+    assert isinstance(crank, CrankTip)
+    poly = _Polygon(m, pose, crank, omega)
+    for step in plan[1:]:
+        if isinstance(step, (TwoCircles, CircleAndGuide)):
+            poly.dyad(step)
+        elif isinstance(step, FixedToLink):
+            poly.image(step)
+    return poly.analysis(scale)
+
+
+def _v(value: float) -> Value:
+    return Value("velocity", value)
+
+
+def _w(value: float) -> Value:
+    return Value("angular velocity", abs(value))
+
+
+class _Polygon:
+    """The polygon while it is drawn: image points found so far, measured values, pending steps."""
+
+    def __init__(self, m: Mechanism, pose: Pose, crank: CrankTip, omega: float) -> None:
+        self.m, self.pose, self.crank, self.omega = m, pose, crank, omega
+        pos = pose.positions
+        self.vel: dict[str, Vec] = {g: ORIGIN for g in m.ground}
+        self.rel: dict[tuple[str, str], Vec] = {}
+        self.ang: dict[int, float] = {s.number: 0.0 for s in m.slides}
+        self.cond: dict[str, float] = {}
+        self.warnings: list[str] = []
+        self.equations: list[tuple[str, VectorEquation]] = []
+        self.steps: list[tuple] = []          # (words, entities, equation, values, kind)
+        # the known vector: V_B = omega1 k x O1B, drawn from the pole
+        v_tip = (pos[crank.tip] - pos[crank.pivot]).perp() * omega
+        self.v_known = v_tip
+        self.vel[crank.tip] = v_tip
+        self.ang[crank.link.number] = omega
+        self.tol = Tolerance(v_tip.norm(), sine=SINGULAR_SINE)
+        n, tip, name = crank.link.number, crank.tip, f"{crank.pivot}{crank.tip}"
+        self.steps.append((
+            f"Draw V_{tip} = \u03c9_{n} \u00d7 {name} from O_v, perpendicular to {name} "
+            f"($v, \u03c9_{n} {sense(omega)}); its tip is {image_name(tip)}.",
+            (Arrow(f"V_{tip}", Role.KNOWN, Diagram.VELOCITY, ORIGIN, v_tip, f"V_{tip}"),
+             Point(f"image {tip}", Role.LABEL, Diagram.VELOCITY, v_tip, image_name(tip))),
+            None, {"v": _v(v_tip.norm())}, StepKind.CONSTRUCTION))
+
+    def _what(self, j: str, centre: str) -> str:
+        """The velocity a trial line carries: absolute V_J from a fixed centre, else relative V_JP."""
+        return f"V_{j}" if centre in self.m.ground else f"V_{j}{centre}"
+
+    def dyad(self, step: TwoCircles | CircleAndGuide) -> None:
+        """One vector equation, V_C = V_B + V_CB: two trial lines and their crossing c."""
+        m, pos = self.m, self.pose.positions
+        j = step.joint
+        guided = isinstance(step, CircleAndGuide)
+        arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
+        eq = _equation(arms, j, m, guided)
+        self.equations.append((_equation_caption(eq, arms, j, m, step), eq))
+        trials: list[Line] = []
+        for link, centre in arms:
+            pj = pos[j] - pos[centre]
+            trials.append(Line(self.vel[centre], pj.perp()))
+            at = "O_v" if centre in m.ground else image_name(centre)
+            what = self._what(j, centre)
+            self.steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
+                               (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, self.vel[centre],
+                                          pj.perp(), f"\u22a5 {centre}{j}"),), eq, {}, StepKind.CONSTRUCTION))
+        if guided:
+            g = step.slide.line.direction
+            trials.append(Line(ORIGIN, g))
+            self.steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
+                               (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
+                                          "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
+        hit = intersect_lines(trials[0], trials[1], self.tol)
+        if hit.contact is not Contact.CROSSING:
+            raise singular_position(m, step, self.pose, hit.condition, "velocity polygon")
+        vj = hit.points[0]
+        self.vel[j] = vj
+        self.cond[j] = hit.condition
+        if hit.condition < WARN_SINE:
+            self.warnings.append(near_singular_warning(j, hit.condition, "velocity polygon"))
+        dead = dead_centre(pos, self.crank, arms, j)
+        if dead:
+            self.warnings.append(dead)
+        # measure: the sides of the polygon, and the angular velocities they give
+        measured = []
+        for link, centre in arms:
+            v_rel = vj - self.vel[centre]
+            self.rel[(j, centre)] = v_rel
+            r = pos[j] - pos[centre]
+            self.ang[link.number] = r.cross(v_rel) / r.dot(r)
+            what = self._what(j, centre)
+            measured.append(Arrow(f"result {what}", Role.RESULT, Diagram.VELOCITY, self.vel[centre], vj, what))
+        if guided or all(c not in m.ground for _, c in arms):
+            measured.append(Arrow(f"result V_{j}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vj, f"V_{j}"))
+        values: dict[str, Value] = {}
+        parts = []
+        for i, a in enumerate(measured):
+            values[f"m{i}"] = _v((a.tip - a.tail).norm())
+            parts.append(f"{a.label} = $m{i}")
+        omegas = []
+        for i, (link, centre) in enumerate(arms):
+            w = self.ang[link.number]
+            values[f"w{i}"] = _w(w)
+            omegas.append(f"\u03c9_{link.number} = {self._what(j, centre)}/{link.label} = $w{i} {sense(w)}")
+        self.steps.append((f"The trial lines meet at {image_name(j)}. Measure {', '.join(parts)}; "
+                           f"{'; '.join(omegas)}.",
+                           (Point(f"image {j}", Role.LABEL, Diagram.VELOCITY, vj, image_name(j)), *measured),
+                           eq, values, StepKind.ANSWER))
+
+    def image(self, step: FixedToLink) -> None:
+        """Velocity image of point D on a link PQ: the triangle pqd is similar to PQD (notes, Example 4).
+
+        d is placed by the similar triangle itself (the notes' option 1), exact for a rigid link and well
+        conditioned wherever D lies.  The notes' option 2 -- the perpendiculars to PD through p and to QD
+        through q -- is drawn as the visible construction when those lines cross at a readable angle; on
+        (or nearly on) the line PQ they are parallel and d simply divides pq as D divides PQ.
+        """
+        pos, vel = self.pose.positions, self.vel
+        a, link = step.point, step.link
+        d = a.name
+        p, q = link.joints
+        P, Q, D = pos[p], pos[q], pos[d]
+        vp, vq = vel[p], vel[q]
+        ip, iq, idd = image_name(p), image_name(q), image_name(d)
+        vd, t, _ = image_point(P, Q, D, vp, vq)
+        pd, qd = D - P, D - Q
+        crossing = abs(pd.unit().cross(qd.unit())) if pd.norm() > 0 and qd.norm() > 0 else 0.0
+        if crossing < WARN_SINE:
+            self.steps.append((f"{d} lies on (or next to) the line {p}{q}: mark {idd} dividing {ip}{iq} as {d} "
+                               f"divides {p}{q} ({p}{d}/{p}{q} = $t).", (), None,
+                               {"t": Value("number", t)}, StepKind.CONSTRUCTION))
+        else:
+            self.steps.append((
+                f"Velocity image of link {link.number}: through {ip} draw the perpendicular to {p}{d}, "
+                f"through {iq} the perpendicular to {q}{d}; they meet at {idd}.",
+                (TrialLine(f"trial V_{d}{p}", Role.TRIAL, Diagram.VELOCITY, vp, pd.perp(), f"\u22a5 {p}{d}"),
+                 TrialLine(f"trial V_{d}{q}", Role.TRIAL, Diagram.VELOCITY, vq, qd.perp(), f"\u22a5 {q}{d}")),
+                None, {}, StepKind.CONSTRUCTION))
+        vel[d] = vd
+        self.rel[(d, p)] = vd - vp
+        self.steps.append((
+            f"The shaded triangle {ip}{iq}{idd} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
+            f"V_{d} = $v.",
+            (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd)),
+             Point(f"image {d}", Role.LABEL, Diagram.VELOCITY, vd, idd),
+             Arrow(f"result V_{d}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vd, f"V_{d}")),
+            None, {"v": _v(vd.norm())}, StepKind.ANSWER))
+
+    def analysis(self, scale: float | None) -> VelocityAnalysis:
+        """The record in the notes' order: equations, pole, scale, then the drawing steps."""
+        known = self.v_known.norm()
+        rec = Construction("Velocity polygon")
+        for words, eq in self.equations:
+            rec = rec.then(words, equation=eq, kind=StepKind.GIVEN)
+        rec = rec.then("Choose the pole O_v.", Point("pole O_v", Role.LABEL, Diagram.VELOCITY, ORIGIN, "O_v"))
+        rec = rec.then(f"Choose the velocity scale: 1 mm = $s; V_{self.crank.tip} is $len.",
+                       ScaleBar("velocity scale", Role.SCALE_BAR, Diagram.VELOCITY, "velocity", scale),
+                       values={"s": Value("scale", scale, "velocity"),
+                               "len": Value("paper length", known, "velocity")})
+        for words, entities, eq, values, kind in self.steps:
+            rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
+        return VelocityAnalysis(rec, self.pose, self.vel, self.rel, self.ang, self.cond, scale,
+                                tuple(self.warnings), self.omega)
+
+
+def _equation(arms, j: str, m: Mechanism, guided: bool) -> VectorEquation:
+    """V_J = V_P + V_JP with the notes' marks; both centres moving: V_P + V_JP = V_Q + V_JQ."""
+    moving = [(l, c) for l, c in arms if c not in m.ground]
+    fixed = [(l, c) for l, c in arms if c in m.ground]
+    if guided or fixed:
+        left = (Term("V", j, False, True),)
+        (_, c), = moving if moving else fixed[:1]
+        if c in m.ground:
+            return VectorEquation(left, (Term("V", f"{j}{c}", False, True),))
+        return VectorEquation(left, (Term("V", c, True, True), Term("V", f"{j}{c}", False, True)))
+    (_, p), (_, q) = moving
+    return VectorEquation((Term("V", p, True, True), Term("V", f"{j}{p}", False, True)),
+                          (Term("V", q, True, True), Term("V", f"{j}{q}", False, True)))
+
+
+def _equation_caption(eq: VectorEquation, arms, j: str, m: Mechanism, step) -> str:
+    links = " and ".join(f"link {l.number} ({l.label})" for l, _ in arms)
+    dirs = [f"V_{j}{c} \u22a5 {c}{j}" if c not in m.ground else f"V_{j} \u22a5 {c}{j}" for _, c in arms]
+    if isinstance(step, CircleAndGuide):
+        dirs.append(f"V_{j} \u2225 guide")
+    return (f"Relative velocity equation on {links}: {eq.text(marks=False)}, with {', '.join(dirs)}; "
+            f"two unknown magnitudes.")

@@ -1,0 +1,71 @@
+"""Scene families and the registry of their analyses.
+
+A family (linkage today; cam, gear pair, gear train next) is one kind of scene: it reads its own
+sections of a scene file, names the analyses a scene of its kind may ask for with their dependencies,
+and says what goes on its sheets.  The study (:mod:`drafting.study`) resolves the analyses a scene asks
+for as a dependency chain through this registry, lazily, and records what ran; the CLI and the JSON
+output go through it too, never through one analysis by name.  Adding a family means registering one
+:class:`Family` from its own module; nothing here or in another family changes.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """One analysis of a family: its ``name`` (what a scene asks for, e.g. "acceleration"), the
+    analyses it needs first, and ``run(study)`` computing its result from the study (which hands out
+    the results of ``requires``).  ``label`` is what ``ran`` records ("velocity polygon")."""
+
+    name: str
+    requires: tuple[str, ...]
+    run: Callable[[Any], Any]
+    label: str = ""
+
+
+@dataclass(frozen=True)
+class Family:
+    """A kind of scene.
+
+    ``analyses`` are every analysis the family knows (also internal ones a scene cannot ask for by
+    name, such as the analytic check); ``askable`` are those a scene may name under [ask].
+    ``measured(study)`` lists the measured quantities, ``analytic(study)`` their analytic values by name
+    (or None), ``construction(study)`` the record to draw, ``json(study)`` the family's own JSON fields,
+    ``warnings(study)`` what the reader must know.
+    """
+
+    kind: str
+    analyses: Mapping[str, Analysis]
+    askable: tuple[str, ...]
+    measured: Callable[[Any], list]
+    analytic: Callable[[Any], Mapping[str, Any] | None]
+    construction: Callable[[Any], Any]
+    json: Callable[[Any], dict]
+    warnings: Callable[[Any], tuple[str, ...]]
+    model_name: Callable[[Any], str | None] = field(default=lambda study: None)
+
+
+FAMILIES: dict[str, Family] = {}
+
+
+def register(family: Family) -> Family:
+    if family.kind in FAMILIES:
+        raise ValueError(f"a scene family {family.kind!r} is already registered")
+    for a in family.analyses.values():
+        for r in a.requires:
+            if r not in family.analyses:
+                raise ValueError(f"{family.kind}: analysis {a.name!r} needs {r!r}, which is not registered")
+    FAMILIES[family.kind] = family
+    return family
+
+
+def family(kind: str) -> Family:
+    if not FAMILIES:
+        from . import linkage_family  # noqa: F401  (registers the built-in families)
+    try:
+        return FAMILIES[kind]
+    except KeyError:
+        raise KeyError(f"no scene family {kind!r}; known: {', '.join(sorted(FAMILIES))}") from None

@@ -1,0 +1,141 @@
+"""The linkage family: planar linkages at one pose -- position, velocity polygon, acceleration polygon
+-- each checked against the vector-loop solution.  Registered in :mod:`drafting.families`."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from constructions.check import analytic_solution, analytic_values
+from constructions.linkage import assembly_plan, locate
+from constructions.polygons.acceleration import acceleration_polygon
+from constructions.polygons.velocity import velocity_polygon
+from constructions.record import Construction
+
+from .families import Analysis, Family, register
+from .study import rate_json, vec_json
+
+
+def _position(study):
+    s = study.scene
+    return locate(s.mechanism, s.angle, assembly_plan(s.mechanism), fmt=s.units.format)
+
+
+# Until the sheet chooses each polygon's scale from its panel, the study fixes one per paper size.
+_POLYGON_EXTENT_MM = {"A4": 110.0, "A3": 160.0}
+
+
+def _fixed_scale(study, known, points):
+    from constructions.polygons.common import vector_scale
+    xs, ys = [p.x for p in points], [p.y for p in points]
+    extent = max(max(xs) - min(xs), max(ys) - min(ys))
+    return vector_scale(known, extent, max_extent_mm=_POLYGON_EXTENT_MM[study.scene.paper])
+
+
+def _velocity(study):
+    s = study.scene
+    va = velocity_polygon(s.mechanism, study.get("position"), s.omega)
+    known = max(v.norm() for v in va.velocities.values())
+    return velocity_polygon(s.mechanism, study.get("position"), s.omega,
+                            scale=_fixed_scale(study, known, list(va.velocities.values())))
+
+
+def _acceleration(study):
+    s = study.scene
+    aa = acceleration_polygon(s.mechanism, study.get("velocity"), s.alpha)
+    pts = list(aa.accelerations.values()) + [a + b for (j, p), a in aa.normal.items()
+                                             for b in (aa.accelerations[p],)]
+    known = max(a.norm() for a in aa.accelerations.values())
+    return acceleration_polygon(s.mechanism, study.get("velocity"), s.alpha,
+                                scale=_fixed_scale(study, known, pts))
+
+
+def _analytic(study):
+    s = study.scene
+    return analytic_solution(s.mechanism, s.angle, s.omega, s.alpha,
+                             accelerations=study.asked("acceleration"))
+
+
+def _measured(study) -> list:
+    m = study.scene.mechanism
+    out = []
+    for name in ("velocity", "acceleration"):
+        r = study.result(name)
+        if r is not None:
+            out += r.measured(m)
+    return out
+
+
+def _analytic_values(study):
+    if not study.asked("velocity"):
+        return None
+    return analytic_values(study.scene.mechanism, study.get("analytic"))
+
+
+def _construction(study) -> Construction:
+    c = study.get("position").construction
+    for name in ("velocity", "acceleration"):
+        r = study.result(name)
+        if r is not None:
+            c = c + r.construction
+    return c
+
+
+def _warnings(study) -> tuple[str, ...]:
+    w: list[str] = []
+    for name in ("velocity", "acceleration"):
+        r = study.result(name)
+        if r is not None:
+            w += [x for x in r.warnings if x not in w]
+    if study.asked("velocity") and study.get("analytic") is None:
+        w.append("No analytic check: the vector-loop solution does not assemble at this position.")
+    return tuple(w)
+
+
+def _model(study) -> str | None:
+    if not study.asked("velocity"):
+        return None
+    a = study.get("analytic")
+    return a.model if a is not None else None
+
+
+def _json(study) -> dict[str, Any]:
+    s, u = study.scene, study.scene.units
+    m = s.mechanism
+    out: dict[str, Any] = {}
+    pose = study.get("position")
+    out["position"] = {n: [u.convert("length", p.x), u.convert("length", p.y)] for n, p in pose.positions.items()}
+    v = study.result("velocity")
+    if v is not None:
+        out["velocity"] = {f"V_{n}": vec_json(p, "velocity", u) for n, p in v.velocities.items() if n not in m.ground}
+        out["relative_velocity"] = {f"V_{j}{p}": vec_json(w, "velocity", u) for (j, p), w in v.relative.items()}
+        out["angular_velocity"] = {f"omega_{n}": rate_json(w, "angular velocity", u)
+                                   for n, w in sorted(v.angular.items())}
+    a = study.result("acceleration")
+    if a is not None:
+        from constructions.polygons.acceleration import component_name
+        out["acceleration"] = {f"A_{n}": vec_json(p, "acceleration", u) for n, p in a.accelerations.items()
+                               if n not in m.ground}
+        out["acceleration_components"] = {
+            component_name(j, p, sup, m): vec_json(x, "acceleration", u)
+            for comps, sup in ((a.normal, "n"), (a.tangential, "t")) for (j, p), x in comps.items()}
+        out["angular_acceleration"] = {f"alpha_{n}": rate_json(al, "angular acceleration", u)
+                                       for n, al in sorted(a.angular.items())}
+    return out
+
+
+LINKAGE = register(Family(
+    kind="linkage",
+    analyses={
+        "position": Analysis("position", (), _position),
+        "velocity": Analysis("velocity", ("position",), _velocity),
+        "acceleration": Analysis("acceleration", ("velocity",), _acceleration),
+        "analytic": Analysis("analytic", ("position",), _analytic, label="analytic check"),
+    },
+    askable=("position", "velocity", "acceleration"),
+    measured=_measured,
+    analytic=_analytic_values,
+    construction=_construction,
+    json=_json,
+    warnings=_warnings,
+    model_name=_model,
+))

@@ -1,0 +1,63 @@
+"""The units a scene is written and answered in, as one object that travels with the scene.
+
+Every part of a sheet -- captions, results table, scale bars, title block -- asks this object for the
+unit of a quantity kind, so a scene in m/min gets m/min everywhere (never a joined string to re-parse).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+from .units import DEFAULT_UNITS, format_value, from_si, unit_symbol
+
+# scene key (under [units]) -> quantity kind
+KEYS: dict[str, str] = {
+    "length": "length",
+    "velocity": "velocity",
+    "acceleration": "acceleration",
+    "angular_velocity": "angular velocity",
+    "angular_acceleration": "angular acceleration",
+    "angle": "angle",
+}
+
+
+def _default(kind: str, fallback: str) -> str:
+    return DEFAULT_UNITS.get(kind, fallback)
+
+
+@dataclass(frozen=True)
+class Units:
+    """The unit of each quantity kind (pint spellings, e.g. "mm/s", "rpm", "deg")."""
+
+    length: str = _default("length", "mm")
+    velocity: str = _default("velocity", "mm/s")
+    acceleration: str = _default("acceleration", "mm/s^2")
+    angular_velocity: str = _default("angular velocity", "rad/s")
+    angular_acceleration: str = _default("angular acceleration", "rad/s^2")
+    angle: str = _default("angle", "deg")
+
+    def of(self, kind: str) -> str:
+        """The unit of quantity ``kind`` ("length", "angular velocity", ...)."""
+        for key, k in KEYS.items():
+            if k == kind:
+                return getattr(self, key)
+        raise KeyError(f"no unit for the quantity kind {kind!r}")
+
+    def symbol(self, kind: str) -> str:
+        """How the unit of ``kind`` is printed: mm/s, mm/s², deg."""
+        return unit_symbol(self.of(kind)).replace("^2", "\u00b2").replace("**2", "\u00b2")
+
+    def format(self, kind: str, value: float) -> str:
+        """An SI value in this scene's unit of ``kind`` (the engine's Formatter signature)."""
+        return format_value(value, kind, self.of(kind)).replace("^2", "\u00b2")
+
+    def convert(self, kind: str, value: float) -> float:
+        """An SI value as a number in this scene's unit of ``kind``."""
+        return from_si(value, kind, self.of(kind))
+
+    def as_dict(self) -> dict[str, str]:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+    def summary(self, kinds=("length", "velocity", "angular velocity")) -> str:
+        """The units a title block names, e.g. "mm, mm/s, rad/s"."""
+        return ", ".join(dict.fromkeys(self.symbol(k) for k in kinds))
