@@ -1,13 +1,22 @@
 """Units at the edges: parse "500 mm/s", "120 rpm", "70 deg" to SI floats, and format SI values back in
-the scene's own units.  pint does the conversions; its registry is built on first use, not at import.
+the scene's own units.
+
+A value is read as a number and a unit name, never as an expression: the number must match a strict
+decimal pattern (sign, digits, optional fraction, optional exponent) and the unit a small grammar of unit
+names joined by ``/``, ``*``, ``·``, a space or ``per``, each with an optional small integer power
+(``^2``, ``**2``, ``^-1``).  Only then are the names looked up, one by one, in pint's registry (built
+once, on first use), which gives each unit's factor and root units.  The root units must be exactly
+those of the key's kind: a percentage or ``dimensionless`` is not a length and not an angle, ``Hz`` is
+not an angular velocity (use ``rad/s`` or ``rpm``), and ``50 mm rad`` is not a length.
 """
 
 from __future__ import annotations
 
 import functools
 import math
+import re
 
-import pint
+from . import limits
 
 # quantity kind -> (SI unit the engine uses, pint dimensionality it must have)
 KINDS: dict[str, tuple[str, str]] = {
@@ -15,6 +24,12 @@ KINDS: dict[str, tuple[str, str]] = {
     "velocity": ("m/s", "[length] / [time]"),
     "angular velocity": ("rad/s", "1 / [time]"),
     "angle": ("rad", ""),
+    "acceleration": ("m/s^2", "[length] / [time] ** 2"),
+    "angular acceleration": ("rad/s^2", "1 / [time] ** 2"),
+    "force": ("N", "[mass] * [length] / [time] ** 2"),
+    "torque": ("N m", "[mass] * [length] ** 2 / [time] ** 2"),
+    "mass": ("kg", "[mass]"),
+    "moment of inertia": ("kg m^2", "[mass] * [length] ** 2"),
 }
 
 DEFAULT_UNITS: dict[str, str] = {
@@ -22,7 +37,29 @@ DEFAULT_UNITS: dict[str, str] = {
     "velocity": "mm/s",
     "angular velocity": "rad/s",
     "angle": "deg",
+    "acceleration": "mm/s^2",
+    "angular acceleration": "rad/s^2",
+    "force": "N",
+    "torque": "N m",
+    "mass": "kg",
+    "moment of inertia": "kg m^2",
 }
+
+_EXAMPLES = {"length": "50 mm", "velocity": "500 mm/s", "angular velocity": "10 rad/s", "angle": "70 deg",
+             "acceleration": "2000 mm/s^2", "angular acceleration": "5 rad/s^2", "force": "100 N",
+             "torque": "20 N m", "mass": "2.5 kg", "moment of inertia": "0.01 kg m^2"}
+
+# names pint does not know that people write
+_ALIASES = {"rev": "revolution", "revs": "revolution", "\u00b0": "degree", "sec": "second"}
+
+_NUMBER = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
+_DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d")
+_UNIT_TOKEN = re.compile(r"\s*(?:(?P<name>[A-Za-z_\u00b5\u03bc\u00b0\u2126%][A-Za-z_\u00b5\u03bc\u2126]*)"
+                         r"|(?P<pow>\*\*|\^)|(?P<op>[*/\u00b7\u22c5])"
+                         r"|(?P<int>[+-]?\d+))")
+MAX_POWER = 4
+MAX_FACTORS = 6
+MAX_NAME = 40
 
 
 class UnitError(ValueError):
@@ -30,53 +67,190 @@ class UnitError(ValueError):
 
 
 @functools.cache
-def registry() -> pint.UnitRegistry:
+def registry():
+    """pint's unit registry, built once on first use (importing pint and building it costs ~0.5 s)."""
+    import pint
     return pint.UnitRegistry()
 
 
-def _quantity(text: str) -> pint.Quantity:
-    try:
-        return registry().Quantity(text)
-    except Exception as e:  # pint's parser raises assorted error types on garbage
-        raise UnitError(f"{text!r} cannot be read as a number with a unit (e.g. \"50 mm\")") from e
+def _q(value: object) -> str:
+    from .textsafe import quote
+    return quote(value)
+
+
+# -- reading a unit ------------------------------------------------------------------------------------
+
+def _factors(unit: str) -> list[tuple[str, int]]:
+    """``unit`` -> [(name, power)], by the strict grammar; raises UnitError."""
+    out: list[tuple[str, int]] = []
+    pos, sign, expect_name = 0, 1, True
+    text = unit.strip()
+    if not text:
+        raise UnitError("an empty unit")
+    while pos < len(text):
+        m = _UNIT_TOKEN.match(text, pos)
+        if not m:
+            raise UnitError(f"{_q(unit)} is not a unit (write unit names such as mm, mm/s, rad/s, rpm or deg)")
+        pos = m.end()
+        if m["name"]:
+            name = m["name"]
+            if name == "per" and not expect_name and out:
+                sign, expect_name = -1, True
+                continue
+            if len(name) > MAX_NAME:
+                raise UnitError(f"{_q(unit)} is not a unit: {_q(name)} is too long for a unit name")
+            power = 1
+            p = _UNIT_TOKEN.match(text, pos)
+            if p and p["pow"]:
+                e = _UNIT_TOKEN.match(text, p.end())
+                if not (e and e["int"]) or not (1 <= abs(int(e["int"])) <= MAX_POWER):
+                    raise UnitError(f"{_q(unit)} is not a unit: a power must be a whole number from "
+                                    f"-{MAX_POWER} to {MAX_POWER}, e.g. mm/s^2")
+                power, pos = int(e["int"]), e.end()
+            out.append((name, sign * power))
+            if len(out) > MAX_FACTORS:
+                raise UnitError(f"{_q(unit)} is not a unit: too many factors")
+            sign, expect_name = 1, False
+        elif m["op"]:
+            if expect_name:
+                raise UnitError(f"{_q(unit)} is not a unit (an operator needs a unit name on each side)")
+            sign, expect_name = (-1 if m["op"] == "/" else 1), True
+        else:
+            raise UnitError(f"{_q(unit)} is not a unit: write a number and a unit name, e.g. \"50 mm\" "
+                            f"(arithmetic is not read)")
+    if expect_name:
+        raise UnitError(f"{_q(unit)} is not a unit (it ends with an operator)")
+    return out
+
+
+@functools.lru_cache(maxsize=512)
+def _root(unit: str) -> tuple[float, tuple[tuple[str, float], ...]]:
+    """``unit`` -> (factor, root units) such that 1 unit = factor x root units."""
+    reg = registry()
+    factor = 1.0
+    root: dict[str, float] = {}
+    for name, power in _factors(unit):
+        name = _ALIASES.get(name, name)
+        try:
+            canonical = reg.get_name(name)
+            f, r = reg.get_root_units(canonical)
+        except Exception:             # pint: UndefinedUnitError and friends
+            raise UnitError(f"{_q(name)} is not a known unit name (e.g. mm, in, m/s, rad/s, rpm, "
+                            f"deg)") from None
+        factor *= float(f) ** power
+        for k, v in dict(r._units).items():
+            root[k] = root.get(k, 0) + v * power
+    return factor, tuple(sorted((k, v) for k, v in root.items() if v != 0))
+
+
+@functools.cache
+def _kind_root(kind: str) -> tuple[float, tuple[tuple[str, float], ...]]:
+    return _root(KINDS[kind][0])
+
+
+def _ratio(unit: str, kind: str) -> tuple[float, float]:
+    """(factor of ``unit``, factor of the SI unit of ``kind``), both to the same root units, so that
+    SI = value * (f / kf) and value = SI * (kf / f) as pint computes them; raises UnitError when the
+    unit is not of that kind."""
+    if kind not in KINDS:
+        raise UnitError(f"{kind!r} is not a kind of quantity ({', '.join(KINDS)})")
+    f, root = _root(unit)
+    kf, kroot = _kind_root(kind)
+    if root != kroot:
+        raise UnitError(f"{_q(unit)} is not a unit of {kind} (expected a unit like {DEFAULT_UNITS[kind]!r})")
+    return f, kf
 
 
 def check_unit(unit: str, kind: str) -> str:
     """Validate that ``unit`` names a unit of ``kind``; returns it unchanged."""
-    q = _quantity(f"1 {unit}")
-    if not _compatible(q, kind):
-        raise UnitError(f"{unit!r} is not a unit of {kind} (expected something like {DEFAULT_UNITS[kind]!r})")
+    if not isinstance(unit, str):
+        raise UnitError(f"{_q(unit)} is not a unit name")
+    _ratio(unit, kind)
     return unit
 
 
-def _compatible(q: pint.Quantity, kind: str) -> bool:
-    dim = KINDS[kind][1]
-    return q.check(dim) if dim else q.dimensionless
+# -- reading a value --------------------------------------------------------------------------------------
+
+def split_value(text: str) -> tuple[float, str | None]:
+    """``"500 mm/s"`` -> (500.0, "mm/s"); ``"50"`` -> (50.0, None).  Never evaluates anything."""
+    s = text.strip()
+    m = _NUMBER.match(s)
+    if not m:
+        if _DECIMAL_COMMA.match(s):
+            raise UnitError(f"{_q(text)} has a decimal comma; use a decimal point, e.g. \"60.5 mm\"")
+        raise UnitError(f"{_q(text)} cannot be read as a number with a unit (e.g. \"50 mm\")")
+    rest = s[m.end():]
+    if rest.startswith(",") and rest[1:2].isdigit():
+        raise UnitError(f"{_q(text)} has a decimal comma; use a decimal point, e.g. \"60.5 mm\" "
+                        f"(and no thousands separators)")
+    first = rest.lstrip()[:1]
+    if first and (first in "*^/+-().," or first.isdigit()):
+        raise UnitError(f"{_q(text)} is not a number with a unit: write a plain number and a unit name, "
+                        f"e.g. \"50 mm\" (arithmetic is not read)")
+    number = float(m.group())
+    unit = rest.strip()
+    return number, (unit or None)
 
 
 def to_si(value: object, kind: str, default_unit: str) -> float:
-    """A scene value -> SI float.  Plain numbers are in ``default_unit``; strings carry their unit."""
+    """A scene value -> SI float.  Plain numbers are in ``default_unit``; strings carry their unit.
+
+    Raises :class:`UnitError` (one sentence, without the key) for anything else: expressions, decimal
+    commas, units of another kind, numbers too large for a float, values outside :mod:`limits`."""
+    if kind not in KINDS:
+        raise UnitError(f"{kind!r} is not a kind of quantity ({', '.join(KINDS)})")
     if isinstance(value, bool):
         raise UnitError(f"{value!r} is not a number")
     if isinstance(value, (int, float)):
-        q = registry().Quantity(float(value), default_unit)
+        try:
+            number = float(value)
+        except OverflowError:
+            raise UnitError(f"{_q(value)} is too large to be {_a(kind)}") from None
+        unit = default_unit
     elif isinstance(value, str):
-        q = _quantity(value.strip())
-        if q.unitless:
-            q = registry().Quantity(float(q.magnitude), default_unit)
+        number, unit = split_value(value)
+        unit = unit or default_unit
     else:
-        raise UnitError(f"{value!r} is not a number or a quantity like \"{'70 deg' if kind == 'angle' else '50 mm'}\"")
-    if not _compatible(q, kind):
-        raise UnitError(f"{value!r} is not a value of {kind} (expected a unit like {DEFAULT_UNITS[kind]!r})")
-    si = KINDS[kind][0]
-    out = float(q.to(si).magnitude)
+        example = _EXAMPLES.get(kind, "50 mm")
+        raise UnitError(f"{_q(value)} is not a number or a quantity like \"{example}\"")
+    if math.isnan(number):
+        raise UnitError(f"{_q(value)} is not a number")
+    if math.isinf(number):
+        raise UnitError(f"{_q(value)} is too large to be {_a(kind)}")
+    try:
+        f, kf = _ratio(unit, kind)
+    except UnitError as e:
+        if unit is default_unit or isinstance(value, (int, float)):
+            raise
+        if "is not a unit of" in str(e):
+            raise UnitError(f"{_q(value)} is not a value of {kind} (expected a unit like "
+                            f"{DEFAULT_UNITS[kind]!r})") from None
+        raise
+    out = number * (f / kf)
     if not math.isfinite(out):
-        raise UnitError(f"{value!r} is not a finite {kind}")
+        raise UnitError(f"{_q(value)} is too large to be {_a(kind)}")
+    problem = limits.magnitude_problem(kind, out)
+    if problem:
+        lo, hi = limits.MAGNITUDES[kind]
+        bound = hi if problem == "too large" else lo
+        try:
+            shown = f"{from_si(bound, kind, default_unit):g} {unit_symbol(default_unit)}"
+        except UnitError:
+            shown = f"{bound:g} {KINDS[kind][0]}"
+        if problem == "too large":
+            raise UnitError(f"{_q(value)} is too large: {_a(kind)} may be at most {shown}")
+        raise UnitError(f"{_q(value)} is too small: a non-zero {kind} must be at least {shown} "
+                        f"(write 0 for zero)")
     return out
 
 
+def _a(kind: str) -> str:
+    return ("an " if kind[0] in "aeiou" else "a ") + kind
+
+
 def from_si(value: float, kind: str, unit: str) -> float:
-    return float(registry().Quantity(value, KINDS[kind][0]).to(unit).magnitude)
+    f, kf = _ratio(unit, kind)
+    return float(value) * (kf / f)
 
 
 def unit_symbol(unit: str) -> str:

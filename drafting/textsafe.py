@@ -1,0 +1,84 @@
+"""Text that came from a user, made safe for where it goes: XML, a terminal, a one-line message.
+
+Scene files and file names are untrusted.  Three places receive their text:
+
+- an SVG (titles, drawing numbers, names, labels): :func:`xml_safe` replaces every character XML 1.0
+  forbids -- C0 controls other than tab, newline and carriage return, U+FFFE/U+FFFF and unpaired
+  surrogates -- by U+FFFD, so the document stays well-formed and the damage stays visible;
+- a terminal or a log: :func:`printable` writes control characters (C0, DEL, C1), line and paragraph
+  separators and unpaired surrogates as Python escapes (``\\x1b``, ``\\udcff``), so a title cannot move
+  the cursor, recolour the terminal or split a message over lines;
+- an error message: :func:`one_line` does the same and cuts quoted values longer than
+  :data:`QUOTE_LIMIT` characters with an ellipsis, so a 700,000-character value is not echoed back.
+"""
+
+from __future__ import annotations
+
+import re
+
+REPLACEMENT = "\ufffd"
+QUOTE_LIMIT = 60
+"""Quoted values in messages are cut to this many characters (plus an ellipsis)."""
+MESSAGE_LIMIT = 400
+"""A message longer than this is cut (whatever survives the quote cutting)."""
+
+# XML 1.0: Char ::= #x9 | #xA | #xD | [#x20-#xD7FF] | [#xE000-#xFFFD] | [#x10000-#x10FFFF]
+_XML_FORBIDDEN = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+# what a terminal must not receive raw: C0 (also tab/newline in a one-line text), DEL, C1,
+# the Unicode line/paragraph separators, bidi overrides and unpaired surrogates
+_UNPRINTABLE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]")
+_UNPRINTABLE_KEEP_LINES = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069"
+                                     "\ud800-\udfff]")
+_QUOTED = re.compile(r"'(?:[^'\\]|\\.)*'|\"(?:[^\"\\]|\\.)*\"")
+
+
+def xml_safe(text: str) -> str:
+    """``text`` with every character XML 1.0 forbids replaced by U+FFFD (visible, never dropped)."""
+    return _XML_FORBIDDEN.sub(REPLACEMENT, text)
+
+
+def _escape(m: re.Match) -> str:
+    c = m.group(0)
+    n = ord(c)
+    return f"\\x{n:02x}" if n < 0x100 else f"\\u{n:04x}"
+
+
+def printable(text: str, *, keep_lines: bool = False) -> str:
+    """``text`` with control characters and unpaired surrogates escaped (``\\x1b``, ``\\udcff``).
+
+    With ``keep_lines`` newlines and tabs pass (for multi-line output such as a results table)."""
+    return (_UNPRINTABLE_KEEP_LINES if keep_lines else _UNPRINTABLE).sub(_escape, text)
+
+
+def cut(text: str, limit: int = QUOTE_LIMIT) -> str:
+    """``text`` cut to ``limit`` characters with an ellipsis when longer."""
+    return text if len(text) <= limit else text[:limit] + "\u2026"
+
+
+def cut_middle(text: str, limit: int) -> str:
+    """``text`` cut in the middle to ``limit`` characters (a long path keeps its start and its file name)."""
+    if len(text) <= limit:
+        return text
+    head = limit // 3
+    return text[:head] + "\u2026" + text[-(limit - head - 1):]
+
+
+def quote(value: object, limit: int = QUOTE_LIMIT) -> str:
+    """A value quoted for a message: its repr, cut at ``limit`` characters, escaped, one line."""
+    r = repr(value)
+    if len(r) > limit + 2:
+        r = r[:limit + 1] + "\u2026" + r[-1] if r[-1] in "'\"" else r[:limit] + "\u2026"
+    return printable(r)
+
+
+def _cut_quoted(m: re.Match) -> str:
+    q = m.group(0)
+    if len(q) <= QUOTE_LIMIT + 2:
+        return q
+    return q[:QUOTE_LIMIT + 1] + "\u2026" + q[-1]
+
+
+def one_line(message: str) -> str:
+    """A message fit for one line of stderr: escaped, quoted values cut, the whole bounded."""
+    text = _QUOTED.sub(_cut_quoted, printable(message))
+    return cut(text, MESSAGE_LIMIT)
