@@ -82,13 +82,15 @@ class Comparison:
         return None if r is None else r <= self.tolerance
 
 
-def compare(measured: Sequence[Measured], analytic: Mapping[str, Vec | float] | None) -> list[Comparison]:
+def compare(measured: Sequence[Measured], analytic: Mapping[str, Vec | float] | None,
+            scales: Mapping[str, float] | None = None) -> list[Comparison]:
     """Each measured quantity beside the analytic value of the same name (None where there is none).
 
-    The reference of a value is the largest measured value of its kind (so a quantity that is nearly
-    zero is judged against the scale of the polygon it was read from); the tolerance widens with the
-    conditioning of the crossing it was read at."""
-    ref: dict[str, float] = {}
+    The reference of a value is the largest measured value of its kind, or the scale of its kind given
+    in ``scales`` if that is larger (the input's: |V_B|, |omega_1|, |A_B|, max(|alpha_1|, omega_1^2)), so
+    a quantity that is nearly zero is judged against the scale of the polygon it was read from; the
+    tolerance widens with the conditioning of the crossing it was read at."""
+    ref: dict[str, float] = dict(scales or {})
     for q in measured:
         ref[q.kind] = max(ref.get(q.kind, 0.0), q.magnitude)
     out = []

@@ -46,6 +46,7 @@ class Family:
     json: Callable[[Any], dict]
     warnings: Callable[[Any], tuple[str, ...]]
     model_name: Callable[[Any], str | None] = field(default=lambda study: None)
+    scales: Callable[[Any], dict] = field(default=lambda study: {})
 
 
 FAMILIES: dict[str, Family] = {}

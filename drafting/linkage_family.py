@@ -65,6 +65,15 @@ def _measured(study) -> list:
     return out
 
 
+def _scales(study) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for name in ("velocity", "acceleration"):
+        r = study.result(name)
+        if r is not None:
+            out.update(r.scales())
+    return out
+
+
 def _analytic_values(study):
     if not study.asked("velocity"):
         return None
@@ -138,4 +147,5 @@ LINKAGE = register(Family(
     json=_json,
     warnings=_warnings,
     model_name=_model,
+    scales=_scales,
 ))

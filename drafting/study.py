@@ -92,7 +92,7 @@ class Study:
         measured = self.family.measured(self)
         if not measured:
             return []
-        rows = compare(measured, self.family.analytic(self))
+        rows = compare(measured, self.family.analytic(self), self.family.scales(self))
         if self.scene.find is not None:
             wanted = {quantity_key(f) for f in self.scene.find}
             rows = [r for r in rows if quantity_key(r.name) in wanted]

@@ -69,6 +69,13 @@ class AccelerationAnalysis:
     def relative_error_estimate(self) -> float:
         return rounding_estimate(self.worst_condition) / max(self.worst_condition, 1e-300)
 
+    def scales(self) -> dict[str, float]:
+        """The input's scale of each kind: |A_B| for accelerations and max(|alpha_1|, omega_k^2) for angular
+        accelerations (alpha and omega^2 share their unit and both set the polygon's size)."""
+        w2 = max(w * w for w in self.velocity.angular.values())
+        return {"acceleration": max(a.norm() for a in self.accelerations.values()),
+                "angular acceleration": max(abs(self.alpha), w2)}
+
     def measured(self, m: Mechanism) -> list[Measured]:
         """Absolute accelerations of the moving joints and points, the normal and tangential components
         of every dyad (named as in the notes: A_CB^n, A_CB^t; A_C^n, A_C^t about a fixed pivot) and the

@@ -57,6 +57,11 @@ class VelocityAnalysis:
         singular positions."""
         return rounding_estimate(self.worst_condition)
 
+    def scales(self) -> dict[str, float]:
+        """The input's scale of each kind, against which small values are judged: |V_B| and |omega_1|."""
+        return {"velocity": max(v.norm() for v in self.velocities.values()),
+                "angular velocity": abs(self.omega)}
+
     def measured(self, m: Mechanism) -> list[Measured]:
         """Absolute velocities of the moving joints and points, relative velocities between moving
         joints, and the angular velocities of the links that are neither the crank nor a slider block."""
