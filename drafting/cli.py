@@ -22,8 +22,11 @@ from typing import Sequence
 
 from constructions.errors import ConstructionError, IndeterminatePosition
 
+from .faults import Interrupted, remove_temporaries, signals_handled
 from .scene import PAPERS, SceneError, load_scene
 from .study import Study
+from .textsafe import one_line, safe_streams
+from .units import from_si, unit_symbol
 
 FORMATS = ("svg", "pdf", "png")
 DEFAULT_OUT = Path("drafting-output")
@@ -39,7 +42,7 @@ class UserError(Exception):
     3 for a singular position (toggle, change point, limit position) where a polygon cannot close."""
 
     def __init__(self, message: str, code: int = EXIT_INPUT) -> None:
-        super().__init__(message)
+        super().__init__(one_line(message))     # escaped, long values cut: one line whatever the input
         self.code = code
 
 
@@ -61,10 +64,22 @@ def _solve(study: Study) -> Study:
     try:
         study.run()
     except IndeterminatePosition as e:
-        raise UserError(f"{study.scene.path}: {e}", EXIT_SINGULAR) from None
+        raise UserError(f"{study.scene.path}: {_located(study, e)}", EXIT_SINGULAR) from None
     except ConstructionError as e:
-        raise UserError(f"{study.scene.path}: {e}") from None
+        raise UserError(f"{study.scene.path}: {_located(study, e)}") from None
     return study
+
+
+def _located(study: Study, e: ConstructionError) -> str:
+    """The error with the position it happened at: the engine's, else the scene's crank angle."""
+    if e.position:
+        return str(e)
+    try:
+        u = study.scene.units.angle
+        where = f"crank angle {from_si(study.scene.angle, 'angle', u):.6g} {unit_symbol(u)}"
+    except Exception:
+        where = "the given crank angle"
+    return f"at {where}: {e}"
 
 
 def sheet_for(study: Study):
@@ -106,14 +121,14 @@ def results_text(study: Study) -> str:
 
 def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper: str | None) -> int:
     """Render every scene; a scene that fails is reported in one line and the others still render."""
-    from .export import ExportError, write_sheet
+    from .export import ExportError, write_sheets
     from .layout import LayoutError
     failed = 0
     for path in scenes:
         try:
             study = _solve(_study(path, paper))
             try:
-                written = write_sheet(sheet_for(study), out, path.stem, formats)
+                written = write_sheets([sheet_for(study)], out, path.stem, formats)
             except (ExportError, LayoutError) as e:
                 raise UserError(f"{path}: {e}") from None
         except UserError as e:
@@ -190,6 +205,19 @@ def parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """The command.  SIGINT and SIGTERM end it cleanly, temporary files removed, with exit code 130 or
+    143; whatever reaches the terminal has its control characters escaped (a title cannot move the
+    cursor)."""
+    with safe_streams(), signals_handled():
+        try:
+            return _main(argv)
+        except Interrupted as e:
+            remove_temporaries()
+            print(f"drafting: interrupted by {e.name}; no file was left half-written", file=sys.stderr)
+            return e.exit_code
+
+
+def _main(argv: Sequence[str] | None) -> int:
     args = parser().parse_args(argv)
     try:
         if args.command is None:

@@ -5,6 +5,11 @@ element with its style written out as presentation attributes (stroke, width, da
 cairosvg reads reliably.  Coordinates are rounded to 3 decimals so the output is stable.  Nothing here
 uses what cairosvg cannot render: arrowheads are filled polygons (no markers), subscripts are tspans
 moved with ``dy`` (no ``baseline-shift``), label backgrounds are white rectangles (no ``paint-order``).
+
+Every text that reaches the document -- titles, drawing numbers, names, labels, file names -- passes
+:func:`drafting.textsafe.xml_safe` here, the one place that writes SVG: characters XML 1.0 forbids
+become U+FFFD, and svgwrite escapes ``&``, ``<``, ``>`` and quotes.  The document stays inert: plain
+shapes and text only, no scripts, no links or external references, no DOCTYPE or entities.
 """
 
 from __future__ import annotations
@@ -14,6 +19,7 @@ import svgwrite
 from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Text
 from .sheet import Sheet
 from .style import FONT_FAMILY, style
+from .textsafe import xml_safe
 
 
 def fmt(v: float) -> str:
@@ -77,9 +83,9 @@ def _text(dwg: svgwrite.Drawing, c: Text):
     shift = 0.0
     for i, s in enumerate(c.spans):
         if i == 0 and s.shift == 0 and not s.italic:
-            el.text = s.text
+            el.text = xml_safe(s.text)
             continue
-        ts = dwg.tspan(s.text)
+        ts = dwg.tspan(xml_safe(s.text))
         dy = s.shift - shift
         if abs(dy) > 5e-4:
             ts.attribs["dy"] = fmt(dy)
@@ -102,4 +108,4 @@ def sheet_to_svg(sheet: Sheet) -> str:
     dwg.add(page)
     for c in sheet.commands:
         dwg.add(_element(dwg, c))
-    return dwg.tostring()
+    return xml_safe(dwg.tostring())        # and once more over the whole: nothing unsafe gets through

@@ -223,7 +223,7 @@ def test_folder_refusing_new_files_raises_export_error_naming_it(tmp_path, monke
     def refuse(*args, **kwargs):
         raise PermissionError(13, "Permission denied")
 
-    monkeypatch.setattr(export_mod.tempfile, "mkstemp", refuse)
+    monkeypatch.setattr(export_mod, "_create_temp", refuse)
     with pytest.raises(ExportError) as err:
         write_sheet(small_sheet(), tmp_path, "sheet")
     assert str(tmp_path) in str(err.value) and "Permission denied" in str(err.value)
@@ -261,3 +261,145 @@ def test_source_date_epoch_makes_the_pdf_reproducible(tmp_path, monkeypatch):
     (b,) = write_sheet(sheet, tmp_path / "b", "s", ["pdf"])
     assert a.read_bytes() == b.read_bytes()
     assert b"/CreationDate (D:20231114221320Z)" in a.read_bytes()
+
+
+# -- several sheets, all-or-nothing, faults ---------------------------------------------------------------
+
+def _pdf_pages(pdf: bytes) -> list[tuple[float, float]]:
+    """(width, height) in points of every /Type /Page object."""
+    out = []
+    for m in re.finditer(rb"/Type\s*/Page\b(?!s)(.*?)>>", pdf, re.S):
+        box = re.search(rb"/MediaBox\s*\[\s*([-\d.\s]+)\]", m.group(0))
+        if box:
+            x0, y0, x1, y1 = (float(v) for v in box.group(1).split())
+            out.append((x1 - x0, y1 - y0))
+    return out
+
+
+def test_one_sheet_gives_the_plain_names(tmp_path):
+    from drafting.export import write_sheets
+    paths = write_sheets([small_sheet()], tmp_path, "one", ("svg", "pdf", "png"))
+    assert [p.name for p in paths] == ["one.svg", "one.pdf", "one.png"]
+    assert sorted(os.listdir(tmp_path)) == ["one.pdf", "one.png", "one.svg"]
+
+
+def test_several_sheets_give_numbered_svgs_and_pngs_and_one_pdf_of_all_pages(tmp_path):
+    from PIL import Image
+    from drafting.export import output_names, write_sheets
+    sheets = [small_sheet("A4", "landscape"), small_sheet("A3", "portrait"), bar_sheet(100.0)]
+    paths = write_sheets(sheets, tmp_path, "multi", ("svg", "pdf", "png"), dpi=30)
+    names = [p.name for p in paths]
+    assert names == ["multi-1.svg", "multi-2.svg", "multi-3.svg", "multi.pdf", "multi-1.png", "multi-2.png",
+                     "multi-3.png"] == output_names(3, "multi", ("svg", "pdf", "png"))
+    assert sorted(os.listdir(tmp_path)) == sorted(names)
+    pdf = (tmp_path / "multi.pdf").read_bytes()
+    assert b"/Count 3" in pdf
+    pages = _pdf_pages(pdf)
+    assert len(pages) == 3
+    for (w, h), (wm, hm) in zip(pages, [(297, 210), (297, 420), (297, 210)]):
+        assert w == pytest.approx(wm * PT_PER_MM, abs=0.01) and h == pytest.approx(hm * PT_PER_MM, abs=0.01)
+    with Image.open(tmp_path / "multi-2.png") as img:
+        assert img.size == (round(297 / 25.4 * 30), round(420 / 25.4 * 30))
+    # the 100 mm bar on page 3 is still 100 mm: true scale holds on every page of the merged PDF
+    spans = []
+    for st in pdf_streams(pdf):
+        xs = [x for x, _ in path_points(st) if 0.5 < x < 841.0]
+        if xs and abs(max(xs) - min(xs) - 100 * PT_PER_MM) < 0.01:
+            spans.append(st)
+    assert spans
+
+
+def test_a_final_name_that_is_a_folder_writes_nothing(tmp_path):
+    (tmp_path / "sheet.png").mkdir()
+    with pytest.raises(ExportError) as err:
+        write_sheet(small_sheet(), tmp_path, "sheet")
+    msg = str(err.value)
+    assert str(tmp_path / "sheet.png") in msg and "folder" in msg and "\n" not in msg
+    assert sorted(os.listdir(tmp_path)) == ["sheet.png"]          # no svg, no pdf, no temporary file
+
+
+def test_full_disk_while_writing_leaves_nothing(tmp_path, monkeypatch):
+    """ENOSPC from the file system (simulated at fsync; the real one is in test_hostile_faults)."""
+    import errno
+    calls = []
+
+    def full(fd):
+        calls.append(fd)
+        if len(calls) == 2:                       # the second file (the PDF) finds the disk full
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(export_mod.os, "fsync", full)
+    with pytest.raises(ExportError) as err:
+        write_sheet(small_sheet(), tmp_path, "sheet")
+    assert str(err.value) == f"Cannot write {tmp_path / 'sheet.pdf'}: No space left on device."
+    assert os.listdir(tmp_path) == []
+
+
+def test_a_failed_rename_puts_back_what_was_there(tmp_path, monkeypatch):
+    """The svg is renamed into place, then the pdf's rename fails: the old svg comes back."""
+    (tmp_path / "sheet.svg").write_text("old svg")
+    real = os.replace
+    seen = []
+
+    def flaky(src, dst):
+        seen.append(dst)
+        if str(dst).endswith("sheet.pdf"):
+            raise PermissionError(13, "Permission denied")
+        return real(src, dst)
+
+    monkeypatch.setattr(export_mod.os, "replace", flaky)
+    with pytest.raises(ExportError, match="sheet.pdf"):
+        write_sheet(small_sheet(), tmp_path, "sheet", ("svg", "pdf"))
+    assert sorted(os.listdir(tmp_path)) == ["sheet.svg"]
+    assert (tmp_path / "sheet.svg").read_text() == "old svg"
+
+
+def test_stale_temporary_files_are_removed_by_the_next_run(tmp_path):
+    import subprocess
+    import sys
+    import time as _time
+    dead = subprocess.Popen([sys.executable, "-c", "pass"])
+    dead.wait()
+    stale = tmp_path / f".drafting-tmp-{dead.pid}-3-sheet.pdf"          # its process is gone
+    old = tmp_path / f".drafting-tmp-{os.getppid()}-1-other.png"        # alive, but two hours old
+    alive = tmp_path / f".drafting-tmp-{os.getppid()}-2-busy.svg"       # alive and recent: in use
+    mine = tmp_path / "notes.txt"
+    for p in (stale, old, alive, mine):
+        p.write_text("x")
+    two_hours_ago = _time.time() - 7200
+    os.utime(old, (two_hours_ago, two_hours_ago))
+    write_sheet(small_sheet(), tmp_path, "sheet", ("svg",))
+    assert sorted(os.listdir(tmp_path)) == sorted([alive.name, mine.name, "sheet.svg"])
+
+
+def test_temporary_files_are_tracked_while_they_exist(tmp_path, monkeypatch):
+    """While a conversion runs, the temporary files of the formats done so far are registered with
+    faults (so a signal handler can remove them) and carry the recognisable name."""
+    from drafting import faults
+    seen = {}
+
+    def spy(svg, fh, dpi):
+        seen["tracked"] = set(faults.tracked())
+        seen["files"] = sorted(os.listdir(tmp_path))
+        fh.write(b"\x89PNG")
+
+    monkeypatch.setattr(export_mod, "_convert_png", spy)
+    write_sheet(small_sheet(), tmp_path, "sheet", ("svg", "png"))
+    assert len(seen["files"]) == 1 and re.fullmatch(rf"\.drafting-tmp-{os.getpid()}-\d+-sheet\.svg", seen["files"][0])
+    assert {os.path.basename(p) for p in seen["tracked"]} == set(seen["files"])
+    assert not faults.tracked()
+    assert sorted(os.listdir(tmp_path)) == ["sheet.png", "sheet.svg"]
+
+
+def test_svg_text_is_made_xml_safe():
+    import xml.etree.ElementTree as ET
+    from drafting.svg import sheet_to_svg
+    from drafting.paper import Rect, Span
+    nasty = "A\x00B\x07C\x1b[31m\ufffe\uffff\ud800 <script>&amp;\"'"
+    spans = (Span(nasty, 3.5), Span(nasty, 2.5, shift=1.0, italic=True))
+    sheet = Sheet(paper("A4"), (Text(10, 10, spans, "label", Rect(10, 7, 50, 4), "frame"),))
+    svg = sheet_to_svg(sheet)
+    root = ET.fromstring(svg)
+    text = "".join(root.itertext())
+    assert text.count("A\ufffdB\ufffdC\ufffd[31m\ufffd\ufffd\ufffd <script>&amp;\"'") == 2
+    assert "<script" not in svg and "<!ENTITY" not in svg and "href" not in svg
