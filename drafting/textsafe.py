@@ -14,7 +14,10 @@ Scene files and file names are untrusted.  Three places receive their text:
 
 from __future__ import annotations
 
+import contextlib
 import re
+import sys
+from typing import Iterator
 
 REPLACEMENT = "\ufffd"
 QUOTE_LIMIT = 60
@@ -82,3 +85,37 @@ def one_line(message: str) -> str:
     """A message fit for one line of stderr: escaped, quoted values cut, the whole bounded."""
     text = _QUOTED.sub(_cut_quoted, printable(message))
     return cut(text, MESSAGE_LIMIT)
+
+
+class _SafeWriter:
+    """A text stream that escapes control characters (keeping newlines and tabs) and writes what its
+    encoding cannot hold as backslash escapes, instead of failing."""
+
+    def __init__(self, inner) -> None:
+        self._inner = inner
+
+    def write(self, text: str) -> int:
+        safe = printable(text, keep_lines=True)
+        try:
+            self._inner.write(safe)
+        except UnicodeEncodeError:
+            enc = getattr(self._inner, "encoding", None) or "ascii"
+            self._inner.write(safe.encode(enc, "backslashreplace").decode(enc, "replace"))
+        return len(text)
+
+    def __getattr__(self, name):
+        return getattr(self._inner, name)
+
+
+@contextlib.contextmanager
+def safe_streams() -> Iterator[None]:
+    """Within the block, sys.stdout and sys.stderr escape control characters (see :func:`printable`)."""
+    out, err = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = _SafeWriter(out), _SafeWriter(err)
+    try:
+        yield
+    finally:
+        if isinstance(sys.stdout, _SafeWriter):
+            sys.stdout = out
+        if isinstance(sys.stderr, _SafeWriter):
+            sys.stderr = err
