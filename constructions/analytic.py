@@ -386,13 +386,9 @@ def _crank_tip_acceleration(c, s, r1, w, a, ABx, ABy, t, u) -> None:
         nrm = t
     np.multiply(c, nrm, out=ABx)  # -omega1^2 r1 cos
     np.multiply(s, nrm, out=ABy)  # -omega1^2 r1 sin
-    if isinstance(a, float):
-        if a != 0.0:
-            np.multiply(s, -a * r1, out=u)
-            ABx += u
-            np.multiply(c, a * r1, out=u)
-            ABy += u
-    else:
+    if not isinstance(a, float) or a != 0.0:
+        # the same operations for a scalar and an array alpha1: each element's value does not
+        # depend on how alpha1 was given
         np.multiply(s, a, out=u)
         u *= -r1
         ABx += u

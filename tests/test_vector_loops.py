@@ -23,10 +23,7 @@ from constructions.check import AGREEMENT, analytic_solution, analytic_values, c
 from constructions.errors import CannotAssemble, DegenerateInput
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
-try:
-    from constructions.polygons.velocity import velocity_polygon
-except ImportError:   # before the velocity polygon moved into constructions.polygons
-    from constructions.velocity import velocity_polygon
+from constructions.polygons.velocity import velocity_polygon
 from constructions.vector_loops import chain_solution, solving_order
 from drafting.cli import main
 
