@@ -23,7 +23,8 @@ from typing import Mapping
 
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
-from ..linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, assembly_plan
+from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles,
+                       assembly_plan)
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
@@ -60,6 +61,8 @@ class AccelerationAnalysis:
     scale: float | None
     warnings: tuple[str, ...]
     alpha: float = 0.0
+    coriolis: Mapping[str, Vec] = None      # type: ignore[assignment]  name (A_A3A^c) -> 2 omega x V_rel
+    sliding: Mapping[str, Vec] = None       # type: ignore[assignment]  name (A_A3A^s) -> along the slot
 
     @property
     def worst_condition(self) -> float:
@@ -85,6 +88,8 @@ class AccelerationAnalysis:
                if n not in m.ground]
         for comps, sup in ((self.normal, "n"), (self.tangential, "t")):
             out += [Measured(component_name(j, p, sup, m), "acceleration", a, c) for (j, p), a in comps.items()]
+        for comps in (self.coriolis or {}, self.sliding or {}):
+            out += [Measured(name, "acceleration", a, c) for name, a in comps.items()]
         skip = {m.crank} | {s.number for s in m.slides}
         out += [Measured(f"alpha_{n}", "angular acceleration", al, c) for n, al in sorted(self.angular.items())
                 if n not in skip]
@@ -108,7 +113,7 @@ def acceleration_polygon(m: Mechanism, va: VelocityAnalysis, alpha: float = 0.0,
     assert isinstance(crank, CrankTip)
     poly = _Polygon(m, va, crank, alpha)
     for step in plan[1:]:
-        if isinstance(step, (TwoCircles, CircleAndGuide)):
+        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough)):
             poly.dyad(step)
         elif isinstance(step, FixedToLink):
             poly.image(step)
@@ -128,7 +133,9 @@ class _Polygon:
         self.acc: dict[str, Vec] = {g: ORIGIN for g in m.ground}
         self.normal: dict[tuple[str, str], Vec] = {}
         self.tangential: dict[tuple[str, str], Vec] = {}
-        self.ang: dict[int, float] = {s.number: 0.0 for s in m.slides}
+        self.ang: dict[int, float] = {s.number: 0.0 for s in m.slides if s.number is not None and s.on is None}
+        self.coriolis: dict[str, Vec] = {}
+        self.sliding: dict[str, Vec] = {}
         self.cond: dict[str, float] = {}
         self.warnings: list[str] = []
         self.equations: list[tuple[str, VectorEquation]] = []
@@ -169,14 +176,63 @@ class _Polygon:
             return (Term("A", p, True, True, "n"), Term("A", p, True, True, "t"))
         return (Term("A", p, True, True),)
 
-    def dyad(self, step: TwoCircles | CircleAndGuide) -> None:
-        """One vector equation: the known normal components, two trial lines and their crossing j'."""
+    def _alpha_of(self, number: int) -> float:
+        """The angular acceleration of a link whose acceleration image is known at two points."""
+        if number not in self.ang:
+            pts = [x for x in self.m.points_of(number) if x in self.acc]
+            a, b = pts[0], pts[1]
+            pos = self.pose.positions
+            r = pos[b] - pos[a]
+            w = self.va.angular[number]
+            self.ang[number] = r.cross(self.acc[b] - self.acc[a] + r * (w * w)) / r.dot(r)
+        return self.ang[number]
+
+    def _acceleration_on(self, number: int, point: str) -> Vec:
+        """The acceleration of the point of link ``number`` at ``point``'s position:
+        A_X = A_K + alpha k x KX - omega^2 KX for a point K of the link whose acceleration is known."""
+        pos = self.pose.positions
+        k = next(x for x in self.m.points_of(number) if x in self.acc)
+        r = pos[point] - pos[k]
+        w = self.va.angular[number]
+        return self.acc[k] + r.perp() * self._alpha_of(number) - r * (w * w)
+
+    def _close(self, step, trials: list[Line]) -> Vec:
+        hit = intersect_lines(trials[0], trials[1], self.tol)
+        if hit.contact is not Contact.CROSSING:
+            raise singular_position(self.m, step, self.pose, hit.condition, "acceleration polygon")
+        self.cond[step.joint] = hit.condition
+        if hit.condition < WARN_SINE:
+            self.warnings.append(near_singular_warning(step.joint, hit.condition, "acceleration polygon"))
+        return hit.points[0]
+
+    def _coriolis(self, slot_link: int, v_rel: Vec, start: Vec, name: str, moving: str, frame_point: str,
+                  eq) -> Vec:
+        """Draw the Coriolis component 2 omega x V_rel from ``start``; returns its tip."""
+        w = self.va.angular[slot_link]
+        ac = v_rel.perp() * (2.0 * w)
+        tip = start + ac
+        turn = "counter-clockwise" if w > 0 else "clockwise"
+        words = (f"From {image_name(frame_point, PRIME) if frame_point not in self.m.ground else 'O_a'} draw the "
+                 f"Coriolis component {name} = 2 \u03c9_{slot_link} \u00d7 V_{moving} ($ac): V_{moving} "
+                 f"turned 90\u00b0 {turn}, the sense of \u03c9_{slot_link}.") if w != 0 else (
+                 f"The Coriolis component {name} = 2 \u03c9_{slot_link} \u00d7 V_{moving} is zero "
+                 f"(\u03c9_{slot_link} = 0).")
+        self.coriolis[name] = ac
+        ent = (Arrow(name, Role.KNOWN, Diagram.ACCELERATION, start, tip, name),) if ac.norm() > 0 else ()
+        self.steps.append((words, ent, eq, {"ac": _a(ac.norm())}, StepKind.CONSTRUCTION))
+        return tip
+
+    def dyad(self, step: Dyad) -> None:
+        """One vector equation: the known normal (and Coriolis) components, two trial lines, their crossing."""
+        if isinstance(step, SlotThrough):
+            return self.slot_through(step)
         m, pos, vel = self.m, self.pose.positions, self.va
         j = step.joint
         guided = isinstance(step, CircleAndGuide)
+        on = step.slide.on if guided else None
         arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
-        eq = self._equation(arms, j, guided)
-        self.equations.append((self._equation_words(eq, arms, j, guided), eq))
+        eq = self._equation(arms, j, guided, step.coincident if on is not None else "")
+        self.equations.append((self._equation_words(eq, arms, j, guided, step), eq))
         trials: list[Line] = []
         tips: dict[str, Vec] = {}
         for link, centre in arms:
@@ -199,20 +255,32 @@ class _Polygon:
                            f"\u22a5 {centre}{j}")),
                 eq, {"an": _a(an.norm())}, StepKind.CONSTRUCTION))
             trials.append(Line(tip, r.perp()))
+        slide_tip = None
         if guided:
-            g = step.slide.line.direction
-            trials.append(Line(ORIGIN, g))
-            self.steps.append((f"Draw the direction of A_{j} through O_a, parallel to the guide.",
-                               (TrialLine(f"trial A_{j}", Role.TRIAL, Diagram.ACCELERATION, ORIGIN, g,
-                                          "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
-        hit = intersect_lines(trials[0], trials[1], self.tol)
-        if hit.contact is not Contact.CROSSING:
-            raise singular_position(m, step, self.pose, hit.condition, "acceleration polygon")
-        aj = hit.points[0]
+            g = self.pose.lines[j].direction
+            if on is None:
+                trials.append(Line(ORIGIN, g))
+                self.steps.append((f"Draw the direction of A_{j} through O_a, parallel to the guide.",
+                                   (TrialLine(f"trial A_{j}", Role.TRIAL, Diagram.ACCELERATION, ORIGIN, g,
+                                              "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
+            else:
+                jg = step.coincident
+                a_jg = self._acceleration_on(on, jg)
+                self.acc[jg] = a_jg
+                self.steps.append((f"Mark {_img(jg)}, the acceleration image of the point {jg} of link {on} "
+                                   f"under {j} (A_{jg} = $a).",
+                                   (Point(f"image {jg}", Role.LABEL, Diagram.ACCELERATION, a_jg, _img(jg)),),
+                                   eq, {"a": _a(a_jg.norm())}, StepKind.CONSTRUCTION))
+                v_rel = vel.velocities[j] - vel.velocities[jg]
+                tip = self._coriolis(on, v_rel, a_jg, f"A_{j}{jg}^c", f"{j}{jg}", jg, eq)
+                trials.append(Line(tip, g))
+                self.steps.append((f"Through its tip draw the direction of the sliding component A_{j}{jg}^s, "
+                                   f"parallel to the slot.",
+                                   (TrialLine(f"trial A_{j}{jg}^s", Role.TRIAL, Diagram.ACCELERATION, tip, g,
+                                              "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
+                slide_tip = tip
+        aj = self._close(step, trials)
         self.acc[j] = aj
-        self.cond[j] = hit.condition
-        if hit.condition < WARN_SINE:
-            self.warnings.append(near_singular_warning(j, hit.condition, "acceleration polygon"))
         values: dict[str, Value] = {}
         measured: list[Arrow] = []
         parts, alphas = [], []
@@ -227,7 +295,15 @@ class _Polygon:
             values[f"t{i}"] = _a(a_t.norm())
             values[f"al{i}"] = Value("angular acceleration", abs(al))
             parts.append(f"{comp} = $t{i}")
-            alphas.append(f"\u03b1_{link.number} = {comp}/{link.label} = $al{i} {sense(al)}")
+            alphas.append(f"\u03b1_{link.number} = {comp}/{centre}{j} = $al{i} {sense(al)}")
+        if slide_tip is not None:
+            name = f"A_{j}{step.coincident}^s"
+            self.sliding[name] = aj - slide_tip
+            measured.append(Arrow(f"result {name}", Role.RESULT, Diagram.ACCELERATION, slide_tip, aj, name))
+            values["s"] = _a((aj - slide_tip).norm())
+            parts.append(f"{name} = $s")
+        if guided and step.slide.number is not None:
+            self.ang[step.slide.number] = 0.0 if on is None else self._alpha_of(on)
         measured.append(Arrow(f"result A_{j}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, aj, f"A_{j}"))
         values["a"] = _a(aj.norm())
         self.steps.append((
@@ -236,15 +312,73 @@ class _Polygon:
             (Point(f"image {j}", Role.LABEL, Diagram.ACCELERATION, aj, _img(j)), *measured),
             eq, values, StepKind.ANSWER))
 
+    def slot_through(self, step: SlotThrough) -> None:
+        """The slotted link about its known point P, J sliding in its slot, JG the link's point under J:
+        A_JG = A_P + A_JG,P^n + A_JG,P^t = A_J + A_JG,J^s + A_JG,J^c, the Coriolis component
+        A^c = 2 omega_G x V_JG,J (the sliding velocity turned 90 deg in the sense of omega_G)."""
+        m, pos, vel = self.m, self.pose.positions, self.va
+        j, jg, c, k = step.joint, step.coincident, step.centre, step.link
+        r = pos[j] - pos[c]
+        g = self.pose.lines[j].direction
+        w = vel.angular[k.number]
+        eq = self._slot_equation(j, jg, c)
+        n_name, t_name = component_name(jg, c, "n", m), component_name(jg, c, "t", m)
+        self.equations.append((
+            f"Relative acceleration equation at the sliding joint {j} ({jg} the point of link {k.number} under "
+            f"{j}): {eq.text(marks=False)}, with {n_name} \u2225 {c}{j} towards {c}, {t_name} \u22a5 {c}{j}, "
+            f"A_{jg}{j}^s \u2225 slot and the Coriolis component A_{jg}{j}^c = 2 \u03c9_{k.number} \u00d7 "
+            f"V_{jg}{j}; two unknown magnitudes.", eq))
+        an = r * (-w * w)
+        start = self.acc[c]
+        tip_n = start + an
+        self.normal[(jg, c)] = an
+        at = "O_a" if c in m.ground else _img(c)
+        self.steps.append((
+            f"From {at} draw {n_name} = \u03c9_{k.number}\u00b2 \u00b7 {c}{j} ($an), parallel to {c}{j} towards "
+            f"{c}; through its tip draw the direction of {t_name}, perpendicular to {c}{j}.",
+            (Arrow(n_name, Role.KNOWN, Diagram.ACCELERATION, start, tip_n, n_name),
+             TrialLine(f"trial {t_name}", Role.TRIAL, Diagram.ACCELERATION, tip_n, r.perp(), f"\u22a5 {c}{j}")),
+            eq, {"an": _a(an.norm())}, StepKind.CONSTRUCTION))
+        v_rel = vel.velocities[jg] - vel.velocities[j]
+        tip_c = self._coriolis(k.number, v_rel, self.acc[j], f"A_{jg}{j}^c", f"{jg}{j}", j, eq)
+        self.steps.append((f"Through its tip draw the direction of the sliding component A_{jg}{j}^s, parallel "
+                           f"to the slot.",
+                           (TrialLine(f"trial A_{jg}{j}^s", Role.TRIAL, Diagram.ACCELERATION, tip_c, g,
+                                      "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
+        a = self._close(step, [Line(tip_n, r.perp()), Line(tip_c, g)])
+        self.acc[jg] = a
+        a_t = a - tip_n
+        self.tangential[(jg, c)] = a_t
+        self.sliding[f"A_{jg}{j}^s"] = a - tip_c
+        al = r.cross(a_t) / r.dot(r)
+        self.ang[k.number] = al
+        if step.slide.number is not None:
+            self.ang[step.slide.number] = al
+        for x in m.points_of(k.number):
+            if x not in self.acc:
+                rx = pos[x] - pos[c]
+                self.acc[x] = self.acc[c] + rx.perp() * al - rx * (w * w)
+        self.steps.append((
+            f"The trial lines meet at {_img(jg)}. Measure {t_name} = $t, A_{jg}{j}^s = $s and A_{jg} = $a; "
+            f"\u03b1_{k.number} = {t_name}/{c}{j} = $al {sense(al)}.",
+            (Point(f"image {jg}", Role.LABEL, Diagram.ACCELERATION, a, _img(jg)),
+             Arrow(f"result {t_name}", Role.RESULT, Diagram.ACCELERATION, tip_n, a, t_name),
+             Arrow(f"result A_{jg}{j}^s", Role.RESULT, Diagram.ACCELERATION, tip_c, a, f"A_{jg}{j}^s"),
+             Arrow(f"result A_{jg}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, a, f"A_{jg}"),
+             *[Point(f"image {x}", Role.LABEL, Diagram.ACCELERATION, self.acc[x], _img(x))
+               for x in m.points_of(k.number) if x != c and x not in m.ground]),
+            eq, {"t": _a(a_t.norm()), "s": _a((a - tip_c).norm()), "a": _a(a.norm()),
+                 "al": Value("angular acceleration", abs(al))}, StepKind.ANSWER))
+
     def image(self, step: FixedToLink) -> None:
-        """Acceleration image of point D on a link PQ: the triangle p'q'd' similar to PQD (notes,
-        "Acceleration image"), placed by the similar triangle itself (the complex ratio (D-P)/(Q-P))."""
+        """Acceleration image of point D of a link placed by two of its points P, Q: the triangle p'q'd'
+        similar to PQD (notes, "Acceleration image"), placed by the similar triangle itself."""
         pos = self.pose.positions
-        a, link = step.point, step.link
-        d = a.name
-        p, q = link.joints
+        link, d = step.link, step.name
+        p, q = step.via
         ap, aq = self.acc[p], self.acc[q]
         ad, t, _ = image_point(pos[p], pos[q], pos[d], ap, aq)
+        self._alpha_of(link.number)
         ip, iq, idd = _img(p), _img(q), _img(d)
         self.acc[d] = ad
         self.steps.append((
@@ -256,7 +390,16 @@ class _Polygon:
              Arrow(f"result A_{d}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, ad, f"A_{d}")),
             None, {"a": _a(ad.norm())}, StepKind.ANSWER))
 
-    def _equation(self, arms, j: str, guided: bool) -> VectorEquation:
+    def _slot_equation(self, j: str, jg: str, c: str) -> VectorEquation:
+        right = (Term("A", j, True, True), Term("A", f"{jg}{j}", True, True, "c"),
+                 Term("A", f"{jg}{j}", False, True, "s"))
+        if c in self.m.ground:
+            left = (Term("A", jg, True, True, "n"), Term("A", jg, False, True, "t"))
+        else:
+            left = self._terms_of(c) + (Term("A", f"{jg}{c}", True, True, "n"), Term("A", f"{jg}{c}", False, True, "t"))
+        return VectorEquation(left, right)
+
+    def _equation(self, arms, j: str, guided: bool, coincident: str = "") -> VectorEquation:
         """The notes' acceleration equations with their marks:
         slider:   A_J(x✓) = A_P + A_JP^n(✓✓) + A_JP^t(x✓)
         rocker:   A_J^n(✓✓) + A_J^t(x✓) = A_P + A_JP^n(✓✓) + A_JP^t(x✓)
@@ -268,6 +411,13 @@ class _Polygon:
                 return (Term("A", j, True, True, "n"), Term("A", j, False, True, "t"))
             return self._terms_of(centre) + (Term("A", f"{j}{centre}", True, True, "n"),
                                              Term("A", f"{j}{centre}", False, True, "t"))
+        if guided and coincident:
+            (_, c), = arms
+            slot = (Term("A", coincident, True, True), Term("A", f"{j}{coincident}", True, True, "c"),
+                    Term("A", f"{j}{coincident}", False, True, "s"))
+            if c in m.ground:
+                return VectorEquation(side(c), slot)
+            return VectorEquation(side(c), slot)
         if guided:
             (_, c), = arms
             return VectorEquation((Term("A", j, False, True),), side(c))
@@ -276,14 +426,18 @@ class _Polygon:
             p, q = q, p
         return VectorEquation(side(q), side(p)) if q in m.ground else VectorEquation(side(p), side(q))
 
-    def _equation_words(self, eq: VectorEquation, arms, j: str, guided: bool) -> str:
+    def _equation_words(self, eq: VectorEquation, arms, j: str, guided: bool, step=None) -> str:
         m = self.m
         links = " and ".join(f"link {l.number} ({l.label})" for l, _ in arms)
         dirs = []
         for link, c in arms:
             n, t = component_name(j, c, "n", m), component_name(j, c, "t", m)
             dirs.append(f"{n} \u2225 {c}{j} towards {c}, {t} \u22a5 {c}{j}")
-        if guided:
+        if guided and step is not None and step.slide.on is not None:
+            jg = step.coincident
+            dirs.append(f"A_{j}{jg}^s \u2225 slot, the Coriolis component A_{j}{jg}^c = 2 \u03c9_{step.slide.on} "
+                        f"\u00d7 V_{j}{jg}")
+        elif guided:
             dirs.append(f"A_{j} \u2225 guide")
         return (f"Relative acceleration equation on {links}: {eq.text(marks=False)}, with {'; '.join(dirs)}; "
                 f"two unknown magnitudes.")
@@ -301,4 +455,4 @@ class _Polygon:
         for words, entities, eq, values, kind in self.steps:
             rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
         return AccelerationAnalysis(rec, self.va, self.acc, self.normal, self.tangential, self.ang, self.cond,
-                                    scale, tuple(self.warnings), self.alpha)
+                                    scale, tuple(self.warnings), self.alpha, self.coriolis, self.sliding)

@@ -18,7 +18,8 @@ from typing import Mapping
 
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
-from ..linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, assembly_plan
+from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles,
+                       assembly_plan)
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
@@ -85,7 +86,7 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, scale: float | N
     assert isinstance(crank, CrankTip)
     poly = _Polygon(m, pose, crank, omega)
     for step in plan[1:]:
-        if isinstance(step, (TwoCircles, CircleAndGuide)):
+        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough)):
             poly.dyad(step)
         elif isinstance(step, FixedToLink):
             poly.image(step)
@@ -108,7 +109,7 @@ class _Polygon:
         pos = pose.positions
         self.vel: dict[str, Vec] = {g: ORIGIN for g in m.ground}
         self.rel: dict[tuple[str, str], Vec] = {}
-        self.ang: dict[int, float] = {s.number: 0.0 for s in m.slides}
+        self.ang: dict[int, float] = {s.number: 0.0 for s in m.slides if s.number is not None and s.on is None}
         self.cond: dict[str, float] = {}
         self.warnings: list[str] = []
         self.equations: list[tuple[str, VectorEquation]] = []
@@ -131,13 +132,40 @@ class _Polygon:
         """The velocity a trial line carries: absolute V_J from a fixed centre, else relative V_JP."""
         return f"V_{j}" if centre in self.m.ground else f"V_{j}{centre}"
 
-    def dyad(self, step: TwoCircles | CircleAndGuide) -> None:
+    def _omega_of(self, number: int) -> float:
+        """The angular velocity of a placed link, from two of its points' velocities if not yet known."""
+        if number not in self.ang:
+            pts = [x for x in self.m.points_of(number) if x in self.vel]
+            a, b = pts[0], pts[1]
+            r = self.pose.positions[b] - self.pose.positions[a]
+            self.ang[number] = r.cross(self.vel[b] - self.vel[a]) / r.dot(r)
+        return self.ang[number]
+
+    def _velocity_on(self, number: int, point: str) -> Vec:
+        """The velocity of the point of link ``number`` standing at ``point``'s position (rigid body)."""
+        pos = self.pose.positions
+        x = next(x for x in self.m.points_of(number) if x in self.vel)
+        return self.vel[x] + (pos[point] - pos[x]).perp() * self._omega_of(number)
+
+    def _close(self, step, trials: list[Line]) -> Vec:
+        hit = intersect_lines(trials[0], trials[1], self.tol)
+        if hit.contact is not Contact.CROSSING:
+            raise singular_position(self.m, step, self.pose, hit.condition, "velocity polygon")
+        self.cond[step.joint] = hit.condition
+        if hit.condition < WARN_SINE:
+            self.warnings.append(near_singular_warning(step.joint, hit.condition, "velocity polygon"))
+        return hit.points[0]
+
+    def dyad(self, step: Dyad) -> None:
         """One vector equation, V_C = V_B + V_CB: two trial lines and their crossing c."""
+        if isinstance(step, SlotThrough):
+            return self.slot_through(step)
         m, pos = self.m, self.pose.positions
         j = step.joint
         guided = isinstance(step, CircleAndGuide)
+        on = step.slide.on if guided else None
         arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
-        eq = _equation(arms, j, m, guided)
+        eq = _equation(arms, j, m, guided, step.coincident if on is not None else "")
         self.equations.append((_equation_caption(eq, arms, j, m, step), eq))
         trials: list[Line] = []
         for link, centre in arms:
@@ -148,20 +176,28 @@ class _Polygon:
             self.steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
                                (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, self.vel[centre],
                                           pj.perp(), f"\u22a5 {centre}{j}"),), eq, {}, StepKind.CONSTRUCTION))
+        slide_v = None
         if guided:
-            g = step.slide.line.direction
-            trials.append(Line(ORIGIN, g))
-            self.steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
-                               (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
-                                          "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
-        hit = intersect_lines(trials[0], trials[1], self.tol)
-        if hit.contact is not Contact.CROSSING:
-            raise singular_position(m, step, self.pose, hit.condition, "velocity polygon")
-        vj = hit.points[0]
+            g = self.pose.lines[j].direction
+            if on is None:
+                trials.append(Line(ORIGIN, g))
+                self.steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
+                                   (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
+                                              "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
+            else:
+                jg = step.coincident
+                v_jg = self._velocity_on(on, jg)
+                self.vel[jg] = v_jg
+                trials.append(Line(v_jg, g))
+                self.steps.append((
+                    f"Mark {image_name(jg)}, the image of the point {jg} of link {on} under {j} "
+                    f"(V_{jg} = $vg); through it draw the direction of V_{j}{jg}, parallel to the slot.",
+                    (Point(f"image {jg}", Role.LABEL, Diagram.VELOCITY, v_jg, image_name(jg)),
+                     TrialLine(f"trial V_{j}{jg}", Role.TRIAL, Diagram.VELOCITY, v_jg, g, "\u2225 slot")),
+                    eq, {"vg": _v(v_jg.norm())}, StepKind.CONSTRUCTION))
+                slide_v = v_jg
+        vj = self._close(step, trials)
         self.vel[j] = vj
-        self.cond[j] = hit.condition
-        if hit.condition < WARN_SINE:
-            self.warnings.append(near_singular_warning(j, hit.condition, "velocity polygon"))
         dead = dead_centre(pos, self.crank, arms, j)
         if dead:
             self.warnings.append(dead)
@@ -174,25 +210,78 @@ class _Polygon:
             self.ang[link.number] = r.cross(v_rel) / r.dot(r)
             what = self._what(j, centre)
             measured.append(Arrow(f"result {what}", Role.RESULT, Diagram.VELOCITY, self.vel[centre], vj, what))
-        if guided or all(c not in m.ground for _, c in arms):
+        if slide_v is not None:
+            self.rel[(j, step.coincident)] = vj - slide_v
+            what = f"V_{j}{step.coincident}"
+            measured.append(Arrow(f"result {what}", Role.RESULT, Diagram.VELOCITY, slide_v, vj, what))
+        if (guided or all(c not in m.ground for _, c in arms)) and all(c not in m.ground for _, c in arms):
             measured.append(Arrow(f"result V_{j}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vj, f"V_{j}"))
+        if guided and step.slide.number is not None:
+            self.ang[step.slide.number] = 0.0 if on is None else self._omega_of(on)
+        self._answer(j, measured, [(link, centre, self._what(j, centre)) for link, centre in arms], eq)
+
+    def _answer(self, j: str, measured: list[Arrow], rates, eq, image: str | None = None) -> None:
         values: dict[str, Value] = {}
         parts = []
         for i, a in enumerate(measured):
             values[f"m{i}"] = _v((a.tip - a.tail).norm())
             parts.append(f"{a.label} = $m{i}")
         omegas = []
-        for i, (link, centre) in enumerate(arms):
+        for i, (link, centre, what) in enumerate(rates):
             w = self.ang[link.number]
             values[f"w{i}"] = _w(w)
-            omegas.append(f"\u03c9_{link.number} = {self._what(j, centre)}/{link.label} = $w{i} {sense(w)}")
-        self.steps.append((f"The trial lines meet at {image_name(j)}. Measure {', '.join(parts)}; "
-                           f"{'; '.join(omegas)}.",
-                           (Point(f"image {j}", Role.LABEL, Diagram.VELOCITY, vj, image_name(j)), *measured),
+            omegas.append(f"\u03c9_{link.number} = {what}/{centre}{j} = $w{i} {sense(w)}")
+        at = image or image_name(j)
+        self.steps.append((f"The trial lines meet at {at}. Measure {', '.join(parts)}; {'; '.join(omegas)}.",
+                           (Point(f"image {j}" if image is None else f"image {image}", Role.LABEL, Diagram.VELOCITY,
+                                  measured[0].tip, at), *measured),
                            eq, values, StepKind.ANSWER))
 
+    def slot_through(self, step: SlotThrough) -> None:
+        """The slotted link turns about its known point P; J slides in its slot.  With JG the point of the
+        slotted link under J:  V_JG = V_P + V_JG,P (square to PJ) = V_J + V_JG,J (along the slot)."""
+        m, pos = self.m, self.pose.positions
+        j, jg, c, k = step.joint, step.coincident, step.centre, step.link
+        r = pos[j] - pos[c]
+        g = self.pose.lines[j].direction
+        eq = _slot_equation(j, jg, c, m)
+        self.equations.append((
+            f"Relative velocity equation at the sliding joint {j} (the point {jg} of link {k.number} under "
+            f"{j}): {eq.text(marks=False)}, with {self._what(jg, c)} \u22a5 {c}{j} and V_{jg}{j} \u2225 slot; "
+            f"two unknown magnitudes.", eq))
+        at = "O_v" if c in m.ground else image_name(c)
+        self.steps.append((f"Draw the direction of {self._what(jg, c)} through {at}, perpendicular to {c}{j}.",
+                           (TrialLine(f"trial {self._what(jg, c)}", Role.TRIAL, Diagram.VELOCITY, self.vel[c],
+                                      r.perp(), f"\u22a5 {c}{j}"),), eq, {}, StepKind.CONSTRUCTION))
+        self.steps.append((f"Draw the direction of V_{jg}{j} through {image_name(j)}, parallel to the slot.",
+                           (TrialLine(f"trial V_{jg}{j}", Role.TRIAL, Diagram.VELOCITY, self.vel[j], g,
+                                      "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
+        v = self._close(step, [Line(self.vel[c], r.perp()), Line(self.vel[j], g)])
+        self.vel[jg] = v
+        self.rel[(jg, c)] = v - self.vel[c]
+        self.rel[(jg, j)] = v - self.vel[j]
+        w = r.cross(v - self.vel[c]) / r.dot(r)
+        self.ang[k.number] = w
+        if step.slide.number is not None:
+            self.ang[step.slide.number] = w
+        for x in m.points_of(k.number):
+            if x not in self.vel:
+                self.vel[x] = self.vel[c] + (pos[x] - pos[c]).perp() * w
+        measured = [Arrow(f"result {self._what(jg, c)}", Role.RESULT, Diagram.VELOCITY, self.vel[c], v,
+                          self._what(jg, c)),
+                    Arrow(f"result V_{jg}{j}", Role.RESULT, Diagram.VELOCITY, self.vel[j], v, f"V_{jg}{j}")]
+        self._answer(jg, measured, [(k, c, self._what(jg, c))], eq, image=image_name(jg))
+        others = [x for x in m.points_of(k.number) if x not in (c,) and x not in m.ground]
+        if others:
+            self.steps.append((
+                f"The image of link {k.number} is {at}{image_name(jg)} turned with it: mark "
+                + ", ".join(image_name(x) for x in others) + f" from \u03c9_{k.number}.",
+                tuple(Point(f"image {x}", Role.LABEL, Diagram.VELOCITY, self.vel[x], image_name(x)) for x in others),
+                None, {}, StepKind.CONSTRUCTION))
+
     def image(self, step: FixedToLink) -> None:
-        """Velocity image of point D on a link PQ: the triangle pqd is similar to PQD (notes, Example 4).
+        """Velocity image of point D of a link placed by two of its points P, Q: the triangle pqd is similar
+        to PQD (notes, Example 4).
 
         d is placed by the similar triangle itself (the notes' option 1), exact for a rigid link and well
         conditioned wherever D lies.  The notes' option 2 -- the perpendiculars to PD through p and to QD
@@ -200,13 +289,13 @@ class _Polygon:
         (or nearly on) the line PQ they are parallel and d simply divides pq as D divides PQ.
         """
         pos, vel = self.pose.positions, self.vel
-        a, link = step.point, step.link
-        d = a.name
-        p, q = link.joints
+        link, d = step.link, step.name
+        p, q = step.via
         P, Q, D = pos[p], pos[q], pos[d]
         vp, vq = vel[p], vel[q]
         ip, iq, idd = image_name(p), image_name(q), image_name(d)
         vd, t, _ = image_point(P, Q, D, vp, vq)
+        self._omega_of(link.number)
         pd, qd = D - P, D - Q
         crossing = abs(pd.unit().cross(qd.unit())) if pd.norm() > 0 and qd.norm() > 0 else 0.0
         if crossing < WARN_SINE:
@@ -247,8 +336,15 @@ class _Polygon:
                                 tuple(self.warnings), self.omega)
 
 
-def _equation(arms, j: str, m: Mechanism, guided: bool) -> VectorEquation:
-    """V_J = V_P + V_JP with the notes' marks; both centres moving: V_P + V_JP = V_Q + V_JQ."""
+def _equation(arms, j: str, m: Mechanism, guided: bool, coincident: str = "") -> VectorEquation:
+    """V_J = V_P + V_JP with the notes' marks; both centres moving: V_P + V_JP = V_Q + V_JQ; on a moving
+    slot: V_P + V_JP = V_JG + V_J,JG (JG the slotted link's point under J)."""
+    if coincident:
+        (_, c), = arms
+        left = (Term("V", coincident, True, True), Term("V", f"{j}{coincident}", False, True))
+        if c in m.ground:
+            return VectorEquation((Term("V", j, False, True),), left)
+        return VectorEquation((Term("V", c, True, True), Term("V", f"{j}{c}", False, True)), left)
     moving = [(l, c) for l, c in arms if c not in m.ground]
     fixed = [(l, c) for l, c in arms if c in m.ground]
     if guided or fixed:
@@ -262,10 +358,18 @@ def _equation(arms, j: str, m: Mechanism, guided: bool) -> VectorEquation:
                           (Term("V", q, True, True), Term("V", f"{j}{q}", False, True)))
 
 
+def _slot_equation(j: str, jg: str, c: str, m: Mechanism) -> VectorEquation:
+    """V_JG = V_J + V_JG,J about a fixed centre; V_C + V_JG,C = V_J + V_JG,J about a moving one."""
+    right = (Term("V", j, True, True), Term("V", f"{jg}{j}", False, True))
+    if c in m.ground:
+        return VectorEquation((Term("V", jg, False, True),), right)
+    return VectorEquation((Term("V", c, True, True), Term("V", f"{jg}{c}", False, True)), right)
+
+
 def _equation_caption(eq: VectorEquation, arms, j: str, m: Mechanism, step) -> str:
     links = " and ".join(f"link {l.number} ({l.label})" for l, _ in arms)
     dirs = [f"V_{j}{c} \u22a5 {c}{j}" if c not in m.ground else f"V_{j} \u22a5 {c}{j}" for _, c in arms]
     if isinstance(step, CircleAndGuide):
-        dirs.append(f"V_{j} \u2225 guide")
+        dirs.append(f"V_{j} \u2225 guide" if step.slide.on is None else f"V_{j}{step.coincident} \u2225 slot")
     return (f"Relative velocity equation on {links}: {eq.text(marks=False)}, with {', '.join(dirs)}; "
             f"two unknown magnitudes.")
