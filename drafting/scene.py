@@ -42,7 +42,8 @@ class SceneError(Exception):
         # one line, whatever the file holds: control characters escaped, long names and quoted values
         # cut (textsafe), so the file and the key always show
         where, key = cut_middle(printable(str(path)), 120), cut(printable(key), 80)
-        super().__init__(one_line(f"{where}: {key}: {problem}" if key else f"{where}: {problem}"))
+        problem = one_line(problem)
+        super().__init__(f"{where}: {key}: {problem}" if key else f"{where}: {problem}")
 
 
 @dataclass(frozen=True)
@@ -281,35 +282,22 @@ class _Reader:
             raise self.fail("link", "is missing: a mechanism needs [[link]] tables")
         joints = {j for x in links for j in x.joints}
 
-        slides: list[Slide] = []
-        for i, t in enumerate(self.array("slider"), 1):
-            k = f"slider[{i}]"
-            self.table(k, {"number", "joint", "through", "angle"}, {"number", "joint", "through"}, value=t)
-            n = self.number(f"{k}.number", t["number"])
-            if any(x.number == n for x in links) or any(s.number == n for s in slides):
-                raise self.fail(f"{k}.number", f"link {n} is already used")
-            j = self.name(f"{k}.joint", t["joint"])
-            if j not in joints:
-                raise self.fail(f"{k}.joint", f"joint {j} is on no link")
-            if any(s.joint == j for s in slides):      # one guide per joint (the guide is named after it)
-                raise self.fail(f"{k}.joint", f"joint {j} already slides on the guide of another slider")
-            slides.append(Slide(n, j, self.point(f"{k}.through", t["through"], units),
-                                self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)))
-
         attached: list[Attached] = []
         for i, t in enumerate(self.array("point"), 1):
             k = f"point[{i}]"
             self.table(k, {"name", "link", "from", "distance", "angle"}, {"name", "link", "from", "distance"},
                        value=t)
             nm = self.name(f"{k}.name", t["name"])
-            if nm in joints or nm in ground:
-                raise self.fail(f"{k}.name", f"{nm} is already a joint")
+            if nm in ground:
+                raise self.fail(f"{k}.name", f"{nm} is a fixed pivot")
             if any(a.name == nm for a in attached):
                 raise self.fail(f"{k}.name", f"point {nm} is defined twice")
             ln = self.number(f"{k}.link", t["link"])
             link = next((x for x in links if x.number == ln), None)
             if link is None:
                 raise self.fail(f"{k}.link", f"there is no link {ln}")
+            if nm in link.joints:
+                raise self.fail(f"{k}.name", f"{nm} is already a joint of link {ln} ({'-'.join(link.joints)})")
             base = self.name(f"{k}.from", t["from"])
             if base not in link.joints:
                 raise self.fail(f"{k}.from", f"{base} is not a joint of link {ln} ({'-'.join(link.joints)})")
@@ -317,6 +305,46 @@ class _Reader:
             if dist <= 0:
                 raise self.fail(f"{k}.distance", "must be positive")
             attached.append(Attached(nm, ln, base, dist, self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)))
+        points = joints | {a.name for a in attached}
+
+        slides: list[Slide] = []
+        for i, t in enumerate(self.array("slider"), 1):
+            k = f"slider[{i}]"
+            self.table(k, {"number", "joint", "through", "angle", "on", "offset"}, {"joint"}, value=t)
+            n = None
+            if "number" in t:
+                n = self.number(f"{k}.number", t["number"])
+                if any(x.number == n for x in links) or any(s.number == n for s in slides):
+                    raise self.fail(f"{k}.number", f"link {n} is already used")
+            j = self.name(f"{k}.joint", t["joint"])
+            if j not in points:
+                raise self.fail(f"{k}.joint", f"joint {j} is on no link")
+            if j in ground:
+                raise self.fail(f"{k}.joint", f"{j} is a fixed pivot and cannot slide")
+            if any(s.joint == j for s in slides):      # one guide per joint (the guide is named after it)
+                raise self.fail(f"{k}.joint", f"joint {j} already slides on the guide of another slider")
+            angle = self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)
+            if "on" in t:
+                on = self.number(f"{k}.on", t["on"])
+                slotted = next((x for x in links if x.number == on), None)
+                if slotted is None:
+                    raise self.fail(f"{k}.on", f"there is no link {on} to cut the slot in")
+                if j in slotted.joints or any(a.name == j and a.link == on for a in attached):
+                    raise self.fail(f"{k}.on", f"{j} is a point of link {on}, so it cannot slide in its slot")
+                if "through" in t:
+                    raise self.fail(f"{k}.through", "a slot moves with its link: give offset (and angle), "
+                                                    "not a fixed point")
+                offset = self.quantity(f"{k}.offset", t.get("offset", 0), "length", units)
+                slides.append(Slide(n, j, Vec(0.0, 0.0), angle, on, offset))
+            else:
+                if "through" not in t:
+                    raise self.fail(f"{k}.through", "is missing: a fixed guide needs a point it passes through "
+                                                    "(or give on = <link> for a slot in a moving link)")
+                if "offset" in t:
+                    raise self.fail(f"{k}.offset", "applies to a slot in a link (on = <link>)")
+                if n is None:
+                    raise self.fail(f"{k}.number", "a block on a fixed guide needs its link number")
+                slides.append(Slide(n, j, self.point(f"{k}.through", t["through"], units), angle))
 
         inp = self.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha"}, {"link", "angle"})
         crank_no = self.number("input.link", inp["link"])
@@ -348,7 +376,7 @@ class _Reader:
         assembly = self.named_table("assembly")
         branches = {self.name(f"assembly.{j}", j): self.branch(f"assembly.{j}", v) for j, v in assembly.items()}
         for j in branches:
-            if j not in joints:
+            if j not in points:
                 raise self.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
         m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
         try:
