@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Mapping, Sequence
 
 from . import analytic
+from .errors import DegenerateInput
 from .geometry import Vec
 from .linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, TwoCircles, assembly_plan
 from .quantities import Measured
@@ -38,6 +39,10 @@ def agreement(kind: str, condition: float) -> float:
     p = _ORDER.get(kind, 1)
     c = max(condition, 1e-300)
     return max(AGREEMENT, SAFETY * 2.220446049250313e-16 / c ** p)
+
+
+class NotModelled(Exception):
+    """The analytic check has no model of this mechanism (the message says what it lacks)."""
 
 
 @dataclass(frozen=True)
@@ -130,7 +135,10 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
                                                                else (d.link,))}
             plain = all(f.point.link in solved for f in fixed)
     if not plain:
-        st = chain_solution(m, angle, omega, alpha)
+        try:
+            st = chain_solution(m, angle, omega, alpha)
+        except DegenerateInput as e:
+            raise NotModelled(f"the vector-loop check does not model this mechanism yet ({e})") from None
         if not bool(st.assembles):
             return None
         at = st.at()

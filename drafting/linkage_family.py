@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from constructions.check import analytic_solution, analytic_values
+from constructions.check import NotModelled, analytic_solution, analytic_values
 from constructions.linkage import assembly_plan, locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
@@ -50,9 +50,13 @@ def _acceleration(study):
 
 
 def _analytic(study):
+    """The vector-loop solution, None where it does not assemble, or the NotModelled reason."""
     s = study.scene
-    return analytic_solution(s.mechanism, s.angle, s.omega, s.alpha,
-                             accelerations=study.asked("acceleration"))
+    try:
+        return analytic_solution(s.mechanism, s.angle, s.omega, s.alpha,
+                                 accelerations=study.asked("acceleration"))
+    except NotModelled as e:
+        return e
 
 
 def _measured(study) -> list:
@@ -74,10 +78,15 @@ def _scales(study) -> dict[str, float]:
     return out
 
 
+def _solution(study):
+    a = study.get("analytic")
+    return None if isinstance(a, NotModelled) else a
+
+
 def _analytic_values(study):
     if not study.asked("velocity"):
         return None
-    return analytic_values(study.scene.mechanism, study.get("analytic"))
+    return analytic_values(study.scene.mechanism, _solution(study))
 
 
 def _construction(study) -> Construction:
@@ -95,15 +104,19 @@ def _warnings(study) -> tuple[str, ...]:
         r = study.result(name)
         if r is not None:
             w += [x for x in r.warnings if x not in w]
-    if study.asked("velocity") and study.get("analytic") is None:
-        w.append("No analytic check: the vector-loop solution does not assemble at this position.")
+    if study.asked("velocity"):
+        a = study.get("analytic")
+        if isinstance(a, NotModelled):
+            w.append(f"No analytic check: {a}.")
+        elif a is None:
+            w.append("No analytic check: the vector-loop solution does not assemble at this position.")
     return tuple(w)
 
 
 def _model(study) -> str | None:
     if not study.asked("velocity"):
         return None
-    a = study.get("analytic")
+    a = _solution(study)
     return a.model if a is not None else None
 
 
