@@ -393,7 +393,7 @@ def test_1e_5_rad_from_toggle_gives_finite_values_with_a_warning(dims, extended,
     m, theta = toggle_case(dims, extended)
     th = theta + side * 1e-5                      # the side on which the loop closes
     va = solve(m, th, 10.0)
-    assert len(va.warnings) == 1 and "Near a singular position at C" in va.warnings[0]
+    assert len(va.warnings) == 1 and re.search(r"Near a (toggle|change point|limit position) at C", va.warnings[0])
     assert SINGULAR_SINE < va.conditions["C"] < WARN_SINE
     ref = analytic_four_bar(m, th, 10.0)
     assert ref["assembles"]

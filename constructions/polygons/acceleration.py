@@ -166,7 +166,7 @@ class _Polygon:
             words = (f"Draw A_{tip}^n = \u03c9_{n}\u00b2 \u00b7 {name} ($an) from O_a, parallel to {name} towards "
                      f"{pivot}; A_{tip}^t = \u03b1_{n} \u00b7 {name} = 0 since \u03b1_{n} = 0, so its tip is "
                      f"{_img(tip)}.")
-        entities.append(Point(f"image {tip}", Role.LABEL, Diagram.ACCELERATION, an + at, _img(tip)))
+        entities.append(Point(f"acceleration image {tip}", Role.LABEL, Diagram.ACCELERATION, an + at, _img(tip)))
         self.steps.append((words, tuple(entities), None, {"an": _a(an.norm()), "at": _a(at.norm())},
                            StepKind.CONSTRUCTION))
 
@@ -202,7 +202,7 @@ class _Polygon:
             raise singular_position(self.m, step, self.pose, hit.condition, "acceleration polygon")
         self.cond[step.joint] = hit.condition
         if hit.condition < WARN_SINE:
-            self.warnings.append(near_singular_warning(step.joint, hit.condition, "acceleration polygon"))
+            self.warnings.append(near_singular_warning(self.m, step, self.pose, hit.condition, "acceleration polygon"))
         return hit.points[0]
 
     def _coriolis(self, slot_link: int, v_rel: Vec, start: Vec, name: str, moving: str, frame_point: str,
@@ -269,7 +269,7 @@ class _Polygon:
                 self.acc[jg] = a_jg
                 self.steps.append((f"Mark {_img(jg)}, the acceleration image of the point {jg} of link {on} "
                                    f"under {j} (A_{jg} = $a).",
-                                   (Point(f"image {jg}", Role.LABEL, Diagram.ACCELERATION, a_jg, _img(jg)),),
+                                   (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a_jg, _img(jg)),),
                                    eq, {"a": _a(a_jg.norm())}, StepKind.CONSTRUCTION))
                 v_rel = vel.velocities[j] - vel.velocities[jg]
                 tip = self._coriolis(on, v_rel, a_jg, f"A_{j}{jg}^c", f"{j}{jg}", jg, eq)
@@ -309,7 +309,7 @@ class _Polygon:
         self.steps.append((
             f"The trial lines meet at {_img(j)}. Measure {', '.join(parts)} and A_{j} (from O_a to {_img(j)}) = $a; "
             f"{'; '.join(alphas)}.",
-            (Point(f"image {j}", Role.LABEL, Diagram.ACCELERATION, aj, _img(j)), *measured),
+            (Point(f"acceleration image {j}", Role.LABEL, Diagram.ACCELERATION, aj, _img(j)), *measured),
             eq, values, StepKind.ANSWER))
 
     def slot_through(self, step: SlotThrough) -> None:
@@ -361,11 +361,11 @@ class _Polygon:
         self.steps.append((
             f"The trial lines meet at {_img(jg)}. Measure {t_name} = $t, A_{jg}{j}^s = $s and A_{jg} = $a; "
             f"\u03b1_{k.number} = {t_name}/{c}{j} = $al {sense(al)}.",
-            (Point(f"image {jg}", Role.LABEL, Diagram.ACCELERATION, a, _img(jg)),
+            (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a, _img(jg)),
              Arrow(f"result {t_name}", Role.RESULT, Diagram.ACCELERATION, tip_n, a, t_name),
              Arrow(f"result A_{jg}{j}^s", Role.RESULT, Diagram.ACCELERATION, tip_c, a, f"A_{jg}{j}^s"),
              Arrow(f"result A_{jg}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, a, f"A_{jg}"),
-             *[Point(f"image {x}", Role.LABEL, Diagram.ACCELERATION, self.acc[x], _img(x))
+             *[Point(f"acceleration image {x}", Role.LABEL, Diagram.ACCELERATION, self.acc[x], _img(x))
                for x in m.points_of(k.number) if x != c and x not in m.ground]),
             eq, {"t": _a(a_t.norm()), "s": _a((a - tip_c).norm()), "a": _a(a.norm()),
                  "al": Value("angular acceleration", abs(al))}, StepKind.ANSWER))
@@ -386,7 +386,7 @@ class _Polygon:
             f"{p}{q}{d}, in the same order of letters (it is {p}{q}{d} turned and scaled as {ip}{iq} is {p}{q}). "
             f"Join O_a to {idd}: A_{d} = $a.",
             (Polygon(f"acceleration image {p}{q}{d}", Role.IMAGE, Diagram.ACCELERATION, (ap, aq, ad)),
-             Point(f"image {d}", Role.LABEL, Diagram.ACCELERATION, ad, idd),
+             Point(f"acceleration image {d}", Role.LABEL, Diagram.ACCELERATION, ad, idd),
              Arrow(f"result A_{d}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, ad, f"A_{d}")),
             None, {"a": _a(ad.norm())}, StepKind.ANSWER))
 

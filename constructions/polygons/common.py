@@ -70,23 +70,38 @@ def sense_short(rate: float) -> str:
     return "CCW" if rate > 0 else "CW" if rate < 0 else ""
 
 
+def singular_kind(m: Mechanism, step, pose: Pose) -> tuple[str, str]:
+    """The kind of singular position a dyad's trial lines announce when they (nearly) fail to cross, and
+    the angle that shows it: ("toggle" | "change point", transmission angle) for two links meeting at the
+    joint, ("limit position", angle between the link and its guide or slot) otherwise."""
+    j = step.joint
+    p = pose.positions
+    if isinstance(step, TwoCircles):
+        kind = "change point" if change_point(m, pose) else "toggle"
+        return kind, f"transmission angle {transmission_angle(pose, step):.3g} deg"
+    line = pose.lines.get(j) if pose.lines else None
+    centre = step.centre
+    r = p[j] - p[centre]
+    if line is not None and r.norm() > 0:
+        a = math.degrees(math.acos(min(1.0, abs(line.direction.dot(r.unit())))))
+        return "limit position", f"link {step.link.number} at {a:.3g} deg to the {'slot' if step.slide.on else 'guide'}"
+    return "limit position", "link square to its guide"
+
+
 def singular_position(m: Mechanism, step, pose: Pose, condition: float, polygon: str) -> IndeterminatePosition:
     """The error for trial lines that do not cross: the position named (toggle, change point, limit
     position) with the crank angle, the links in line and the transmission angle."""
     j = step.joint
     where = describe_angle(pose.angle)
+    kind, angle = singular_kind(m, step, pose)
     if isinstance(step, TwoCircles):
         a, b = step.link_a, step.link_b
-        kind = "change point" if change_point(m, pose) else "toggle"
-        mu = transmission_angle(pose, step)
-        reason = (f"{kind}: links {a.number} ({a.label}) and {b.number} ({b.label}) are in line "
-                  f"(transmission angle {mu:.3g} deg), so the trial lines for {j} are parallel "
-                  f"(sine {condition:.1e}) and the {polygon} cannot close")
+        reason = (f"{kind}: links {a.number} and {b.number} are in line at {j} ({angle}), so the trial lines "
+                  f"for {j} are parallel (sine {condition:.1e}) and the {polygon} cannot close")
     else:
-        kind = "limit position"
-        reason = (f"limit position (lock): link {step.link.number} ({step.link.label}) is square to the guide "
-                  f"of {j}, so the trial lines for {j} are parallel (sine {condition:.1e}) and the {polygon} "
-                  f"cannot close")
+        reason = (f"limit position (lock): link {step.link.number} stands square to the "
+                  f"{'slot' if step.slide.on else 'guide'} of {j} ({angle}), so the trial lines for {j} are "
+                  f"parallel (sine {condition:.1e}) and the {polygon} cannot close")
     return IndeterminatePosition(reason, position=where, kind=kind, condition=condition)
 
 
@@ -98,10 +113,11 @@ def transmission_angle(pose: Pose, step: TwoCircles) -> float:
     return math.degrees(abs(math.atan2(u.cross(v), u.dot(v))))
 
 
-def near_singular_warning(j: str, condition: float, what: str) -> str:
-    return (f"Near a singular position at {j} ({what}): the trial lines cross at "
-            f"{math.degrees(math.asin(min(condition, 1.0))):.3g} deg; values are sensitive to the "
-            f"drawing (rounding error about {rounding_estimate(condition):.1e} relative).")
+def near_singular_warning(m: Mechanism, step, pose: Pose, condition: float, what: str) -> str:
+    kind, angle = singular_kind(m, step, pose)
+    return (f"Near a {kind} at {step.joint} ({angle}; {describe_angle(pose.angle)}): the trial lines of the "
+            f"{what} cross at {math.degrees(math.asin(min(condition, 1.0))):.3g} deg; values are sensitive "
+            f"to the drawing (rounding error about {rounding_estimate(condition):.1e} relative).")
 
 
 def dead_centre(pos, crank: CrankTip, arms, j: str) -> str | None:

@@ -153,7 +153,7 @@ class _Polygon:
             raise singular_position(self.m, step, self.pose, hit.condition, "velocity polygon")
         self.cond[step.joint] = hit.condition
         if hit.condition < WARN_SINE:
-            self.warnings.append(near_singular_warning(step.joint, hit.condition, "velocity polygon"))
+            self.warnings.append(near_singular_warning(self.m, step, self.pose, hit.condition, "velocity polygon"))
         return hit.points[0]
 
     def dyad(self, step: Dyad) -> None:
@@ -273,9 +273,11 @@ class _Polygon:
         self._answer(jg, measured, [(k, c, self._what(jg, c))], eq, image=image_name(jg))
         others = [x for x in m.points_of(k.number) if x not in (c,) and x not in m.ground]
         if others:
+            first = "the pole O_v" if c in m.ground else image_name(c)
             self.steps.append((
-                f"The image of link {k.number} is {at}{image_name(jg)} turned with it: mark "
-                + ", ".join(image_name(x) for x in others) + f" from \u03c9_{k.number}.",
+                f"The velocity image of link {k.number} runs from {first} (the image of {c}) through "
+                f"{image_name(jg)}: mark " + ", ".join(f"{image_name(x)} ({image_name(x)} is {c}{x} turned 90\u00b0 "
+                                                      f"and scaled by \u03c9_{k.number})" for x in others) + ".",
                 tuple(Point(f"image {x}", Role.LABEL, Diagram.VELOCITY, self.vel[x], image_name(x)) for x in others),
                 None, {}, StepKind.CONSTRUCTION))
 
