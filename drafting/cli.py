@@ -42,7 +42,7 @@ class UserError(Exception):
     3 for a singular position (toggle, change point, limit position) where a polygon cannot close."""
 
     def __init__(self, message: str, code: int = EXIT_INPUT) -> None:
-        super().__init__(one_line(message))     # escaped, long values cut: one line whatever the input
+        super().__init__(one_line(message, cut_quotes=False))    # escaped and bounded: one line
         self.code = code
 
 
@@ -129,8 +129,10 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
             study = _solve(_study(path, paper))
             try:
                 written = write_sheets([sheet_for(study)], out, path.stem, formats)
-            except (ExportError, LayoutError) as e:
+            except ExportError as e:                  # names the output file it could not write
                 raise UserError(f"{path}: {e}") from None
+            except LayoutError as e:                  # the sheet: the paper is what the user can change
+                raise UserError(f"{path}: drawing.paper: {e}") from None
         except UserError as e:
             print(f"drafting: error: {e}", file=sys.stderr)
             failed += 1

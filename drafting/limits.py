@@ -119,14 +119,17 @@ def check_text(text: str) -> None:
         if kind == "nl":
             line += 1
             if not stack:
-                expect_key, key_parts, key_text, header = True, 1, [], False
+                expect_key, key_parts, key_text, header, last_key = True, 1, [], False, ""
             continue
         if kind in ("ws", "comment"):
             continue
         if kind in ("bs", "ls", "word", "other"):
-            if kind == "word" and len(tok) > MAX_NUMBER_TOKEN:
-                raise fail(f"a bare value of {len(tok):,} characters; numbers and bare keys may have at "
-                           f"most {MAX_NUMBER_TOKEN}")
+            if kind == "word" and (expect_key or header) and len(tok) > MAX_STRING:
+                last_key = ""
+                raise fail(f"a key of {len(tok):,} characters; keys may have at most {MAX_STRING}")
+            if kind == "word" and not (expect_key or header) and len(tok) > MAX_NUMBER_TOKEN:
+                raise fail(f"a bare value of {len(tok):,} characters; numbers may have at most "
+                           f"{MAX_NUMBER_TOKEN}")
             if expect_key or header:
                 key_text.append(tok)
             continue
@@ -136,7 +139,7 @@ def check_text(text: str) -> None:
                 key_parts += 1
                 key_text.append(".")
                 if depth + key_parts > MAX_DEPTH:
-                    last_key = _short("".join(key_text))
+                    last_key = _short("".join(key_text).strip(". "))
                     raise fail(f"the key nests deeper than {MAX_DEPTH} levels; a scene nests at most "
                                f"{MAX_DEPTH} deep")
             continue

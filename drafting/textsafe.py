@@ -22,7 +22,7 @@ from typing import Iterator
 REPLACEMENT = "\ufffd"
 QUOTE_LIMIT = 60
 """Quoted values in messages are cut to this many characters (plus an ellipsis)."""
-MESSAGE_LIMIT = 400
+MESSAGE_LIMIT = 1000
 """A message longer than this is cut (whatever survives the quote cutting)."""
 
 # XML 1.0: Char ::= #x9 | #xA | #xD | [#x20-#xD7FF] | [#xE000-#xFFFD] | [#x10000-#x10FFFF]
@@ -81,10 +81,14 @@ def _cut_quoted(m: re.Match) -> str:
     return q[:QUOTE_LIMIT + 1] + "\u2026" + q[-1]
 
 
-def one_line(message: str) -> str:
-    """A message fit for one line of stderr: escaped, quoted values cut, the whole bounded."""
-    text = _QUOTED.sub(_cut_quoted, printable(message))
-    return cut(text, MESSAGE_LIMIT)
+def one_line(message: str, *, cut_quotes: bool = True) -> str:
+    """A message fit for one line of stderr: escaped, quoted values cut (unless ``cut_quotes`` is
+    false: for a message composed of parts already cut, where a quote in a file name would mislead the
+    cutting), the whole bounded to :data:`MESSAGE_LIMIT` characters (cut in the middle)."""
+    text = printable(message)
+    if cut_quotes:
+        text = _QUOTED.sub(_cut_quoted, text)
+    return cut_middle(text, MESSAGE_LIMIT)
 
 
 class _SafeWriter:

@@ -337,7 +337,8 @@ def test_full_disk_while_writing_leaves_nothing(tmp_path, monkeypatch):
 
 def test_a_failed_rename_puts_back_what_was_there(tmp_path, monkeypatch):
     """The svg is renamed into place, then the pdf's rename fails: the old svg comes back."""
-    (tmp_path / "sheet.svg").write_text("old svg")
+    old = '<svg xmlns="http://www.w3.org/2000/svg"><!-- old --></svg>'
+    (tmp_path / "sheet.svg").write_text(old)
     real = os.replace
     seen = []
 
@@ -351,7 +352,7 @@ def test_a_failed_rename_puts_back_what_was_there(tmp_path, monkeypatch):
     with pytest.raises(ExportError, match="sheet.pdf"):
         write_sheet(small_sheet(), tmp_path, "sheet", ("svg", "pdf"))
     assert sorted(os.listdir(tmp_path)) == ["sheet.svg"]
-    assert (tmp_path / "sheet.svg").read_text() == "old svg"
+    assert (tmp_path / "sheet.svg").read_text() == old
 
 
 def test_stale_temporary_files_are_removed_by_the_next_run(tmp_path):
@@ -362,7 +363,7 @@ def test_stale_temporary_files_are_removed_by_the_next_run(tmp_path):
     dead.wait()
     stale = tmp_path / f".drafting-tmp-{dead.pid}-3-sheet.pdf"          # its process is gone
     old = tmp_path / f".drafting-tmp-{os.getppid()}-1-other.png"        # alive, but two hours old
-    alive = tmp_path / f".drafting-tmp-{os.getppid()}-2-busy.svg"       # alive and recent: in use
+    alive = tmp_path / f".drafting-tmp-{os.getppid()}-2-busy.pdf"       # alive and recent: in use
     mine = tmp_path / "notes.txt"
     for p in (stale, old, alive, mine):
         p.write_text("x")

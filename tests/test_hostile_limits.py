@@ -1,0 +1,283 @@
+"""Limits (README, "Scene files" / "Limits") and units read strictly: each refusal is one sentence
+naming the file, the key and the limit, with exit 2, in well under a second; and every SVG the test
+suite writes is well-formed, inert XML."""
+
+from __future__ import annotations
+
+import math
+import time
+from pathlib import Path
+
+import pytest
+
+from drafting import limits
+from drafting.textsafe import printable
+from drafting.cli import builtin_example, main
+from drafting.scene import SceneError, load_scene, parse_scene
+from drafting.units import DEFAULT_UNITS, KINDS, UnitError, check_unit, format_value, from_si, to_si
+
+EXAMPLE = builtin_example().read_text()
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def refuse(tmp_path, capsys, text: str | bytes, key: str, *words: str, name: str = "scene.toml") -> str:
+    p = tmp_path / name
+    p.write_bytes(text.encode("utf-8") if isinstance(text, str) else text)
+    to_si("1 mm", "length", "mm")             # one-time start-up (pint's registry) is not the refusal's
+    t0 = time.perf_counter()
+    code = main(["render", str(p), "-o", str(tmp_path / "out"), "--format", "svg"])
+    seconds = time.perf_counter() - t0
+    out, err = capsys.readouterr()
+    assert code == 2, err
+    assert err.count("\n") == 1 and err.startswith(f"drafting: error: {printable(str(p))}: "), err
+    assert key in err, err
+    for w in words:
+        assert w in err, err
+    assert "Traceback" not in err and "Error:" not in err
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+    assert seconds < 1.0, f"refusal took {seconds:.2f} s"
+    return err
+
+
+# -- limits -----------------------------------------------------------------------------------------------
+
+def test_file_size(tmp_path, capsys):
+    refuse(tmp_path, capsys, EXAMPLE + "#" * limits.MAX_FILE_BYTES, "is larger than 256 KiB", "at most 256 KiB")
+
+
+@pytest.mark.parametrize("extra", [
+    "deep = " + "[" * 100_000 + "]" * 100_000,
+    "deep = " + "{a = " * 30_000 + "1" + "}" * 30_000,
+    ".".join(["a"] * 100_000) + " = 1",
+    "[" + ".".join(["k"] * 100_000) + "]",
+    "deep = " + "[" * 11 + "]" * 11,
+])
+def test_nesting_is_refused_before_the_toml_reader_recurses(tmp_path, capsys, extra):
+    refuse(tmp_path, capsys, extra + "\n" + EXAMPLE, "line 1", "deeper than 10 levels")
+
+
+def test_nesting_inside_a_real_key(tmp_path, capsys):
+    refuse(tmp_path, capsys, EXAMPLE.replace("O1 = [0, 0]", "O1 = " + "[" * 500 + "]" * 500), "(O1)",
+           "nest deeper than 10")
+
+
+@pytest.mark.parametrize("section,make,what", [
+    ("frame", lambda i: f"Q{i} = [{i}, 0]\n", "fixed pivots"),
+    ("point", lambda i: f'\n[[point]]\nname = "P{i}"\nlink = 2\nfrom = "B"\ndistance = 5\n', "points"),
+    ("link", lambda i: f'\n[[link]]\nnumber = {10 + i}\njoints = ["J{i}", "K{i}"]\nlength = 5\n', "links"),
+    ("slider", lambda i: f'\n[[slider]]\nnumber = {10 + i}\njoint = "C"\nthrough = [0, 0]\n', "sliders"),
+])
+def test_counts(tmp_path, capsys, section, make, what):
+    n = 10_000 if section == "frame" else 1000
+    body = "".join(make(i) for i in range(n))
+    text = EXAMPLE.replace("[frame]\n", "[frame]\n" + body) if section == "frame" else EXAMPLE + body
+    if section != "frame":
+        text = text.replace("\n[input]", "\n[input]")
+    refuse(tmp_path, capsys, text, f": {section}: ", f"{n + (1 if section in ('frame', 'slider') else 2 if section == 'link' else 0):,} {what}",
+           "at most 50")
+
+
+def test_strings_and_keys(tmp_path, capsys):
+    refuse(tmp_path, capsys, EXAMPLE.replace('title = "Slider-crank', 'title = "' + "x" * 5000), "drawing.title",
+           "5,", "at most 200")
+    line = EXAMPLE.split("O1 = [0, 0]")[0].count("\n") + 2
+    refuse(tmp_path, capsys, EXAMPLE.replace("O1 = [0, 0]", "O1 = [0, 0]\n" + "Q" * 300 + " = [1, 1]"),
+           f"line {line}: ", "a key of 300 characters; keys may have at most 200")
+    refuse(tmp_path, capsys, EXAMPLE.replace("O1 = [0, 0]", "O1 = [0, 0]\n\"" + "Q" * 300 + "\" = [1, 1]"),
+           "frame.QQQQ", "a key of 300 characters")
+
+
+def test_a_number_too_long_for_python(tmp_path, capsys):
+    refuse(tmp_path, capsys, EXAMPLE.replace("length = 94", "length = 1" + "0" * 5000), "line ",
+           "a bare value of 5,001 characters")
+
+
+@pytest.mark.parametrize("old,new,key,words", [
+    ("length = 94", "length = 1" + "0" * 30, "link[2].length", "too large"),
+    ("length = 94", "length = 1e300", "link[2].length", "a length may be at most 1e+09 mm"),
+    ("length = 94", "length = 1e-9", "link[2].length", "at least 0.001 mm (write 0 for zero)"),
+    ("O1 = [0, 0]", "O1 = [1e300, 0]", "frame.O1", "too large"),
+    ("O1 = [0, 0]", "O1 = [1e8, 0]", "link[1].length", "within a factor 1e6"),
+    ("through = [0, 0]", "through = [0, 1e-5]", "slider[1].through", "at least 0.001 mm"),
+    ("O1 = [0, 0]", 'O1 = ["0 m", "2e5 m"]', "link[1].length", "beside 2.000e+08 mm at frame.O1"),
+    ('angle = "70 deg"', 'angle = "1e9 deg"', "input.angle", "too large"),
+    ('tip_speed = "500 mm/s"', 'tip_speed = "1e20 m/s"', "input.tip_speed", "too large"),
+    ('tip_speed = "500 mm/s"', "tip_speed = inf", "input.tip_speed", "too large"),
+    ('tip_speed = "500 mm/s"', "tip_speed = nan", "input.tip_speed", "not a number"),
+])
+def test_magnitudes(tmp_path, capsys, old, new, key, words):
+    assert old in EXAMPLE
+    refuse(tmp_path, capsys, EXAMPLE.replace(old, new, 1), key, words)
+
+
+def test_the_design_span_of_lengths_is_accepted():
+    """Links from 1e-3 to 1e3 (the design's hard case) are a factor 1e6 apart: accepted."""
+    s = parse_scene(EXAMPLE.replace("O1 = [0, 0]", "O1 = [0, 0]\nFAR = [1000, 0]")
+                    .replace("through = [0, 0]", "through = [0, 0.001]"))
+    assert s.mechanism.ground["FAR"].x == pytest.approx(1.0)
+
+
+def test_sweep_limit_is_reserved():
+    assert limits.sweep_problem(10**7) is None
+    assert "at most 10,000,000" in limits.sweep_problem(10**7 + 1)
+    assert limits.sweep_problem(0)
+
+
+# -- units: a number and a unit name, never an expression ---------------------------------------------------
+
+@pytest.mark.parametrize("value,words", [
+    ("9**9**9 mm", "arithmetic is not read"),
+    ("2*3 mm", "arithmetic is not read"),
+    ("2 * 3 mm", "arithmetic is not read"),
+    ("10**10", "arithmetic is not read"),
+    ("(5) mm", "cannot be read"),
+    ("__import__('os') mm", "cannot be read"),
+    ("50 percent", "not a value of length"),
+    ("50 %", "not a value of length"),
+    ("50 dimensionless", "not a value of length"),
+    ("50 deg", "not a value of length"),
+    ("60,5 mm", "decimal comma; use a decimal point"),
+    ("60,5", "decimal comma; use a decimal point"),
+    ("5 m^9", "a power must be a whole number"),
+    ("5 furlongs per fortnight", "not a value of length"),
+    ("5 blargs", "not a known unit name"),
+])
+def test_length_values_are_read_strictly(value, words):
+    with pytest.raises(UnitError, match=None) as e:
+        to_si(value, "length", "mm")
+    assert words in str(e.value) and "\n" not in str(e.value)
+
+
+def test_expression_is_refused_fast():
+    t0 = time.perf_counter()
+    for v in ("9**9**9 mm", "9**9**9**9", "1 mm**1000000", "10**10**10 mm"):
+        with pytest.raises(UnitError):
+            to_si(v, "length", "mm")
+    assert time.perf_counter() - t0 < 0.5
+
+
+@pytest.mark.parametrize("value,kind,words", [
+    ("500 percent", "velocity", "not a value of velocity"),
+    ("0 dimensionless", "angle", "not a value of angle"),
+    ("70 %", "angle", "not a value of angle"),
+    ("10 Hz", "angular velocity", "not a value of angular velocity"),
+    ("10 mm", "angle", "not a value of angle"),
+    (10**400, "length", "too large to be a length"),
+    ("1e400 mm", "length", "too large to be a length"),
+    (True, "length", "not a number"),
+])
+def test_other_kinds_refuse_what_is_not_theirs(value, kind, words):
+    with pytest.raises(UnitError) as e:
+        to_si(value, kind, DEFAULT_UNITS[kind])
+    assert words in str(e.value)
+
+
+@pytest.mark.parametrize("value,kind,si", [
+    ("50 mm", "length", 0.05), ("50mm", "length", 0.05), ("+3.5e1 mm", "length", 0.035), (".5 m", "length", 0.5),
+    ("3.7 in", "length", 3.7 * 0.0254), ("500 mm/s", "velocity", 0.5), ("0.5 m per s", "velocity", 0.5),
+    ("120 rpm", "angular velocity", 4 * math.pi), ("3 rev/s", "angular velocity", 6 * math.pi),
+    ("70 deg", "angle", math.radians(70)), ("70\u00b0", "angle", math.radians(70)),
+    ("100 grad", "angle", math.pi / 2), ("60 arcmin", "angle", math.radians(1)),
+    ("2000 mm/s^2", "acceleration", 2.0), ("2 m s^-2", "acceleration", 2.0), ("2 m/s**2", "acceleration", 2.0),
+    ("5 rad/s^2", "angular acceleration", 5.0), ("100 N", "force", 100.0), ("20 N m", "torque", 20.0),
+    ("2.5 kg", "mass", 2.5), ("0.01 kg m^2", "moment of inertia", 0.01), ("50", "length", 0.05), (50, "length", 0.05),
+])
+def test_good_values(value, kind, si):
+    assert to_si(value, kind, DEFAULT_UNITS[kind]) == pytest.approx(si, rel=1e-12)
+
+
+def test_new_kinds_and_their_defaults():
+    for kind in ("acceleration", "angular acceleration", "force", "torque", "mass", "moment of inertia"):
+        assert kind in KINDS and check_unit(DEFAULT_UNITS[kind], kind) == DEFAULT_UNITS[kind]
+    assert DEFAULT_UNITS["acceleration"] == "mm/s^2" and DEFAULT_UNITS["torque"] == "N m"
+    assert from_si(2.0, "acceleration", "mm/s^2") == pytest.approx(2000.0)
+    assert format_value(0.05, "length", "mm") == "50.00 mm"
+    assert from_si(0.05, "length", "mm") == 50.0                  # the same rounding as pint's conversion
+    with pytest.raises(UnitError):
+        check_unit("percent", "length")
+    with pytest.raises(UnitError):
+        check_unit("Hz", "angular velocity")
+
+
+def test_units_section_refuses_percent_and_expressions(tmp_path, capsys):
+    refuse(tmp_path, capsys, EXAMPLE.replace('length = "mm"', 'length = "percent"'), "units.length",
+           "not a unit of length")
+    refuse(tmp_path, capsys, EXAMPLE.replace('angle = "deg"', 'angle = "dimensionless"'), "units.angle",
+           "not a unit of angle")
+    refuse(tmp_path, capsys, EXAMPLE.replace('length = "mm"', 'length = "mm**99"'), "units.length", "power")
+
+
+# -- every error names the file and the key, in one line ------------------------------------------------
+
+def test_two_sliders_on_one_joint(tmp_path, capsys):
+    second = '\n[[slider]]\nnumber = 4\njoint = "C"\nthrough = [0, 10]\n'
+    text = EXAMPLE.replace("[input]", second + "\n[input]")
+    refuse(tmp_path, capsys, text, "slider[2].joint", "joint C already slides on the guide of another slider")
+
+
+def test_a_point_defined_twice(tmp_path, capsys):
+    pt = '\n[[point]]\nname = "D"\nlink = 2\nfrom = "B"\ndistance = 30\n'
+    refuse(tmp_path, capsys, EXAMPLE.replace("[input]", pt + pt + "\n[input]"), "point[2].name", "defined twice")
+
+
+def test_not_utf8_names_the_byte_and_line(tmp_path, capsys):
+    line = EXAMPLE.split("Slider")[0].count("\n") + 1
+    err = refuse(tmp_path, capsys, EXAMPLE.encode().replace(b"Slider", b"Sl\xffider", 1), "is not UTF-8 text",
+                 f"byte 0xff on line {line})")
+    assert "codec" not in err and "UnicodeDecodeError" not in err
+
+
+def test_control_characters_escaped_and_long_values_cut(tmp_path, capsys):
+    err = refuse(tmp_path, capsys, EXAMPLE.replace('paper = "A4"', 'paper = "\\u001b[31m' + "A" * 150 + '"'),
+                 "drawing.paper", "\\x1b[31m", "\u2026")
+    assert "\x1b" not in err and "A" * 70 not in err
+
+
+def test_odd_file_name_in_messages_is_escaped(tmp_path, capsys):
+    err = refuse(tmp_path, capsys, EXAMPLE.replace("length = 94", "length = -94"), "link[2].length", "positive",
+                 name="bad\x1b[2J\nname.toml")
+    assert "bad\\x1b[2J\\x0aname.toml" in err
+
+
+def test_construction_errors_without_a_position_get_the_crank_angle(tmp_path, capsys):
+    """An engine error raised without a position (e.g. two coincident circles) is told at the scene's
+    crank angle: the file, the position, the reason -- one line."""
+    from constructions.errors import DegenerateInput
+    from drafting import cli
+    from drafting.study import Study
+
+    def broken(self, *a, **k):
+        raise DegenerateInput("two coincident circles meet everywhere")
+
+    p = tmp_path / "scene.toml"
+    p.write_text(EXAMPLE)
+    mp = pytest.MonkeyPatch()
+    mp.setattr(Study, "run", broken, raising=False)
+    try:
+        code = cli.main(["solve", str(p)])
+    finally:
+        mp.undo()
+    err = capsys.readouterr().err
+    assert code == 2 and err == (f"drafting: error: {p}: at crank angle 70 deg: two coincident circles meet "
+                                 f"everywhere\n")
+
+
+def test_odd_titles_and_file_names_render_and_the_svg_parses(tmp_path, capsys):
+    import xml.etree.ElementTree as ET
+    import os
+    title = "T\\u0007i\\u001bt\\uFFFEl\\uFFFFe <b>&amp;</b> \\u202Eevil"
+    text = EXAMPLE.replace('title = "Slider-crank: velocity polygon (notes, velocity Example 1)"',
+                           f'title = "{title}"').replace('number = "TOM-V-001"', 'number = "N\\u0000\\u0008o"')
+    name = os.fsdecode(b"odd\xff name\x07.toml")
+    p = tmp_path / name
+    p.write_text(text)
+    out = tmp_path / "out"
+    code = main(["render", str(p), "-o", str(out), "--format", "svg"])
+    captured = capsys.readouterr()
+    assert code == 0, captured.err
+    assert "\x07" not in captured.out and "\x1b" not in captured.out and "\\x07" in captured.out
+    (svg,) = out.iterdir()
+    assert svg.name == os.fsdecode(b"odd\xff name\x07.svg")
+    root = ET.parse(svg).getroot()
+    text = "".join(root.itertext())
+    assert "T\ufffdi\ufffdt\ufffdl\ufffde <b>&amp;</b> \u202eevil" in text and "N\ufffd\ufffdo" in text
