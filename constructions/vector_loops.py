@@ -20,6 +20,10 @@ itself, and solves each dyad in a different form from the kernel's circle inters
 
 Conventions
 -----------
+* Guides are straight and fixed to the frame: a joint sliding in a slot of a moving link raises
+  DegenerateInput (not modelled yet), as does any joint that is not a crank tip, an RRR or an RRP
+  dyad (e.g. a joint placed as the third point of a ternary link).  A pin in a fixed slot (a slide
+  with no block number) is solved like a block, and has no angular entry.
 * SI, angles CCW from +x, omega and alpha CCW positive, as everywhere in the engine.
 * ``theta``, ``omega`` and ``alpha`` are broadcast against each other; every array in the result has
   that shape (0-d for scalars) and is read-only.
@@ -125,6 +129,9 @@ def _order(m: Mechanism) -> tuple[_Crank, tuple[_RRR | _RRP, ...], tuple[_Point,
     tip = crank.other(pivots[0])
     slides: dict[str, Slide] = {}
     for s in m.slides:
+        if getattr(s, "on", None) is not None:
+            raise DegenerateInput(f"joint {s.joint} slides in a slot of the moving link {s.on}; the dyad "
+                                  f"chain models straight guides fixed to the frame only")
         if s.joint in m.ground:
             raise DegenerateInput(f"slider joint {s.joint} is also a fixed pivot")
         if s.joint in slides:
@@ -324,7 +331,7 @@ def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
                     y[bad] = np.nan
         for c in out["conditions"].values():
             c[bad] = np.nan
-        fixed = {crank.link.number} | {s_.number for s_ in m.slides}
+        fixed = {crank.link.number} | {s_.number for s_ in m.slides if s_.number is not None}
         for kind in ("angular", "angular_acceleration"):
             for number, w in out[kind].items():
                 if number not in fixed:
@@ -497,8 +504,9 @@ def _solve(m: Mechanism, crank: _Crank, dyads, points, th: np.ndarray, w1: np.nd
         ang[crank.link.number] = w1
         angacc[crank.link.number] = a1
         for s_ in m.slides:
-            ang[s_.number] = 0.0
-            angacc[s_.number] = 0.0
+            if s_.number is not None:   # a slider block translates; a pin in a slot has no body
+                ang[s_.number] = 0.0
+                angacc[s_.number] = 0.0
 
         # Points fixed to a link: D = base + distance (cos, sin)(psi + angle), psi the direction from
         # base to the link's other joint; rigid body, r = D - base turning with the link (r' = omega k x r):

@@ -600,6 +600,20 @@ def test_not_a_dyad_chain_raises():
         chain_solution(wrong_ref, 0.0, 1.0)
 
 
+def test_slots_in_moving_links_are_not_modelled_and_pins_in_fixed_slots_are():
+    """The chain solves straight guides fixed to the frame only: a block in a slot of a moving link
+    (which needs the Coriolis term) is refused, not solved as if the slot were fixed.  A pin in a
+    fixed slot (no block, number None) moves like a block and adds no angular entry."""
+    t = toggle_linkage()
+    moving = Mechanism(t.ground, t.links, (Slide(5, "D", Vec(0, 0), 0.0, on=3),), (), 1, t.branches)
+    with pytest.raises(DegenerateInput, match="slot of the moving link 3"):
+        chain_solution(moving, 0.3, 1.0)
+    pin = Mechanism(t.ground, t.links, (Slide(None, "D", Vec(0, 0), 0.0),), (), 1, t.branches)
+    a, b = chain_solution(pin, 0.3, 1.0, 2.0).at(), chain_solution(t, 0.3, 1.0, 2.0).at()
+    assert a.positions == b.positions and a.accelerations == b.accelerations
+    assert set(a.angular) == {1, 2, 3, 4} == set(a.angular_acceleration)
+
+
 def test_independent_of_the_graphical_code_path():
     """vector_loops must not reach the geometry kernel, the assembly plan or the velocity polygon."""
     src = Path(__file__).resolve().parents[1] / "constructions" / "vector_loops.py"
