@@ -13,6 +13,7 @@ from constructions.errors import ConstructionError
 from drafting.cli import builtin_example
 from drafting.scene import SceneError, scene_from_data
 from drafting.study import Study
+from drafting.textsafe import printable
 
 BASE = tomllib.loads(builtin_example().read_text())
 
@@ -34,7 +35,11 @@ scalars = st.one_of(
     st.integers(-10**6, 10**6), st.floats(allow_nan=True, allow_infinity=True), st.booleans(),
     st.text(max_size=12),
     st.sampled_from(["50 mm", "-3 in", "70 deg", "1e400 mm", "nan mm", "500 mm/s", "12 rpm", "0 rad/s",
-                     "left of B->O1", "ahead of B", "behind C", "A3", "portrait", "kg", "mm", "", "O1", "C"]))
+                     "left of B->O1", "ahead of B", "behind C", "A3", "portrait", "kg", "mm", "", "O1", "C",
+                     # hostile (issue 6): expressions, percentages, decimal commas, huge and tiny values
+                     "9**9**9 mm", "2*3 mm", "50 percent", "500 percent", "0 dimensionless", "60,5 mm",
+                     "1e30 mm", "1e-30 mm", "10 Hz", "\x00\x1b[2J", "\ufffe\uffff", "x" * 300]),
+    st.sampled_from([10**400, -10**30, 2**1023 * 2, 1e300, 5e-324]))
 values = st.recursive(scalars, lambda inner: st.one_of(st.lists(inner, max_size=3),
                                                        st.dictionaries(st.text(max_size=6), inner, max_size=3)),
                       max_leaves=6)
@@ -71,6 +76,7 @@ def test_any_edit_gives_a_scene_or_one_clear_sentence(edits):
     except SceneError as e:
         text = str(e)
         assert text.startswith("fuzz.toml: ") and "\n" not in text and "Traceback" not in text
+        assert printable(text) == text and len(text) < 1500      # escaped, long values cut
         return
     assert math.isfinite(scene.angle) and math.isfinite(scene.omega) and scene.omega != 0
     study = Study(scene)
