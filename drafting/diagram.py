@@ -1,36 +1,46 @@
-"""Drawing the entities of one diagram as paper commands.
+"""Drawing the entities of one diagram as paper commands, through a registry of drawers.
 
-``draw_entities`` turns a diagram's entities (bars, pivots, blocks, guides, arcs, arrows, trial lines,
-images, points) into layered drawing commands at a given scale, with the label requests, the symbols
-labels must not cover and the line segments they should avoid, ready for :mod:`drafting.labels`.
+Every entity type of the record has exactly one drawer, registered with the :func:`drawer` decorator
+(``@drawer(Arrow)``) and found by the entity's type (its MRO, so a subclass of a drawable type is
+drawable).  An entity whose type has no drawer raises :class:`~drafting.errors.DrawingError` naming the
+type and the diagram: nothing is ever silently left out of a sheet.  A new entity type plugs in by
+registering a drawer in its own module; nothing here changes.
+
+A drawer is called as ``fn(entity, ctx)`` with a :class:`DrawContext`: the model -> paper transform, the
+:class:`Drawing` being filled (layered commands, label requests, symbols labels must not cover, line
+segments they should avoid) and what the diagram as a whole knows (its points on paper, pivots, bars,
+blocks, pins; the text of the entity with its step's values written in).  Drawers run in phases:
+phase 0 draws links and blocks (which decide where pins go), phase 1 everything else, phase 2 the
+points and labels that sit on pins.  Each registration may also give ``points(entity)``, the model
+points the entity covers, used to size and centre the diagram.
+
+Panel entities (a :class:`~constructions.record.Chart`) are not drawn to a model scale; they are drawn
+into a chart panel of their own (:mod:`drafting.chart`), and ``draw_entities`` refuses them.
+
+The drawers themselves live in :mod:`drafting.drawers` (mechanism and vector entities, circles, curves,
+segments, dimensions, angle marks, notes) and :mod:`drafting.chart`.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Sequence
+from typing import Callable, Iterable, Sequence
 
 from constructions.geometry import Vec
-from constructions.record import (Arc, Arrow, Bar, Block, Entity, Guide, Pivot, Plate, Point,
-                                  Polygon as PolygonEntity, Role, TrialLine)
+from constructions.record import Entity
 
-from . import layout as L
-from .paper import Circle, Command, Line, Polygon, Polyline, Rect, command_points, translated
-from .style import area_style_for, line_style_for
+from .errors import DrawingError
+from .paper import Command, Line, Polygon, Polyline, Rect, command_points, translated
+from .transform import Transform
+
+__all__ = ["LabelReq", "Drawing", "DrawContext", "drawer", "panel_drawer", "drawer_for", "drawable",
+           "draw_entities", "model_points", "arrowhead", "Pt"]
 
 ARROW_LEN = 3.5
 ARROW_HALF = 0.9
-TRIAL_EXT = 10.0        # trial lines run 10 mm past the furthest point of their diagram on them
-TRIAL_LONE = 20.0
 PIN_R = 1.2
 DOT_R = 0.55
-BLOCK_L = 10.0
-BLOCK_H = 6.0
-RAIL_EXT = 12.0
-HATCH_STEP = 1.6
-HATCH_LEN = 1.8
-ON_LINE = 1e-3          # mm: a point this close to a trial line lies on it
 
 Pt = tuple[float, float]
 
@@ -47,6 +57,10 @@ class LabelReq:
     pivot_digits: bool = False
 
 
+THICK_STYLES = frozenset({"vector", "link", "guide", "load"})
+NO_SEGMENT_STYLES = frozenset({"arrowhead", "dot", "note_bg", "label_bg", "band"})
+
+
 @dataclass
 class Drawing:
     layers: dict[int, list[Command]] = field(default_factory=dict)
@@ -59,9 +73,14 @@ class Drawing:
         thick = getattr(cmd, "style", "") in THICK_STYLES
         if isinstance(cmd, Line):
             self.segments.append(((cmd.x1, cmd.y1), (cmd.x2, cmd.y2), thick))
-        elif isinstance(cmd, (Polyline, Polygon)) and cmd.style not in ("arrowhead", "dot"):
+        elif isinstance(cmd, (Polyline, Polygon)) and cmd.style not in NO_SEGMENT_STYLES:
             pts = list(cmd.points) + ([cmd.points[0]] if isinstance(cmd, Polygon) else [])
             self.segments.extend((a, b, thick) for a, b in zip(pts[:-1], pts[1:]))
+
+    def add_segments(self, points: Sequence[Pt], thick: bool, closed: bool = False) -> None:
+        """Line segments labels should avoid, for a command that is not made of segments (a circle)."""
+        pts = list(points) + ([points[0]] if closed and points else [])
+        self.segments.extend((a, b, thick) for a, b in zip(pts[:-1], pts[1:]))
 
     @property
     def commands(self) -> list[Command]:
@@ -81,10 +100,8 @@ class Drawing:
         return d
 
 
-THICK_STYLES = frozenset({"vector", "link", "guide"})
-
 # layers, bottom to top
-IMAGES, PATHS, TRIALS, LINKS, BLOCKS, SHAFTS, HEADS, PINS, DOTS = range(9)
+IMAGES, PATHS, TRIALS, LINKS, BLOCKS, SHAFTS, HEADS, PINS, DOTS, NOTES = range(10)
 
 
 def unit_vector(v: Pt) -> Pt:
@@ -126,7 +143,7 @@ def incident_directions(p: Pt, segments: Sequence[tuple], tol: float = 0.05) -> 
     return out
 
 
-def arrowhead(tail: Pt, tip: Pt, name: str) -> tuple[Polygon, Pt]:
+def arrowhead(tail: Pt, tip: Pt, name: str, style: str = "arrowhead") -> tuple[Polygon, Pt]:
     """A filled arrowhead with its apex exactly at ``tip``; returns it and where the shaft stops."""
     length = _dist(tail, tip)
     hl = min(ARROW_LEN, 0.5 * length)
@@ -134,211 +151,177 @@ def arrowhead(tail: Pt, tip: Pt, name: str) -> tuple[Polygon, Pt]:
     u = unit_vector((tip[0] - tail[0], tip[1] - tail[1]))
     n = (-u[1], u[0])
     base = shifted(tip, u, -hl)
-    poly = Polygon((tip, shifted(base, n, hw), shifted(base, n, -hw)), "arrowhead", f"{name}:head")
+    poly = Polygon((tip, shifted(base, n, hw), shifted(base, n, -hw)), style, f"{name}:head")
     return poly, shifted(tip, u, -0.8 * hl)
 
 
-def model_points(entities: Sequence[Entity]) -> list[Vec]:
-    pts: list[Vec] = []
-    for e in entities:
-        if isinstance(e, (Point, Pivot)):
-            pts.append(e.at)
-        elif isinstance(e, Arrow):
-            pts += [e.tail, e.tip]
-        elif isinstance(e, Bar):
-            pts += [e.start, e.end]
-        elif isinstance(e, (Plate, PolygonEntity)):
-            pts += list(e.vertices)
-        elif isinstance(e, TrialLine):
-            pts.append(e.through)
-        elif isinstance(e, Block):
-            pts.append(e.at)
-    return pts
-
-
-def _nonzero(v: Vec) -> bool:
+def nonzero(v: Vec) -> bool:
     return math.isfinite(v.x) and math.isfinite(v.y) and math.hypot(v.x, v.y) > 0
 
 
-def draw_entities(entities: Sequence[Entity], k: float) -> Drawing:
-    """Every entity of one diagram drawn at ``k`` paper mm per model unit, model origin at (0, 0)."""
-    T = L.Transform(k)
+# ---- the registry -------------------------------------------------------------------------------------
+
+DrawFn = Callable[[Entity, "DrawContext"], None]
+PointsFn = Callable[[Entity], Iterable[Vec]]
+PanelFn = Callable[..., list]
+
+
+@dataclass
+class _Entry:
+    type: type
+    phases: dict[int, DrawFn] = field(default_factory=dict)
+    points: PointsFn | None = None
+    panel: PanelFn | None = None
+
+
+_REGISTRY: dict[type, _Entry] = {}
+
+
+def drawer(entity_type: type, *, phase: int = 1, points: PointsFn | None = None):
+    """Register the decorated ``fn(entity, ctx)`` as the drawer of ``entity_type`` in ``phase``
+    (0 links and blocks, 1 everything else, 2 points and labels on pins).  ``points(entity)`` gives the
+    model points the entity covers (for sizing the diagram).  A type may register one function per
+    phase; registering a phase twice is an error."""
+    def register(fn: DrawFn) -> DrawFn:
+        entry = _REGISTRY.setdefault(entity_type, _Entry(entity_type))
+        if phase in entry.phases:
+            raise ValueError(f"{entity_type.__name__} already has a phase {phase} drawer")
+        entry.phases[phase] = fn
+        if points is not None:
+            entry.points = points
+        return fn
+    return register
+
+
+def panel_drawer(entity_type: type):
+    """Register ``fn(entity, rect, ctx)`` drawing ``entity_type`` into a panel of its own (a chart)."""
+    def register(fn: PanelFn) -> PanelFn:
+        entry = _REGISTRY.setdefault(entity_type, _Entry(entity_type))
+        entry.panel = fn
+        return fn
+    return register
+
+
+def _lookup(entity_type: type) -> _Entry | None:
+    _load_drawers()
+    for t in entity_type.__mro__:
+        e = _REGISTRY.get(t)
+        if e is not None and (e.phases or e.panel):
+            return e
+    return None
+
+
+def drawer_for(entity: Entity | type) -> _Entry:
+    """The registry entry of an entity (or entity type); raises :class:`DrawingError` naming the type
+    and the entity's diagram when there is none."""
+    t = entity if isinstance(entity, type) else type(entity)
+    e = _lookup(t)
+    if e is None:
+        where = ""
+        if not isinstance(entity, type):
+            name = getattr(entity, "name", "")
+            diagram = getattr(entity, "diagram", None)
+            where = f" ({name!r} in the {diagram} diagram)" if diagram is not None else f" ({name!r})"
+        raise DrawingError(f"no drawer for the entity type {t.__name__}{where}; register one with "
+                           f"@drawer({t.__name__}) in drafting.drawers")
+    return e
+
+
+def drawable(entity_type: type) -> bool:
+    return _lookup(entity_type) is not None
+
+
+def is_panel_entity(entity: Entity) -> bool:
+    """True for entities drawn in a panel of their own (charts), not to a model scale."""
+    e = drawer_for(entity)
+    return e.panel is not None and not e.phases
+
+
+_loaded = False
+
+
+def _load_drawers() -> None:
+    """Import the modules that register the drawers (once, on first use)."""
+    global _loaded
+    if not _loaded:
+        _loaded = True
+        from . import chart, drawers  # noqa: F401  (registers their drawers)
+
+
+# ---- drawing a diagram ----------------------------------------------------------------------------
+
+TextFn = Callable[[Entity, str], str]
+
+
+def _plain_text(entity: Entity, words: str) -> str:
+    return words
+
+
+@dataclass
+class DrawContext:
+    """What a drawer needs: the transform, the drawing it adds to, and the diagram as a whole."""
+
+    T: Transform
+    d: Drawing
+    entities: Sequence[Entity]
+    paper_pts: list[Pt]                   # the diagram's points on paper (and crossings of trial lines)
+    centroid: Pt
+    pivots: list[Pt]
+    bars: list[tuple[Pt, Pt]]
+    blocks: list[Pt]
+    pins: list[Pt] = field(default_factory=list)
+    text_fn: TextFn = _plain_text
+
+    def add_pin(self, p: Pt) -> None:
+        if all(_dist(p, q) > 0.01 for q in self.pins + self.pivots):
+            self.pins.append(p)
+
+    def text(self, entity: Entity, words: str) -> str:
+        """``words`` of ``entity`` with the values of its step written in."""
+        return self.text_fn(entity, words)
+
+    @property
+    def marks(self) -> list[Pt]:
+        return self.pins + self.pivots
+
+
+def model_points(entities: Sequence[Entity]) -> list[Vec]:
+    """The model points the entities cover (every entity type must have a drawer)."""
+    pts: list[Vec] = []
+    for e in entities:
+        entry = drawer_for(e)
+        if entry.points is not None:
+            pts.extend(entry.points(e))
+    return pts
+
+
+def draw_entities(entities: Sequence[Entity], k: float, *, text: TextFn | None = None) -> Drawing:
+    """Every entity of one diagram drawn at ``k`` paper mm per model unit, model origin at (0, 0).
+
+    Raises :class:`DrawingError` for an entity without a drawer (or a panel entity such as a chart)."""
+    entries = []
+    for e in entities:
+        entry = drawer_for(e)
+        if not entry.phases:
+            raise DrawingError(f"the {type(e).__name__} {e.name!r} in the {e.diagram} diagram is drawn in a "
+                               f"panel of its own, not to a model scale")
+        entries.append(entry)
+    T = Transform(k)
     d = Drawing()
-    model_pts = model_points(entities)
-    paper_pts = [T(p) for p in model_pts]
-    trials = [e for e in entities if isinstance(e, TrialLine) and _nonzero(e.direction)]
-    # the crossings of trial lines are points of the diagram that lie on them
-    for i, a in enumerate(trials):
-        for b in trials[i + 1:]:
-            s = a.direction.cross(b.direction)
-            if abs(s) > 1e-12 * a.direction.norm() * b.direction.norm():
-                t = (b.through - a.through).cross(b.direction) / s
-                paper_pts.append(T(a.through + a.direction * t))
-    pivots = [T(e.at) for e in entities if isinstance(e, Pivot)]
-    bars = [(T(e.start), T(e.end)) for e in entities if isinstance(e, Bar)]
+    pts = model_points(entities)
+    paper_pts = [T(p) for p in pts]
+    from .drawers import trial_crossings, diagram_facts    # the mechanism's facts the drawers share
+    paper_pts += [T(p) for p in trial_crossings(entities, pts)]
+    pivots, bars, blocks = diagram_facts(entities, T)
     centroid = (sum(p[0] for p in paper_pts) / len(paper_pts), sum(p[1] for p in paper_pts) / len(paper_pts)) \
         if paper_pts else (0.0, 0.0)
-    pins: list[Pt] = []
-
-    def add_pin(p: Pt) -> None:
-        if all(_dist(p, q) > 0.01 for q in pins + pivots):
-            pins.append(p)
-
-    for e in entities:
-        if isinstance(e, Bar):
-            a, b = T(e.start), T(e.end)
-            d.add(LINKS, Line(*a, *b, line_style_for(e.role), e.name))
-            add_pin(a)
-            add_pin(b)
-        elif isinstance(e, Plate):
-            d.add(LINKS, Polygon(tuple(T(v) for v in e.vertices), "link", e.name))
-        elif isinstance(e, Block) and _nonzero(e.direction):
-            c = T(e.at)
-            u = T.direction(e.direction)
-            n = (-u[1], u[0])
-            corners = tuple(shifted(shifted(c, u, su * BLOCK_L / 2), n, sn * BLOCK_H / 2)
-                            for su, sn in ((1, 1), (-1, 1), (-1, -1), (1, -1)))
-            d.add(BLOCKS, Polygon(corners, "block", e.name))
-            d.hard.append(Rect.bounding(corners))
-            add_pin(c)
-    for e in entities:
-        if isinstance(e, Pivot):
-            _draw_pivot(d, T(e.at), bars, e.name)
-        elif isinstance(e, Guide) and _nonzero(e.direction):
-            blocks = [T(b.at) for b in entities if isinstance(b, Block)]
-            _draw_guide(d, T(e.through), T.direction(e.direction), blocks, paper_pts, centroid, e.name)
-        elif isinstance(e, Arc):
-            _draw_arc(d, e, T)
-        elif isinstance(e, PolygonEntity):
-            pts = tuple(T(v) for v in e.vertices)
-            d.add(IMAGES, Polygon(pts, area_style_for(e.role), e.name))
-            if e.label:
-                c = (sum(p[0] for p in pts) / len(pts), sum(p[1] for p in pts) / len(pts))
-                d.labels.append(LabelReq("polygon", e.label, c, False, e.name))
-        elif isinstance(e, TrialLine) and _nonzero(e.direction):
-            _draw_trial(d, e, T, paper_pts)
-        elif isinstance(e, Arrow):
-            tail, tip = T(e.tail), T(e.tip)
-            if _dist(tail, tip) < 1e-6:
-                continue
-            head, stop = arrowhead(tail, tip, e.name)
-            d.add(SHAFTS, Line(*tail, *stop, line_style_for(e.role) if e.role in (Role.KNOWN, Role.RESULT)
-                               else "vector", e.name))
-            d.layers.setdefault(HEADS, []).append(head)
-            d.hard.append(Rect.bounding(head.points))
-            if e.label:
-                d.labels.append(LabelReq("arrow", e.label, tip, False, e.name, other=tail))
-    for p in pins:
-        d.add(PINS, Circle(*p, PIN_R, "pin", "pin"))
-        d.hard.append(Rect(p[0] - PIN_R, p[1] - PIN_R, 2 * PIN_R, 2 * PIN_R))
-    marks = pins + pivots
-    for e in entities:
-        if isinstance(e, Point):
-            p = T(e.at)
-            r0 = DOT_R
-            if any(_dist(p, q) < 0.01 for q in marks):
-                r0 = PIN_R + 0.25
-            else:
-                d.add(DOTS, Circle(*p, DOT_R, "dot", e.name))
-                d.hard.append(Rect(p[0] - DOT_R, p[1] - DOT_R, 2 * DOT_R, 2 * DOT_R))
-            if e.label:
-                d.labels.append(LabelReq("point", e.label, p, True, e.name, r0=r0, pivot_digits=True))
-        elif isinstance(e, Pivot) and e.label:
-            d.labels.append(LabelReq("point", e.label, T(e.at), True, e.name, r0=PIN_R + 0.25, pivot_digits=True))
+    ctx = DrawContext(T, d, entities, paper_pts, centroid, pivots, bars, blocks, text_fn=text or _plain_text)
+    for phase in (0, 1, 2):
+        for e, entry in zip(entities, entries):
+            fn = entry.phases.get(phase)
+            if fn is not None:
+                fn(e, ctx)
+        if phase == 1:
+            from .drawers import draw_pins
+            draw_pins(ctx)
     return d
-
-
-def _draw_pivot(d: Drawing, p: Pt, bars: Sequence[tuple[Pt, Pt]], name: str) -> None:
-    """A fixed pivot: pin, ground triangle, ground line and hatching, turned away from its links."""
-    inc = incident_directions(p, bars)
-    best, best_gap = (0.0, 1.0), -1.0
-    for cand in ((0.0, 1.0), (-1.0, 0.0), (1.0, 0.0), (0.0, -1.0)):
-        a = math.atan2(cand[1], cand[0])
-        gap = min((angle_gap(a, b) for b in inc), default=math.pi)
-        if gap > best_gap + 1e-9:
-            best, best_gap = cand, gap
-    u = best
-    n = (-u[1], u[0])
-    c = shifted(p, u, 4.0)
-    tri = (p, shifted(c, n, 3.0), shifted(c, n, -3.0))
-    d.add(PINS, Polygon(tri, "ground", f"{name}:ground"))
-    a, b = shifted(c, n, -4.5), shifted(c, n, 4.5)
-    d.add(PINS, Line(*a, *b, "link", f"{name}:ground line"))
-    pts = list(tri) + [a, b]
-    s = -4.5 + HATCH_STEP / 2
-    while s <= 4.5:
-        q = shifted(c, n, s)
-        r = shifted(shifted(q, u, HATCH_LEN), n, -HATCH_LEN)
-        d.add(PINS, Line(*q, *r, "hatch", f"{name}:hatch"))
-        pts.append(r)
-        s += HATCH_STEP
-    d.add(PINS, Circle(*p, PIN_R, "pin", f"{name}:pin"))
-    d.hard.append(Rect.bounding(pts))
-
-
-def _hatched_line(d: Drawing, a: Pt, b: Pt, side: Pt, name: str) -> None:
-    d.add(LINKS, Line(*a, *b, "guide", name))
-    u = unit_vector((b[0] - a[0], b[1] - a[1]))
-    length = _dist(a, b)
-    s = HATCH_STEP / 2
-    while s < length:
-        q = shifted(a, u, s)
-        r = shifted(shifted(q, side, HATCH_LEN), u, -HATCH_LEN)
-        d.add(LINKS, Line(*q, *r, "hatch", f"{name}:hatch"))
-        s += HATCH_STEP
-
-
-def _draw_guide(d: Drawing, g: Pt, u: Pt, blocks: Sequence[Pt], pts: Sequence[Pt], centroid: Pt, name: str) -> None:
-    n = (-u[1], u[0])
-
-    def t_of(p: Pt) -> float:
-        return (p[0] - g[0]) * u[0] + (p[1] - g[1]) * u[1]
-
-    def off(p: Pt) -> float:
-        return (p[0] - g[0]) * n[0] + (p[1] - g[1]) * n[1]
-
-    on = [b for b in blocks if abs(off(b)) < 0.05]
-    if on:
-        ts = [t_of(b) for b in on] + [0.0]
-        a, b = shifted(g, u, min(ts) - 8.0), shifted(g, u, max(ts) + BLOCK_L / 2 + 8.0)
-        d.add(PATHS, Line(*a, *b, "centre", f"{name}:centre line"))
-        for blk in on:
-            t0 = t_of(blk)
-            for sn in (1.0, -1.0):
-                off_v = (n[0] * sn * BLOCK_H / 2, n[1] * sn * BLOCK_H / 2)
-                p1 = shifted(shifted(g, u, t0 - BLOCK_L / 2 - RAIL_EXT), off_v)
-                p2 = shifted(shifted(g, u, t0 + BLOCK_L / 2 + RAIL_EXT), off_v)
-                _hatched_line(d, p1, p2, (n[0] * sn, n[1] * sn), f"{name}:rail")
-    else:
-        ts = [t_of(p) for p in pts] or [0.0]
-        a, b = shifted(g, u, min(ts) - 8.0), shifted(g, u, max(ts) + 8.0)
-        side = -1.0 if off(centroid) > 0 else 1.0
-        _hatched_line(d, a, b, (n[0] * side, n[1] * side), name)
-
-
-def _draw_arc(d: Drawing, e: Arc, T: L.Transform) -> None:
-    span = e.end_angle - e.start_angle
-    if not (e.radius > 0 and math.isfinite(span)):
-        return
-    segs = int(min(200, max(8, math.ceil(abs(span) * e.radius * T.k / 1.0))))
-    pts = tuple(T(e.center + Vec.polar(e.radius, e.start_angle + span * i / segs)) for i in range(segs + 1))
-    d.add(PATHS, Polyline(pts, line_style_for(e.role), e.name))
-
-
-def _draw_trial(d: Drawing, e: TrialLine, T: L.Transform, pts: Sequence[Pt]) -> None:
-    g = T(e.through)
-    u = T.direction(e.direction)
-    ts = [0.0]
-    for p in pts:
-        v = (p[0] - g[0], p[1] - g[1])
-        if abs(u[0] * v[1] - u[1] * v[0]) < ON_LINE:
-            ts.append(u[0] * v[0] + u[1] * v[1])
-    lo, hi = min(ts), max(ts)
-    if hi - lo < 1e-6:
-        lo, hi = lo - TRIAL_LONE, hi + TRIAL_LONE
-    else:
-        lo, hi = lo - TRIAL_EXT, hi + TRIAL_EXT
-    a, b = shifted(g, u, lo), shifted(g, u, hi)
-    d.add(TRIALS, Line(*a, *b, line_style_for(e.role), e.name))
-    if e.label:
-        d.labels.append(LabelReq("trial", e.label, b, False, e.name, other=a))

@@ -1,7 +1,8 @@
 """Label placement: every label of a drawn diagram put where it overlaps no other label or symbol.
 
 ``place_labels`` searches candidate positions around each label's anchor and scores them by how much
-line they would hide and how well they sit in the gap between the lines at the anchor.
+line they would hide and how well they sit in the gap between the lines at the anchor.  Only the lines,
+symbols and labels in the neighbourhood a label's candidates can reach are tested against them.
 """
 
 from __future__ import annotations
@@ -9,7 +10,7 @@ from __future__ import annotations
 import math
 
 from .diagram import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
-from .layout import LayoutError
+from .errors import LayoutError
 from .paper import Command, Rect, Rectangle, Text
 from .style import LABEL, measure, rich
 
@@ -99,22 +100,32 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     out: list[Command] = []
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
                                                         ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
+    seg_boxes = [(min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1])) for a, b, _ in d.segments]
     for i in order:
         req = d.labels[i]
         spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
         ext = measure(spans)
         hw, hh = ext.width / 2 + LABEL_PAD, ext.height / 2 + LABEL_PAD
         incident = incident_directions(req.anchor, d.segments) if req.kind == "point" else []
+        # the neighbourhood every candidate box lies in: only what is in it can collide
+        reach = _reach(req, hw, hh)
+        near_segs = [(s[0], s[1], s[2]) + b for s, b in zip(d.segments, seg_boxes)
+                     if b[0] <= reach.right and b[2] >= reach.left and b[1] <= reach.bottom and b[3] >= reach.top]
+        near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
+        near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
         for relax in (0, 1):
             for centre, cost in _candidates(req, hw, hh, incident, relax):
                 box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
                 if not plot.contains(box):
                     continue
-                if any(box.overlaps(o, 0.3) for o in placed) or any(box.overlaps(o, 0.2) for o in d.hard):
+                if any(box.overlaps(o, 0.3) for o in near_placed) or any(box.overlaps(o, 0.2) for o in near_hard):
                     continue
                 thin = thick = 0.0
-                for a, b, heavy in d.segments:
+                bl, bt, br, bb = box.left, box.top, box.right, box.bottom
+                for a, b, heavy, x0, y0, x1, y1 in near_segs:
+                    if x0 > br or x1 < bl or y0 > bb or y1 < bt:
+                        continue
                     ln = _clip_len(a, b, box)
                     if heavy:
                         thick += ln
@@ -134,7 +145,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
             for relax in (0, 1):
                 for centre, cost in _candidates(req, hw, hh, incident, relax):
                     box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
-                    if plot.contains(box) and not any(box.overlaps(o, 0.3) for o in placed):
+                    if plot.contains(box) and not any(box.overlaps(o, 0.3) for o in near_placed):
                         if best is None or cost < best[0]:
                             best = (cost, centre, box)
             if best is None:
@@ -146,3 +157,18 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
     return out
+
+
+_FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin
+
+
+def _reach(req: LabelReq, hw: float, hh: float) -> Rect:
+    """A rectangle holding every candidate box of ``req`` (see :func:`_candidates`)."""
+    r = req.r0 + _FAR + 2 * (hw + hh)
+    if req.kind in ("point", "polygon") or req.other is None:
+        x, y = req.anchor
+        return Rect(x - r, y - r, 2 * r, 2 * r)
+    a, b = req.anchor, req.other
+    if req.kind == "trial":
+        r += 22.0               # candidates run up to 22 mm in from either end
+    return Rect.from_edges(min(a[0], b[0]) - r, min(a[1], b[1]) - r, max(a[0], b[0]) + r, max(a[1], b[1]) + r)

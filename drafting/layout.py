@@ -1,91 +1,29 @@
-"""Layout: scales, viewports, scale bars, the title block and the flow of text on a sheet.
+"""Layout: text flow, tables, scale bars, viewport headers and the title block.
 
-The sheet is cut into named regions: the title block at the bottom right of the frame, one viewport
-per diagram (each with its own scale: ISO 5455 for the space diagram, the construction's 1-2-5 scale
-for a vector polygon) and text slots for the vector equations, the numbered steps, the results table
-and the notes.  Text is set at 3.5 mm and shrunk step by step to no less than 2.5 mm until it fits; if
-it still does not, :class:`LayoutError` says to use the larger sheet.
+Text items (headings, paragraphs, vector equations with their marks, the results table) are set into
+text slots in order at one lettering size, shrunk step by step from 3.5 mm to no less than 2.5 mm
+until they fit (:func:`flow_shrinking`); the slots may lie on several pages.  Where the slots and the
+diagram panels go is :mod:`drafting.pages`' business.
 
-Everything returned is drawing commands (:mod:`drafting.paper`) in paper mm, y down.
+Everything returned is drawing commands (:mod:`drafting.paper`) in paper mm, y down.  ``Transform``
+and ``LayoutError`` used to live here and are still importable from here.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, replace
-from typing import Callable, Sequence
+from typing import MutableMapping, Sequence
 
-from constructions.geometry import Vec
 from constructions.record import Term, VectorEquation
 
-from .paper import Command, Line, Paper, Rect, Rectangle, Span, Text, translated
+from .errors import LayoutError  # re-exported: its old home
+from .paper import Command, Line, Rect, Rectangle, Span, Text, translated
+from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text  # noqa: F401 (re-exported)
 from .style import (HEADING, LABEL, MIN_TEXT, SUB_SHIFT, TITLE, Extent, font_metrics, measure, plain,
                     rich, sub_size, text_width)
-
-
-class LayoutError(Exception):
-    """The content does not fit the sheet; the message says what to change (e.g. use A3)."""
-
-
-# ---- scales -------------------------------------------------------------------------------------
-
-ISO_5455: tuple[tuple[int, int], ...] = (
-    (1000, 1), (500, 1), (200, 1), (100, 1),          # ISO 5455 extends the series by powers of ten
-    (50, 1), (20, 1), (10, 1), (5, 1), (2, 1), (1, 1),
-    (1, 2), (1, 5), (1, 10), (1, 20), (1, 50), (1, 100), (1, 200), (1, 500),
-    (1, 1000), (1, 2000), (1, 5000), (1, 10000),
-)
-"""The ISO 5455 scales from the largest enlargement to the smallest reduction."""
-
-
-def ratio_text(ratio: tuple[int, int]) -> str:
-    return f"{ratio[0]}:{ratio[1]}"
-
-
-def ratio_factor(ratio: tuple[int, int]) -> float:
-    """Paper length per model length."""
-    return ratio[0] / ratio[1]
-
-
-def nice_values(lo: float, hi: float) -> list[float]:
-    """The 1-2-5 series values in [lo, hi], ascending."""
-    if not (0 < lo <= hi and math.isfinite(hi)):
-        return []
-    out = []
-    e = math.floor(math.log10(lo)) - 1
-    while True:
-        for m in (1.0, 2.0, 5.0):
-            v = m * 10.0 ** e
-            v = float(f"{v:.12g}")
-            if v > hi * (1 + 1e-12):
-                return out
-            if v >= lo * (1 - 1e-12):
-                out.append(v)
-        e += 1
-
-
-def number_text(v: float) -> str:
-    """A scale number without noise: 10, 0.5, 2.5, 1e-05."""
-    s = f"{v:.6g}"
-    return "0" if s in ("-0", "0") else s
-
-
-@dataclass(frozen=True, slots=True)
-class Transform:
-    """Model -> paper: ``(ox + k x, oy - k y)``; ``k`` is paper mm per model unit.  The y flip is
-    applied point by point, never to a group, so lettering is never mirrored."""
-
-    k: float
-    ox: float = 0.0
-    oy: float = 0.0
-
-    def __call__(self, v: Vec) -> tuple[float, float]:
-        return (self.ox + self.k * v.x, self.oy - self.k * v.y)
-
-    def direction(self, v: Vec) -> tuple[float, float]:
-        """A model direction as a paper unit vector."""
-        n = math.hypot(v.x, v.y)
-        return (v.x / n, -v.y / n)
+from .transform import Transform  # noqa: F401 (re-exported: its old home)
 
 
 # ---- text primitives ----------------------------------------------------------------------------
@@ -116,8 +54,8 @@ def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]
     cur: list[Span] = []
     cur_w = 0.0
     for word in words:
-        spans = list(rich(word, size))
-        w = measure(spans).width
+        spans, w = _word(word, size)
+        spans = list(spans)
         if w > width:                                   # a word longer than the line: split it
             for piece in _split_long(word, width, size):
                 if cur:
@@ -137,6 +75,13 @@ def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]
     return [tuple(_merge_spans(line)) for line in lines]
 
 
+@functools.lru_cache(maxsize=16384)
+def _word(word: str, size: float) -> tuple[tuple[Span, ...], float]:
+    """A word's spans and width (measured once per word and size)."""
+    spans = rich(word, size)
+    return spans, measure(spans).width
+
+
 def _split_long(word: str, width: float, size: float) -> list[str]:
     out, cur = [], ""
     for ch in word:
@@ -150,12 +95,19 @@ def _split_long(word: str, width: float, size: float) -> list[str]:
 
 
 def _merge_spans(spans: Sequence[Span]) -> list[Span]:
+    """Neighbouring spans of one size, shift and slant joined into one."""
     out: list[Span] = []
+    run: list[str] = []
+    last: Span | None = None
     for s in spans:
-        if out and (out[-1].size, out[-1].shift, out[-1].italic) == (s.size, s.shift, s.italic):
-            out[-1] = Span(out[-1].text + s.text, s.size, s.shift, s.italic)
-        else:
-            out.append(s)
+        if last is not None and (last.size, last.shift, last.italic) == (s.size, s.shift, s.italic):
+            run.append(s.text)
+            continue
+        if last is not None:
+            out.append(Span("".join(run), last.size, last.shift, last.italic) if len(run) > 1 else last)
+        last, run = s, [s.text]
+    if last is not None:
+        out.append(Span("".join(run), last.size, last.shift, last.italic) if len(run) > 1 else last)
     return out
 
 
@@ -390,8 +342,32 @@ class Section:
     items: tuple[Item, ...]
 
 
-def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: float) -> list[Command] | None:
-    """Set the sections into the slots in order at lettering ``size``; None when they do not fit."""
+LayoutCache = MutableMapping[tuple, "Placed | TooWide"]
+
+
+def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None = None) -> Placed:
+    """``item.layout(width, size)``, remembered in ``cache`` (items are immutable): the same text is
+    set once per width and size however many plans are tried."""
+    if cache is None:
+        return item.layout(width, size)
+    key = (item, round(width, 6), size)
+    got = cache.get(key)
+    if got is None:
+        try:
+            got = item.layout(width, size)
+        except TooWide as e:
+            got = e
+        cache[key] = got
+    if isinstance(got, TooWide):
+        raise got
+    return got
+
+
+def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: float,
+         cache: LayoutCache | None = None, *, tagged: bool = False) -> list | None:
+    """Set the sections into the slots in order at lettering ``size``; None when they do not fit.
+    Each text command's region is the name of the slot it went into; with ``tagged`` the result is
+    ``(slot name, command)`` pairs (a rule of a table has no region of its own)."""
     if not sections:
         return []
     if not slots:
@@ -414,6 +390,7 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
         used = False
         return True
 
+    placements: list[tuple[str, float, float, Placed]] = []
     for sec in sections:
         items: list[Item] = [Heading(sec.heading), *sec.items] if sec.heading else list(sec.items)
         if used:
@@ -422,10 +399,10 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
         while i < len(items):
             item = items[i]
             try:
-                placed = item.layout(slot.w, size)
+                placed = layout_item(item, slot.w, size, cache)
                 need = placed.height
                 if item.keep_with_next and i + 1 < len(items):
-                    need += item_gap + items[i + 1].layout(slot.w, size).height
+                    need += item_gap + layout_item(items[i + 1], slot.w, size, cache).height
             except TooWide:
                 placed = None
                 need = math.inf
@@ -434,20 +411,43 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
                 if not next_slot():
                     return None
                 continue
-            out.extend(with_region([translated(c, slot.x, y) for c in placed.commands], name))
+            placements.append((name, slot.x, y, placed))
             y += placed.height + item_gap
             used = True
             i += 1
+    # everything fits: now make the commands
+    for name, x, y, placed in placements:
+        moved = with_region([translated(c, x, y) for c in placed.commands], name)
+        out.extend(((name, c) for c in moved) if tagged else moved)
     return out
 
 
 TEXT_SIZES = (3.5, 3.25, 3.0, 2.75, 2.5)
 
 
-def flow_shrinking(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]]) -> tuple[list[Command], float] | None:
+def _least_height(sections: Sequence[Section], width: float, size: float, cache: LayoutCache) -> float:
+    """A lower bound of the height the sections need in slots at most ``width`` wide (no gaps between
+    items counted, each item at the widest width: narrower slots only wrap more)."""
+    total = 0.0
+    for sec in sections:
+        for item in ([Heading(sec.heading)] if sec.heading else []) + list(sec.items):
+            try:
+                total += layout_item(item, width, size, cache).height
+            except TooWide:
+                return math.inf
+    return total
+
+
+def flow_shrinking(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], *,
+                   sizes: Sequence[float] = TEXT_SIZES, cache: LayoutCache | None = None,
+                   tagged: bool = False) -> tuple[list, float] | None:
     """The largest lettering size (3.5 down to 2.5) at which everything fits, and its commands."""
-    for size in TEXT_SIZES:
-        out = flow(sections, slots, size)
+    room = sum(r.h for _, r in slots)
+    widest = max((r.w for _, r in slots), default=0.0)
+    for size in sizes:
+        if cache is not None and _least_height(sections, widest, size, cache) > room + 1e-9:
+            continue                     # cannot fit: even set in the widest slot it is taller than all
+        out = flow(sections, slots, size, cache, tagged=tagged)
         if out is not None:
             return out, size
     return None
@@ -541,9 +541,10 @@ class Header:
     height: float
 
 
-def viewport_header(rect: Rect, heading: str, paper_per_unit: float, unit: str, *, region: str,
+def viewport_header(rect: Rect, heading: str, paper_per_unit: float | None, unit: str, *, region: str,
                     name: str) -> Header:
-    """Heading at the top left of a viewport and the scale bar at the top right (or under it)."""
+    """Heading at the top left of a viewport and the scale bar at the top right (or under it); a panel
+    without a scale (a chart: ``paper_per_unit`` None) has the heading only."""
     hs = HEADING
     head = plain(heading, hs)
     hext = measure(head)
@@ -554,6 +555,8 @@ def viewport_header(rect: Rect, heading: str, paper_per_unit: float, unit: str, 
     x0 = rect.x + 1.5
     ht = text_at(x0, rect.y + HEADER_GAP - hext.top, head, style="heading", region=region,
                  name=f"heading {name}")
+    if paper_per_unit is None:
+        return Header((ht,), ht.box.bottom - rect.y + HEADER_GAP)
     unit_w = measure(plain(unit, SCALE_TEXT)).width + 1.2
     overhang = 4.0
     side_room = rect.right - 1.5 - unit_w - overhang - (ht.box.right + 6.0)
@@ -579,7 +582,7 @@ def viewport_header(rect: Rect, heading: str, paper_per_unit: float, unit: str, 
     return Header(tuple(cmds), height)
 
 
-def header_height(width: float, heading: str, paper_per_unit: float, unit: str) -> float:
+def header_height(width: float, heading: str, paper_per_unit: float | None, unit: str) -> float:
     return viewport_header(Rect(0, 0, width, 100), heading, paper_per_unit, unit, region="", name="probe").height
 
 
@@ -668,163 +671,3 @@ def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence
         out.extend(with_region([translated(c, rect.x, y) for c in cmds], region))
         y += h
     return TitleBlock(tuple(out), rect)
-
-
-# ---- the plan: where the viewports and text go ---------------------------------------------------
-
-@dataclass(frozen=True)
-class ViewportNeed:
-    """What a diagram needs: ``size_at(ratio_index)`` for the space diagram (ISO scales), or a fixed
-    ``size`` for a vector polygon drawn at its construction's scale."""
-
-    key: str
-    size: tuple[float, float] | None = None
-    size_for_width: Callable[[float, float], tuple[float, float] | None] | None = None
-
-
-@dataclass(frozen=True)
-class Plan:
-    viewports: dict[str, Rect]
-    text_slots: tuple[tuple[str, Rect], ...]
-    title_block: Rect
-    separators: tuple[tuple[float, float, float, float], ...]
-    # a text slot that, when it stays empty, goes back to a viewport: slot -> (viewport, whole rect, separator)
-    reclaim: tuple[tuple[str, str, Rect, tuple[float, float, float, float]], ...] = ()
-
-
-TEXT_COL_MIN = 120.0
-SPACE_MIN_H = 40.0
-LEFTOVER_MIN_H = 30.0
-GUTTER = 3.0
-
-
-def plan_landscape(paper: Paper, tb_height: Callable[[float], float], space: ViewportNeed | None,
-                   vectors: Sequence[ViewportNeed], text_width: float | None = None) -> Plan:
-    """Diagrams in a column on the left, text and title block on the right.  ``text_width`` asks for a
-    text column of that width (at least TEXT_COL_MIN); by default it is half the frame, at most the
-    title block's width."""
-    F = paper.frame
-    vec_w = max((v.size[0] for v in vectors), default=0.0)
-    diag_need = max(vec_w, 100.0 if space else 0.0)
-    if not space and not vectors:
-        tbw = paper.title_block_max_width
-        tb = Rect(F.right - tbw, F.bottom - tb_height(tbw), tbw, tb_height(tbw))
-        slots = [("text:0", Rect.from_edges(F.x + GUTTER, F.y + GUTTER, F.right - GUTTER, tb.y - GUTTER))]
-        return Plan({}, tuple(slots), tb, ())
-    pref = min(paper.title_block_max_width, 0.5 * F.w) if text_width is None else text_width
-    # two arrangements of the vector viewports: stacked in one column, or side by side in a row;
-    # take the one that leaves the space diagram the most height (the row needs a wider column)
-    row_w = sum(v.size[0] for v in vectors)
-    options = []
-    for side_by_side, need_w, vec_h in ((False, diag_need, sum(v.size[1] for v in vectors)),
-                                        (True, max(row_w, diag_need), max((v.size[1] for v in vectors), default=0.0))):
-        if side_by_side and len(vectors) < 2:
-            continue
-        wt = max(TEXT_COL_MIN, min(pref, F.w - need_w))
-        if F.w - wt >= need_w - 1e-9:
-            options.append((F.h - vec_h, side_by_side, wt))
-    if not options:
-        raise LayoutError(f"the diagrams need {diag_need:.0f} mm of width beside the text column and "
-                          f"{paper.name} {paper.orientation} has {F.w - TEXT_COL_MIN:.0f} mm; use A3")
-    _, side_by_side, wt = max(options, key=lambda o: (o[0] >= (SPACE_MIN_H if space else 0.0), o[0], o[2]))
-    xd = F.right - wt
-    tbw = min(paper.title_block_max_width, wt)
-    h_tb = tb_height(tbw)
-    tb = Rect(F.right - tbw, F.bottom - h_tb, tbw, h_tb)
-    # vector viewports from the bottom of the diagram column up: stacked, or side by side
-    viewports: dict[str, Rect] = {}
-    seps: list[tuple[float, float, float, float]] = [(xd, F.top, xd, F.bottom)]
-    dw = xd - F.x
-    if side_by_side:
-        row_h = max(v.size[1] for v in vectors)
-        spare = (dw - row_w) / len(vectors)
-        x = F.x
-        for v in vectors:
-            w = v.size[0] + spare
-            viewports[v.key] = Rect(x, F.bottom - row_h, w, row_h)
-            if x > F.x:
-                seps.append((x, F.bottom - row_h, x, F.bottom))
-            x += w
-        vec_top = F.bottom - row_h
-        if space:
-            seps.append((F.x, vec_top, xd, vec_top))
-    else:
-        y = F.bottom
-        for v in reversed(vectors):
-            y -= v.size[1]
-            viewports[v.key] = Rect(F.x, y, dw, v.size[1])
-            if y > F.top + 1e-9:
-                seps.append((F.x, y, xd, y))
-        vec_top = y
-    if vec_top < F.top - 1e-9 or (space and vec_top - F.top < SPACE_MIN_H):
-        raise LayoutError(f"the vector polygons need {F.bottom - vec_top:.0f} mm of height and leave no "
-                          f"room for the space diagram on {paper.name} {paper.orientation}; use A3")
-    slots = [("text:0", Rect.from_edges(xd + GUTTER, F.top + GUTTER, F.right - GUTTER, tb.top - GUTTER))]
-    if space:
-        full = Rect.from_edges(F.x, F.top, xd, vec_top)
-        got = space.size_for_width(full.w, full.h) if space.size_for_width else None
-        if got is not None and full.h - got[1] >= LEFTOVER_MIN_H:
-            # the space diagram needs less than the column offers: the rest takes text
-            viewports[space.key] = Rect(F.x, F.top, full.w, got[1])
-            sep = (F.x, F.top + got[1], xd, F.top + got[1])
-            slots.append(("text:1", Rect.from_edges(F.x + GUTTER, F.top + got[1] + GUTTER, xd - GUTTER,
-                                                     vec_top - GUTTER)))
-            return Plan(viewports, tuple(slots), tb, tuple(seps), (("text:1", space.key, full, sep),))
-        viewports[space.key] = full
-    elif vec_top - F.top >= LEFTOVER_MIN_H:
-        slots.append(("text:1", Rect.from_edges(F.x + GUTTER, F.top + GUTTER, xd - GUTTER, vec_top - GUTTER)))
-    return Plan(viewports, tuple(slots), tb, tuple(seps))
-
-
-def plan_portrait(paper: Paper, tb_height: Callable[[float], float], space: ViewportNeed | None,
-                  vectors: Sequence[ViewportNeed]) -> Plan:
-    F = paper.frame
-    tbw = paper.title_block_max_width
-    h_tb = tb_height(tbw)
-    tb = Rect(F.right - tbw, F.bottom - h_tb, tbw, h_tb)
-    viewports: dict[str, Rect] = {}
-    seps: list[tuple[float, float, float, float]] = []
-    y = F.top
-    if space:
-        assert space.size_for_width is not None
-        got = space.size_for_width(F.w, 0.35 * F.h)
-        if got is None:
-            raise LayoutError(f"the space diagram does not fit {paper.name} {paper.orientation}; use A3")
-        viewports[space.key] = Rect(F.x, y, F.w, got[1])
-        y += got[1]
-        seps.append((F.x, y, F.right, y))
-    x = F.x
-    row_h = 0.0
-    for v in vectors:
-        w, h = v.size
-        if x > F.x and x + w > F.right:
-            y += row_h
-            seps.append((F.x, y, F.right, y))
-            x, row_h = F.x, 0.0
-        if w > F.w + 1e-9:
-            raise LayoutError(f"the {v.key} polygon needs {w:.0f} mm of width and {paper.name} "
-                              f"{paper.orientation} has {F.w:.0f} mm; use A3")
-        viewports[v.key] = Rect(x, y, w, h)
-        if x > F.x:
-            seps.append((x, y, x, y + h))
-        x += w
-        row_h = max(row_h, h)
-    last_row_right = x
-    y_end = y + row_h
-    if y_end > tb.top:
-        raise LayoutError(f"the diagrams need {y_end - F.top:.0f} mm of height on {paper.name} "
-                          f"{paper.orientation}; use A3 or landscape")
-    slots: list[tuple[str, Rect]] = []
-    if vectors and F.right - last_row_right >= 80.0:
-        slots.append((f"text:{len(slots)}", Rect.from_edges(last_row_right + GUTTER, y + GUTTER,
-                                                             F.right - GUTTER, y_end - GUTTER)))
-        seps.append((last_row_right, y, last_row_right, y_end))
-    if vectors:
-        seps.append((F.x, y_end, F.right, y_end))
-    if tb.top - y_end > 20.0:
-        slots.append((f"text:{len(slots)}", Rect.from_edges(F.x + GUTTER, y_end + GUTTER, F.right - GUTTER,
-                                                             tb.top - GUTTER)))
-    if tb.left - F.left >= 60.0:
-        slots.append((f"text:{len(slots)}", Rect.from_edges(F.x + GUTTER, tb.top + GUTTER, tb.left - GUTTER,
-                                                             F.bottom - GUTTER)))
-    return Plan(viewports, tuple(slots), tb, tuple(seps))

@@ -242,16 +242,19 @@ Command = Union[Line, Polyline, Polygon, Rectangle, Circle, Text]
 
 def translated(cmd: Command, dx: float, dy: float) -> Command:
     """The same command moved by ``(dx, dy)`` mm."""
-    if isinstance(cmd, Line):
-        return replace(cmd, x1=cmd.x1 + dx, y1=cmd.y1 + dy, x2=cmd.x2 + dx, y2=cmd.y2 + dy)
-    if isinstance(cmd, (Polyline, Polygon)):
-        return replace(cmd, points=tuple((x + dx, y + dy) for x, y in cmd.points))
-    if isinstance(cmd, Rectangle):
-        return replace(cmd, x=cmd.x + dx, y=cmd.y + dy)
-    if isinstance(cmd, Circle):
-        return replace(cmd, cx=cmd.cx + dx, cy=cmd.cy + dy)
-    if isinstance(cmd, Text):
-        return replace(cmd, x=cmd.x + dx, y=cmd.y + dy, box=cmd.box.translated(dx, dy))
+    t = type(cmd)
+    if t is Text:
+        b = cmd.box
+        return Text(cmd.x + dx, cmd.y + dy, cmd.spans, cmd.style, Rect(b.x + dx, b.y + dy, b.w, b.h), cmd.region,
+                    cmd.name)
+    if t is Line:
+        return Line(cmd.x1 + dx, cmd.y1 + dy, cmd.x2 + dx, cmd.y2 + dy, cmd.style, cmd.name)
+    if t is Polyline or t is Polygon:
+        return t(tuple((x + dx, y + dy) for x, y in cmd.points), cmd.style, cmd.name)
+    if t is Rectangle:
+        return Rectangle(cmd.x + dx, cmd.y + dy, cmd.w, cmd.h, cmd.style, cmd.name)
+    if t is Circle:
+        return Circle(cmd.cx + dx, cmd.cy + dy, cmd.r, cmd.style, cmd.name)
     raise TypeError(f"not a drawing command: {cmd!r}")
 
 

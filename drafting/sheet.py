@@ -1,35 +1,43 @@
-"""A sheet: a Construction laid out on paper as drawing commands.
+"""Sheets: a Construction laid out on paper as drawing commands, on one or more pages.
 
-``compose_sheet(construction, info, results)`` is the whole pipeline up to the recording back end:
-it draws every entity of every diagram in its viewport (the space diagram at an ISO 5455 scale chosen
-to fit, each vector polygon at the scale its construction chose), places the labels, sets the vector
-equations, the numbered steps, the results table and the notes, and fills in the title block.  The
-result is a :class:`Sheet`: the paper, a tuple of drawing commands in paper mm (y down) and named
-regions, so tests can check what is drawn without rendering.  :mod:`drafting.svg` renders it.
+``compose_sheets(construction, info, results)`` is the whole pipeline up to the recording back end: it
+makes one panel per diagram of the construction (the space diagram at an ISO 5455 scale, each vector
+polygon at the scale its construction fixed or at the largest 1-2-5 scale that fits its panel, charts),
+sets the vector equations, the numbered steps (their values written in the scene's units, scales and
+paper lengths from the scales the drawing chose), the results table and the notes, packs all of it onto
+as few pages as hold it legibly (:mod:`drafting.pages`) and fills in every page's title block (sheet
+n/m).  Each page is a :class:`Sheet`: the paper, a tuple of drawing commands in paper mm (y down) and
+named regions, so tests can check what is drawn without rendering.  :mod:`drafting.svg` renders it.
 
-The parts live in their own modules: :mod:`drafting.diagram` draws a diagram's entities,
-:mod:`drafting.labels` places their labels and :mod:`drafting.viewport` chooses the scales and renders
-each viewport; this module plans the sheet and puts the pieces together.
+``compose_sheet`` is the one-page form: it returns the single sheet, and raises :class:`LayoutError`
+naming the number of sheets when the content needs more than one.
+
+The parts live in their own modules: :mod:`drafting.diagram` and :mod:`drafting.drawers` draw a
+diagram's entities, :mod:`drafting.labels` places their labels, :mod:`drafting.viewport` makes the
+panels and their scales, :mod:`drafting.pages` packs them, :mod:`drafting.formats` writes values.
 """
 
 from __future__ import annotations
 
 import datetime as _dt
-import re
-from dataclasses import dataclass, field
+import warnings
+from dataclasses import dataclass, field, fields, replace
 from types import MappingProxyType
 from typing import Mapping, Sequence
 
-from constructions.record import Construction, Diagram, ScaleBar
+from constructions.record import Construction, Entity, ScaleBar, Step
 
 from . import layout as L
-from .diagram import draw_entities
-from .layout import LayoutError
+from .errors import LayoutError
+from .formats import DiagramScale, SheetFormatter, ValueHook
+from .pages import Document, PagePlan, plan_document
 from .paper import Command, Line, Paper, Rect, Rectangle, Text, paper as make_paper
 from .style import LABEL
-from .viewport import VIEW_PAD, DiagramSpec, fit_space, render_viewport, vector_spec
+from .transform import Transform
+from .unitset import Units
+from .viewport import Panel, PanelCache, VectorPanel, panels_for
 
-__all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheet", "LayoutError"]
+__all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheets", "compose_sheet", "LayoutError"]
 
 
 @dataclass(frozen=True)
@@ -49,7 +57,13 @@ def _today() -> str:
 
 @dataclass(frozen=True)
 class SheetInfo:
-    """What the title block says, and the sheet's paper."""
+    """What the title block says, the sheet's paper and the scene's units.
+
+    ``units`` is the scene's :class:`~drafting.unitset.Units`: the title block names them
+    (``units.summary()``), scale bars and every value written on the sheet use them.  (A string such
+    as "mm, mm/s, rad/s" is still read, with a DeprecationWarning, for callers not yet passing Units.)
+    ``sheet`` is the sheet number of a one-page document; :func:`compose_sheets` numbers its pages.
+    """
 
     title: str
     drawing_number: str
@@ -57,7 +71,7 @@ class SheetInfo:
     orientation: str = "landscape"
     date: str = field(default_factory=_today)
     sheet: tuple[int, int] = (1, 1)
-    units: str = "mm, mm/s, rad/s"
+    units: Units = field(default_factory=Units)
     created_by: str = "drafting"
     notes: tuple[str, ...] = ()
 
@@ -65,19 +79,48 @@ class SheetInfo:
         n, m = self.sheet
         if not (1 <= n <= m):
             raise ValueError(f"sheet {n} of {m} is not a sheet number")
+        if isinstance(self.units, str):
+            warnings.warn("SheetInfo.units should be a drafting.unitset.Units, not a string",
+                          DeprecationWarning, stacklevel=3)
+            object.__setattr__(self, "units", _units_from_text(self.units))
+
+
+def _units_from_text(text: str) -> Units:
+    """Transitional: "m, m/s, rad/s" -> Units (each unit given to the first kind it measures)."""
+    from .unitset import KEYS
+    from .units import check_unit
+    got: dict[str, str] = {}
+    for token in (t.strip() for t in text.replace(";", ",").split(",")):
+        if not token:
+            continue
+        for key, kind in KEYS.items():
+            if key in got:
+                continue
+            try:
+                check_unit(token, kind)
+            except Exception:
+                continue
+            got[key] = token
+            break
+    names = {f.name for f in fields(Units)}
+    return replace(Units(), **{k: v for k, v in got.items() if k in names})
 
 
 @dataclass(frozen=True)
 class Sheet:
-    """A composed sheet: paper, drawing commands (paper mm, y down) and named regions."""
+    """A composed page: paper, drawing commands (paper mm, y down) and named regions."""
 
     paper: Paper
     commands: tuple[Command, ...]
     regions: Mapping[str, Rect] = field(default_factory=dict, compare=False)
     scales: tuple[tuple[str, str], ...] = ()
     text_size: float = LABEL
-    transforms: Mapping[str, L.Transform] = field(default_factory=dict, compare=False)
+    transforms: Mapping[str, Transform] = field(default_factory=dict, compare=False)
     """Model -> paper transform of each viewport ("space", "velocity" ...)."""
+    number: tuple[int, int] = (1, 1)
+    """This page's sheet number n of m."""
+    diagram_scales: Mapping[str, DiagramScale] = field(default_factory=dict, compare=False)
+    """The scale each diagram on this page is drawn at (SI units per mm and as written)."""
 
     @property
     def width(self) -> float:
@@ -94,9 +137,27 @@ class Sheet:
         return tuple(c for c in self.commands if c.name.startswith(prefix))
 
 
-# ---- the sheet ----------------------------------------------------------------------------------
+# ---- text -------------------------------------------------------------------------------------------
 
-def _sections(construction: Construction, results: Sequence[ResultRow], notes: Sequence[str]) -> list[L.Section]:
+def _step_formatter(fmt: SheetFormatter, step: Step) -> SheetFormatter:
+    """The formatter of one step: its scale and paper-length values prefer the step's own diagrams."""
+    keys = tuple(e.diagram.key for e in step.entities if isinstance(e, ScaleBar)) + \
+        tuple(dict.fromkeys(e.diagram.key for e in step.entities))
+    return fmt.preferring(keys) if keys else fmt
+
+
+def step_text(step: Step, fmt: SheetFormatter) -> str:
+    """A step's words with its values written by ``fmt`` (a step with no values is its words)."""
+    words = getattr(step, "words", None)
+    if words is None:                                  # a record without values apart
+        return step.caption
+    if not step.values:
+        return words
+    return step.text(_step_formatter(fmt, step))
+
+
+def _sections(construction: Construction, results: Sequence[ResultRow], notes: Sequence[str],
+              fmt: SheetFormatter) -> list[L.Section]:
     secs: list[L.Section] = []
     eqs = construction.equations
     if eqs:
@@ -104,12 +165,12 @@ def _sections(construction: Construction, results: Sequence[ResultRow], notes: S
         items.append(L.Paragraph(f"Marks over each vector: magnitude, then direction; "
                                  f"{L.MARK_YES} known, {L.MARK_NO} unknown.", name="equation legend"))
         secs.append(L.Section("Vector equations", tuple(items)))
-    steps = [s for s in construction.steps if s.caption.strip()]
-    if steps:
-        n = len(steps)
+    texts = [t for t in (step_text(s, fmt).strip() for s in construction.steps) if t]
+    if texts:
+        n = len(texts)
         secs.append(L.Section("Construction", tuple(
-            L.Paragraph(s.caption.strip(), label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}")
-            for i, s in enumerate(steps))))
+            L.Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}")
+            for i, t in enumerate(texts))))
     if results:
         has_note = any(r.note for r in results)
         header = ("Quantity", "Graphical", "Analytic", "Difference") + (("Note",) if has_note else ())
@@ -123,145 +184,177 @@ def _sections(construction: Construction, results: Sequence[ResultRow], notes: S
     return secs
 
 
-def compose_sheet(construction: Construction, info: SheetInfo, results: Sequence[ResultRow] = ()) -> Sheet:
-    """Lay out ``construction`` with its ``results`` on the sheet described by ``info``.
+def _entity_text(construction: Construction, fmt: SheetFormatter):
+    """Words of an entity (dimension, angle mark, note) with the values of the step that adds it."""
+    step_of: dict[str, Step] = {}
+    for s in construction.steps:
+        for e in s.entities:
+            step_of[e.name] = s
 
-    Raises :class:`LayoutError` when the content does not fit even with 2.5 mm lettering; on A4 the
-    message says to use A3.
+    def text(entity: Entity, words: str) -> str:
+        s = step_of.get(entity.name)
+        if "$" not in words or s is None or not s.values:
+            return words
+        try:
+            return Step(words, values=s.values).text(_step_formatter(fmt, s))
+        except (ValueError, KeyError):
+            return words
+    return text
+
+
+_SUMMARY_ORDER = ("length", "velocity", "acceleration", "angular velocity", "angular acceleration")
+
+
+def _units_summary(units: Units, construction: Construction, panels: Sequence[Panel]) -> str:
+    """The units the title block names: length, velocity, angular velocity, and acceleration (with
+    angular acceleration) when the sheet has them."""
+    present = {"length", "velocity", "angular velocity"}
+    present |= {p.quantity for p in panels if isinstance(p, VectorPanel)}
+    for s in construction.steps:
+        for _, v in s.values:
+            present.add(v.kind)
+    if "acceleration" in present:
+        present.add("angular acceleration")
+    kinds = []
+    for k in _SUMMARY_ORDER:
+        if k in present:
+            try:
+                units.of(k)
+            except (KeyError, AttributeError):
+                continue
+            kinds.append(k)
+    try:
+        return units.summary(tuple(kinds))
+    except Exception:
+        return units.summary()
+
+
+# ---- the document ---------------------------------------------------------------------------------
+
+def compose_sheets(construction: Construction, info: SheetInfo, results: Sequence[ResultRow] = (), *,
+                   values: ValueHook | None = None) -> tuple[Sheet, ...]:
+    """Lay out ``construction`` with its ``results`` on as few sheets as hold it legibly.
+
+    ``values(value, default)`` may rewrite how a step value is written (``default(value)`` is the
+    worked-solution text), e.g. a blank for answers on a lab sheet.  Raises :class:`LayoutError` only
+    when one block cannot fit an empty sheet of the paper in ``info``.
     """
     pp = make_paper(info.paper, info.orientation)
-    try:
-        return _compose(construction, info, results, pp)
-    except LayoutError as e:
-        msg = str(e)
-        if pp.name != "A4":                       # A3 is the largest sheet: advise what is left
-            msg = re.sub(r"use A3( or landscape)?$", "it does not fit even on A3; split the content over "
-                         "more sheets or draw the polygon at a coarser scale", msg)
-        raise LayoutError(msg[:1].upper() + msg[1:] + ("" if msg.endswith(".") else ".")) from None
-
-
-COMFORTABLE_LETTERING = 3.0
-"""Lettering below this is taken only when nothing else fits."""
-
-
-def _best_plan(pp: Paper, tb_height, space_need, vec_needs, space_entities, sections, construction, results):
-    """The layout plan and its space scale and text flow.
-
-    Landscape sheets try the default text column and the narrowest one: a narrower column can let the
-    space diagram go up an ISO scale (1:2 -> 1:1 on A4 for the notes' slider-crank), which is worth it
-    when the text keeps its lettering size, or -- to bring a reduced space diagram up towards true
-    scale -- when it stays at least COMFORTABLE_LETTERING.
-    """
-    if pp.orientation == "landscape":
-        plans = [L.plan_landscape(pp, tb_height, space_need, vec_needs),
-                 L.plan_landscape(pp, tb_height, space_need, vec_needs, text_width=L.TEXT_COL_MIN)]
-    else:
-        plans = [L.plan_portrait(pp, tb_height, space_need, vec_needs)]
-    options = []
-    space_misfit = None
-    for plan in plans:
-        ratio = None
-        if space_entities:
-            r = plan.viewports["space"]  # the scale is the same if the viewport later takes an empty slot
-            got = fit_space(space_entities, r.w, r.h)
-            if got is None:
-                space_misfit = space_misfit or (f"the space diagram does not fit its {r.w:.0f} x {r.h:.0f} mm "
-                                                f"viewport on {pp.name} {pp.orientation}; use A3")
-                continue
-            ratio = got[0]
-        # text: equations, steps, results, notes -- shrunk from 3.5 to 2.5 mm until they fit
-        slots = [(name, r) for name, r in plan.text_slots if r.w > 20 and r.h > 10]
-        flowed = L.flow_shrinking(sections, slots)
-        if flowed is None:
-            continue
-        options.append((plan, ratio, slots, flowed))
-    if not options and space_misfit:
-        raise LayoutError(space_misfit)
-    if not options:
-        raise LayoutError(f"the equations, {len(construction.steps)} steps and {len(results)} result rows do "
-                          f"not fit on {pp.name} {pp.orientation} even with 2.5 mm lettering; use A3")
-    first = options[0]
-    first_size = first[3][1]
-    reduced = first[1] is not None and L.ratio_factor(first[1]) < 1.0
-
-    def acceptable(o) -> bool:
-        size = o[3][1]
-        return o is first or size >= first_size - 1e-9 or (reduced and size >= COMFORTABLE_LETTERING - 1e-9)
-    readable = [o for o in options if acceptable(o)]
-    return max(readable, key=lambda o: (L.ratio_factor(o[1]) if o[1] else 0.0, o[3][1]))
-
-
-def _compose(construction: Construction, info: SheetInfo, results: Sequence[ResultRow], pp: Paper) -> Sheet:
+    units = info.units
+    cache = PanelCache()
+    entity_fmt = SheetFormatter(units, {}, values)
+    panels = panels_for(construction, units, cache, _entity_text(construction, entity_fmt))
+    probe = SheetFormatter(units, {}, values, probe=True)
+    sections = _sections(construction, results, info.notes, probe)
+    summary = _units_summary(units, construction, panels)
     frame = pp.frame
-    space_entities = tuple(e for e in construction.entities(Diagram.SPACE) if not isinstance(e, ScaleBar))
-    vector_specs = [
-        vector_spec(dg, tuple(construction.entities(dg)), info.units)
-        for dg in (Diagram.VELOCITY, Diagram.ACCELERATION, Diagram.FORCE)
-        if any(not isinstance(e, ScaleBar) for e in construction.entities(dg))
-    ]
-    # what each vector viewport needs at its fixed scale
-    vec_needs = []
-    for spec in vector_specs:
-        bb = draw_entities(spec.entities, spec.k).bbox()
-        w = (bb.w if bb else 0.0) + 2 * VIEW_PAD + 2
-        h = (bb.h if bb else 0.0) + 2 * VIEW_PAD + 2
-        w = max(w, 90.0)
-        hh = L.header_height(w, spec.heading, spec.paper_per_unit, spec.unit)
-        vec_needs.append(L.ViewportNeed(spec.key, size=(w, h + hh)))
-    space_need = None
-    if space_entities:
-        def size_for_width(w: float, h: float):
-            got = fit_space(space_entities, w, h)
-            return None if got is None else (w, got[1])
-        space_need = L.ViewportNeed("space", size_for_width=size_for_width)
 
-    def tb_fields(scale_text: str):
-        return [[("Scale", scale_text), ("Units", info.units)],
+    def tb_fields(scale_text: str, n: int = 1, m: int = 1):
+        return [[("Scale", scale_text), ("Units", summary)],
                 [("Drawing no.", info.drawing_number), ("Created by", info.created_by), ("Date", info.date),
-                 ("Sheet", f"{info.sheet[0]}/{info.sheet[1]}")]]
+                 ("Sheet", f"{n}/{m}")]]
 
-    # the scale text is not known before the space scale is; size the title block with a long stand-in
-    probe_scale = "; ".join(["Space 1:10000"] + [s.scale_text for s in vector_specs])
+    tb_memo: dict[tuple, float] = {}
 
-    def tb_height(width: float) -> float:
-        return L.title_block(frame, width, info.title, tb_fields(probe_scale)).rect.h
+    def tb_height(width: float, on_page: Sequence[Panel]) -> float:
+        # the scales are not known before the rungs are; size the title block with long stand-ins
+        probe_text = "; ".join(_probe_scale(p) for p in on_page) or "none"
+        key = (round(width, 6), probe_text)
+        if key not in tb_memo:
+            tb_memo[key] = L.title_block(frame, width, info.title, tb_fields(probe_text, 10, 10)).rect.h
+        return tb_memo[key]
 
-    sections = _sections(construction, results, info.notes)
-    plan, ratio, slots, (text_cmds, size) = _best_plan(pp, tb_height, space_need, vec_needs, space_entities,
-                                                       sections, construction, results)
+    text_cache: dict = {}
+    doc = plan_document(pp, panels, sections, tb_height, cache=text_cache)
+    scales = {p.key: p.scale(r) for pg in doc.pages for p, r, _ in pg.panels if p.scale(r) is not None}
+    fmt = SheetFormatter(units, scales, values)
+    real = _sections(construction, results, info.notes, fmt)
+    text_cmds, size = _reflow(real, doc, text_cache)
+    m = doc.count
+    first = info.sheet if m == 1 else None
+    return tuple(_render_page(pp, info, pg, i, m, text_cmds, size, tb_fields, first)
+                 for i, pg in enumerate(doc.pages))
 
-    specs: dict[str, DiagramSpec] = {s.key: s for s in vector_specs}
-    scales: list[tuple[str, str]] = []
-    if space_entities:
-        specs["space"] = DiagramSpec("space", f"Space diagram {L.ratio_text(ratio)}", space_entities,
-                                     f"Space {L.ratio_text(ratio)}", "mm", L.ratio_factor(ratio),
-                                     1000.0 * L.ratio_factor(ratio))
-        scales.append(("space", f"Space {L.ratio_text(ratio)}"))
-    scales += [(s.key, s.scale_text) for s in vector_specs]
-    scale_text = "; ".join(t for _, t in scales) or "none"
 
-    tb = L.title_block(frame, plan.title_block.w, info.title, tb_fields(scale_text))
+def _probe_scale(p: Panel) -> str:
+    if isinstance(p, VectorPanel):
+        return f"{p.label} 1 mm = 0.0005 {p.unit}"
+    if hasattr(p, "ratios"):
+        return "Space 1:10000" if p.key == "space" else f"{getattr(p, 'title', p.key)} 1:10000"
+    return ""
+
+
+def _reflow(sections, doc: Document, cache) -> tuple[list, float]:
+    """The text with its real values, set into the document's slots at the planned size (or smaller)."""
+    from .pages import slots_of
+    if not sections:
+        return [], doc.size
+    slots = slots_of(doc.pages)
+    sizes = [s for s in L.TEXT_SIZES if s <= doc.size + 1e-9]
+    got = L.flow_shrinking(sections, slots, sizes=sizes, cache=cache, tagged=True)
+    if got is None:
+        raise LayoutError("the construction's text with its values does not fit the slots planned for it")
+    return got
+
+
+def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, text_cmds, size: float,
+                 tb_fields, number: tuple[int, int] | None) -> Sheet:
+    frame = pp.frame
+    prefix = f"{index}#"
+    mine = []
+    used = set()
+    for slot, c in text_cmds:
+        if slot.startswith(prefix):
+            used.add(slot[len(prefix):])
+            mine.append(replace(c, region=c.region[len(prefix):]) if isinstance(c, Text) else c)
+    n_of_m = number or (index + 1, m)
+    in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
+    scale_list = [(p.key, p.scale_text(r)) for p, r, _ in in_order if p.scale_text(r)]
+    scale_text = "; ".join(t for _, t in scale_list) or "none"
+    tb = L.title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
     regions: dict[str, Rect] = {"page": pp.page, "frame": frame, "title_block": tb.rect}
     cmds: list[Command] = [Rectangle(frame.x, frame.y, frame.w, frame.h, "frame", "frame")]
-    used = {c.region for c in text_cmds if isinstance(c, Text)}
-    viewports = dict(plan.viewports)
-    separators = list(plan.separators)
-    for slot, key, whole, sep in plan.reclaim:
+    rects = {p.key: rc for p, _, rc in pg.panels}
+    separators = list(pg.separators)
+    slots = list(pg.text_slots)
+    for slot, wholes, sep in pg.reclaim:
         if slot in used:
             separators.append(sep)
-        else:                                    # an empty slot goes back to its viewport
-            viewports[key] = whole
+        else:                                    # an empty slot goes back to its viewports
+            rects.update(wholes)
             slots = [(n, r) for n, r in slots if n != slot]
     for x1, y1, x2, y2 in separators:
         cmds.append(Line(x1, y1, x2, y2, "separator", "separator"))
-    transforms: dict[str, L.Transform] = {}
-    for key, rect in viewports.items():
-        region = f"viewport:{key}"
+    transforms: dict[str, Transform] = {}
+    diagram_scales: dict[str, DiagramScale] = {}
+    for p, rung, _ in in_order:
+        region = f"viewport:{p.key}"
+        rect = rects[p.key]
         regions[region] = rect
-        vc, transforms[key] = render_viewport(specs[key], rect, region)
+        vc, t = p.render(rung, rect, region)
         cmds.extend(vc)
+        if t is not None:
+            transforms[p.key] = t
+        s = p.scale(rung)
+        if s is not None:
+            diagram_scales[p.key] = s
     for name, r in slots:
         regions[name] = r
-    cmds.extend(text_cmds)
+    cmds.extend(mine)
     cmds.extend(tb.commands)
-    return Sheet(pp, tuple(cmds), MappingProxyType(regions), tuple(scales), size, MappingProxyType(transforms))
+    return Sheet(pp, tuple(cmds), MappingProxyType(regions), tuple(scale_list), size,
+                 MappingProxyType(transforms), n_of_m, MappingProxyType(diagram_scales))
+
+
+def compose_sheet(construction: Construction, info: SheetInfo, results: Sequence[ResultRow] = (), *,
+                  values: ValueHook | None = None) -> Sheet:
+    """The one sheet of ``construction``; raises :class:`LayoutError` naming the number of sheets when
+    the content needs more than one (use :func:`compose_sheets` for those, or the larger paper)."""
+    sheets = compose_sheets(construction, info, results, values=values)
+    if len(sheets) > 1:
+        bigger = " or use A3" if info.paper.strip().upper() == "A4" else ""
+        raise LayoutError(f"The content needs {len(sheets)} sheets of {info.paper} {info.orientation} to stay "
+                          f"legible; compose_sheets draws them as sheets 1/{len(sheets)} to "
+                          f"{len(sheets)}/{len(sheets)}{bigger}.")
+    return sheets[0]
+

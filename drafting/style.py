@@ -19,6 +19,7 @@ from pathlib import Path
 
 from constructions.record import Role
 
+from .errors import StyleError
 from .paper import Rect, Span
 
 # ---- ISO 128 line widths (mm) and patterns -------------------------------------------------------
@@ -92,6 +93,17 @@ def _styles() -> dict[str, Style]:
         Style("bar_light", width=THIN, fill="white", cap="butt", join="miter"),
         Style("tick", width=THIN, cap="butt"),
         Style("mark", width=THIN),                                   # drawn tick/cross marks
+        Style("dimension", width=THIN, cap="butt"),                  # ISO 129 dimension and extension lines
+        Style("load", width=THICK, cap="butt"),                      # external and inertia forces
+        Style("note_bg", stroke=None, fill="white"),                 # behind a note or dimension text
+        # charts: axes and ticks thin; curves thick, told apart by dash pattern (black and white)
+        Style("axis", width=THIN, cap="square"),
+        Style("grid", width=THIN, stroke=LIGHT_GREY, cap="butt"),
+        Style("band", stroke=None, fill=LIGHT_GREY),
+        Style("series 1", width=THICK, fill=None),
+        Style("series 2", width=THICK, dash=dashed(THICK), cap="butt"),
+        Style("series 3", width=THICK, dash=long_dash_dot(THICK)),
+        Style("series 4", width=THIN),
         # lettering: black fill, no stroke; the size travels with the text
         Style("text", stroke=None, fill="black"),
         Style("label", stroke=None, fill="black"),
@@ -111,26 +123,62 @@ def style(name: str) -> Style:
     try:
         return styles()[name]
     except KeyError:
-        raise KeyError(f"no style named {name!r}") from None
+        raise StyleError(f"no style named {name!r}") from None
+
+
+LINE_STYLES: dict[Role, str] = {
+    Role.GIVEN: "link",            # links, guides: thick
+    Role.KNOWN: "vector",          # vectors drawn to scale: thick
+    Role.RESULT: "vector",
+    Role.TRIAL: "trial",           # thin, continuous, extended past the crossing
+    Role.PATH: "path",             # loci: thin
+    Role.IMAGE: "image",
+    Role.LABEL: "trial",
+    Role.SCALE_BAR: "tick",
+    Role.CENTRE_LINE: "centre",    # long-dash-dot (centre lines, pitch and base circles)
+    Role.DIMENSION: "dimension",   # thin
+    Role.NOTE: "dimension",        # a leader of a note: thin
+    Role.LOAD: "load",             # forces: thick
+    Role.CHART: "series 1",
+}
+"""The line style of a line-like entity (bar, trial line, path, circle, curve, vector shaft) of each role."""
+
+AREA_STYLES: dict[Role, str] = {
+    Role.GIVEN: "link",
+    Role.KNOWN: "trial",
+    Role.RESULT: "trial",
+    Role.TRIAL: "trial",
+    Role.PATH: "trial",
+    Role.IMAGE: "image",           # velocity / acceleration images: light grey with a thin outline
+    Role.LABEL: "trial",
+    Role.SCALE_BAR: "trial",
+    Role.CENTRE_LINE: "centre",
+    Role.DIMENSION: "dimension",
+    Role.NOTE: "dimension",
+    Role.LOAD: "trial",
+    Role.CHART: "band",
+}
+"""The style of a closed figure (polygon, plate, closed curve) of each role."""
+
+
+def _role_style(table: dict, role: Role, what: str) -> str:
+    try:
+        return table[role]
+    except (KeyError, TypeError):
+        name = role.name if isinstance(role, Role) else repr(role)
+        raise StyleError(f"the role {name} has no {what} style; map it in drafting.style "
+                         f"({'LINE_STYLES' if what == 'line' else 'AREA_STYLES'})") from None
 
 
 def line_style_for(role: Role) -> str:
-    """The style of a line-like entity (bar, trial line, path, vector shaft) of ``role``."""
-    return {
-        Role.GIVEN: "link",
-        Role.KNOWN: "vector",
-        Role.RESULT: "vector",
-        Role.TRIAL: "trial",
-        Role.PATH: "path",
-        Role.IMAGE: "image",
-        Role.LABEL: "trial",
-        Role.SCALE_BAR: "tick",
-    }[role]
+    """The style of a line-like entity (bar, trial line, path, vector shaft) of ``role``; a role without
+    a style raises :class:`StyleError` naming it."""
+    return _role_style(LINE_STYLES, role, "line")
 
 
 def area_style_for(role: Role) -> str:
     """The style of a closed figure (polygon, plate) of ``role``."""
-    return {Role.IMAGE: "image", Role.GIVEN: "link"}.get(role, "trial")
+    return _role_style(AREA_STYLES, role, "area")
 
 
 # ---- lettering (ISO 3098 type B) ----------------------------------------------------------------
@@ -185,7 +233,12 @@ def font_metrics() -> tuple[float, float]:
 
 def text_width(text: str, size: float, italic: bool = False) -> float:
     """Advance width in mm of ``text`` at ``size`` mm (sum of per-letter advances, as cairo draws)."""
-    return sum(_advance(ch, italic) for ch in text) * size * WIDTH_MARGIN
+    return _em_width(text, italic) * size * WIDTH_MARGIN
+
+
+@functools.lru_cache(maxsize=16384)
+def _em_width(text: str, italic: bool) -> float:
+    return sum(_advance(ch, italic) for ch in text)
 
 
 def sub_size(size: float) -> float:
@@ -209,6 +262,12 @@ class Extent:
 
 
 def measure(spans: tuple[Span, ...] | list[Span]) -> Extent:
+    """The extent of ``spans`` (measured once per distinct run of spans)."""
+    return _measure(tuple(spans))
+
+
+@functools.lru_cache(maxsize=8192)
+def _measure(spans: tuple[Span, ...]) -> Extent:
     asc, desc = font_metrics()
     width = 0.0
     top = 0.0

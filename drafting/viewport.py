@@ -1,130 +1,406 @@
-"""Viewports: a diagram drawn, centred and labelled in its rectangle of the sheet.
+"""Diagram panels: one diagram drawn, centred and labelled in its rectangle of the sheet.
 
-Holds :class:`DiagramSpec`, the choice of the largest ISO 5455 scale at which the space diagram fits,
-the spec of a vector polygon at its construction's scale in the sheet's units, and the rendering of
-one viewport.
+A :class:`Panel` knows the scales it may be drawn at, as a ladder of *rungs* from the smallest drawing
+to the largest, and the room each rung needs for a given panel width (the drawing with room for its
+labels, under the heading and scale bar).  The page packer (:mod:`drafting.pages`) climbs the rungs of
+every panel while they fit, then :meth:`Panel.render` draws the chosen rung into the rectangle.
+
+- :class:`SpacePanel`: the space diagram (and any diagram drawn to a length scale) at an ISO 5455 scale.
+- :class:`VectorPanel`: a vector polygon at the scale its construction fixed (``ScaleBar.units_per_mm``)
+  or, when that is None, at a 1-2-5 scale of the sheet's unit (1 mm = 10 mm/s): the largest that fits
+  the panel.
+- :class:`ChartPanel`: charts, filling whatever room they get.
+
+A diagram is drawn only at the scales actually tried, once each (the drawings are kept by scale), and
+its size at a scale is read off that drawing.
 """
 
 from __future__ import annotations
 
-import functools
 import math
-import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Sequence
 
-from constructions.geometry import Vec
-from constructions.record import Diagram, Entity, ScaleBar
+from constructions.record import Arrow, Chart, Entity, Role, ScaleBar
 
 from . import layout as L
-from .diagram import model_points, draw_entities
+from .chart import CHART_MIN, AxisUnits, draw_chart
+from .diagram import Drawing, TextFn, draw_entities, model_points
+from .errors import LayoutError
+from .formats import DiagramScale, per_si, symbol_of
 from .labels import place_labels
-from .layout import LayoutError
-from .paper import Command, Rect
+from .paper import Command, Rect, Text
+from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
+from .transform import Transform
 
 VIEW_PAD = 7.0          # room around a drawing for its labels
+VECTOR_MIN_W = 90.0     # a vector panel is at least this wide (heading and scale bar side by side)
+SPACE_MIN_MM = 25.0     # the space diagram's larger side is at least this long at a legible scale
+POLYGON_MIN_MM = 40.0   # a polygon drawn at a scale the sheet chooses is at least this large
+POLYGON_AIM_MM = 50.0   # ... and aims at a known vector at least this long
+
+Size = tuple[float, float]
 
 
-# ---- units --------------------------------------------------------------------------------------
+@dataclass
+class PanelCache:
+    """What a compose run remembers: drawings by scale, header heights by width."""
 
-_VECTOR = {
-    Diagram.VELOCITY: ("velocity", "Velocity polygon", "m/s", "mm/s"),
-    Diagram.ACCELERATION: ("acceleration", "Acceleration polygon", "m/s^2", "mm/s^2"),
-    Diagram.FORCE: ("force", "Force polygon", "N", "N"),
-}
-_ACCEL = re.compile(r"/\s*s\s*(\^\s*2|\*\*\s*2|2|\u00b2)")
+    headers: dict[tuple, float] = field(default_factory=dict)
+    fills: dict[tuple, object] = field(default_factory=dict)
 
-
-def display_unit(units: str, kind: str) -> str:
-    """The unit a vector scale is written in, taken from SheetInfo.units."""
-    tokens = [t.strip() for t in re.split(r"[,;]", units) if t.strip()]
-    for t in tokens:
-        if "rad" in t:
-            continue
-        if kind == "velocity" and "/s" in t and not _ACCEL.search(t):
-            return t
-        if kind == "acceleration" and _ACCEL.search(t):
-            return t
-        if kind == "force" and re.fullmatch(r"[kMm]?N", t):
-            return t
-    return {"velocity": "mm/s", "acceleration": "mm/s^2", "force": "N"}[kind]
+    def header_height(self, width: float, heading: str, ppu: float | None, unit: str) -> float | None:
+        key = (round(width, 6), heading, ppu, unit)
+        got = self.headers.get(key)
+        if got is None:
+            try:
+                got = L.header_height(width, heading, ppu, unit)
+            except LayoutError:
+                got = math.inf
+            self.headers[key] = got
+        return None if got == math.inf else got
 
 
-@functools.cache
-def _unit_factor(si_unit: str, unit: str) -> float:
-    """How many ``unit`` make one ``si_unit``."""
-    from .units import registry
-    q = registry().Quantity(1.0, si_unit)
-    try:
-        return float(q.to(unit.replace("\u00b2", "^2")).magnitude)
-    except Exception as e:
-        raise ValueError(f"the sheet unit {unit!r} cannot express a {si_unit} quantity") from e
+class Figure:
+    """A diagram's entities and their drawings, one per scale tried (``k`` paper mm per model unit)."""
+
+    def __init__(self, entities: Sequence[Entity], text: TextFn | None = None) -> None:
+        self.entities = tuple(entities)
+        self.text = text
+        self._draws: dict[float, Drawing] = {}
+        pts = model_points(self.entities)
+        if pts:
+            self.extent = (max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
+        else:
+            self.extent = (0.0, 0.0)
+        self.draws = 0
+
+    @property
+    def size(self) -> float:
+        """The larger side of the model points' bounding box (model units)."""
+        return max(self.extent)
+
+    def drawing(self, k: float) -> Drawing:
+        d = self._draws.get(k)
+        if d is None:
+            d = draw_entities(self.entities, k, text=self.text)
+            self._draws[k] = d
+            self.draws += 1
+        return d
+
+    def bbox(self, k: float) -> Rect | None:
+        return self.drawing(k).bbox()
 
 
-# ---- viewports ----------------------------------------------------------------------------------
+class Panel:
+    """One diagram block: a ladder of scales (rungs, smallest drawing first) and what each needs."""
 
-@dataclass(frozen=True)
-class DiagramSpec:
-    key: str                        # region key: "space", "velocity" ...
-    heading: str
-    entities: tuple[Entity, ...]
-    scale_text: str                 # for the title block
-    unit: str                       # unit of the scale bar
-    paper_per_unit: float           # paper mm per unit of the scale bar
-    k: float                        # paper mm per model (SI) unit
+    key: str
+    kind: str                    # "space", "vector", "chart"
+    priority: int = 1
 
+    def rungs(self) -> int:
+        raise NotImplementedError
 
-def fit_space(entities: tuple[Entity, ...], w: float, h: float):
-    """The largest ISO 5455 scale at which the space diagram fits a w x h viewport."""
-    for ratio in L.ISO_5455:
-        k = 1000.0 * L.ratio_factor(ratio)
-        dr = draw_entities(entities, k)
-        bb = dr.bbox()
-        if bb is None:
-            continue
-        heading = f"Space diagram {L.ratio_text(ratio)}"
-        try:
-            hh = L.header_height(w, heading, L.ratio_factor(ratio), "mm")
-        except LayoutError:
-            continue
-        need_w = bb.w + 2 * VIEW_PAD + 2
-        need_h = bb.h + 2 * VIEW_PAD + 2 + hh
-        if need_w <= w and need_h <= h:
-            return ratio, need_h
-    return None
+    def min_rung(self) -> int:
+        """The first rung at which the diagram is legible."""
+        return 0
 
+    def need(self, rung: int, width: float) -> Size | None:
+        """(width, height) of the panel the diagram needs at ``rung`` in a panel ``width`` wide, or None
+        when it does not fit that width."""
+        raise NotImplementedError
 
-def vector_spec(diagram: Diagram, entities: tuple[Entity, ...], units: str) -> DiagramSpec:
-    kind, heading, si_unit, _ = _VECTOR[diagram]
-    scale = next((e for e in entities if isinstance(e, ScaleBar)), None)
-    if scale is not None and scale.units_per_mm > 0 and math.isfinite(scale.units_per_mm):
-        upm = scale.units_per_mm
-    else:
-        pts = model_points(entities) or [Vec(0, 0)]
-        ext = max(max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts), 1e-300)
-        upm = next(v for v in L.nice_values(ext / 110.0, ext / 110.0 * 10.1))
-    unit = display_unit(units, kind)
-    f = _unit_factor(si_unit, unit)
-    per_mm = upm * f
-    shown = re.sub(r"\^\s*2|\*\*\s*2", "\u00b2", unit)          # mm/s^2 is printed mm/s²
-    return DiagramSpec(diagram.key, heading, entities, f"{kind} 1 mm = {L.number_text(per_mm)} {shown}",
-                       shown, 1.0 / per_mm, 1.0 / upm)
+    def min_width(self) -> float:
+        return 0.0
+
+    def scale_text(self, rung: int) -> str | None:
+        return None
+
+    def scale(self, rung: int) -> DiagramScale | None:
+        return None
+
+    def drawn_size(self, rung: int) -> Size:
+        """The extent of the diagram's own figure (model points) on paper at ``rung``, mm."""
+        return (0.0, 0.0)
+
+    def render(self, rung: int, rect: Rect, region: str) -> tuple[list[Command], Transform | None]:
+        raise NotImplementedError
 
 
-def render_viewport(spec: DiagramSpec, rect: Rect, region: str) -> tuple[list[Command], L.Transform]:
-    header = L.viewport_header(rect, spec.heading, spec.paper_per_unit, spec.unit, region=region, name=spec.key)
+def _fit_drawing(d: Drawing) -> Size:
+    bb = d.bbox()
+    w = (bb.w if bb else 0.0) + 2 * VIEW_PAD + 2
+    h = (bb.h if bb else 0.0) + 2 * VIEW_PAD + 2
+    return w, h
+
+
+def _render_drawing(d: Drawing, k: float, header: L.Header, rect: Rect, region: str,
+                    heading: str) -> tuple[list[Command], Transform]:
     plot = Rect.from_edges(rect.x + 1.0, rect.y + header.height, rect.right - 1.0, rect.bottom - 1.0)
-    dr = draw_entities(spec.entities, spec.k)
-    bb = dr.bbox()
+    bb = d.bbox()
     cmds: list[Command] = list(header.commands)
     if bb is None:
-        return cmds, L.Transform(spec.k, plot.center[0], plot.center[1])
+        return cmds, Transform(k, plot.center[0], plot.center[1])
     if bb.w + 2 * VIEW_PAD > plot.w + 1e-6 or bb.h + 2 * VIEW_PAD > plot.h + 1e-6:
-        raise LayoutError(f"the {spec.heading.lower()} needs {bb.w + 2 * VIEW_PAD:.0f} x "
+        raise LayoutError(f"the {heading.lower()} needs {bb.w + 2 * VIEW_PAD:.0f} x "
                           f"{bb.h + 2 * VIEW_PAD:.0f} mm and its viewport has {plot.w:.0f} x {plot.h:.0f} mm; "
                           f"use A3")
     dx = plot.center[0] - (bb.x + bb.w / 2)
     dy = plot.center[1] - (bb.y + bb.h / 2)
-    moved = dr.moved(dx, dy)
-    cmds.extend(moved.commands)
+    moved = d.moved(dx, dy)
+    cmds.extend(_regioned(moved.commands, region))
     cmds.extend(place_labels(moved, plot, region))
-    return cmds, L.Transform(spec.k, dx, dy)
+    return cmds, Transform(k, dx, dy)
+
+
+def _regioned(cmds: Sequence[Command], region: str) -> list[Command]:
+    from dataclasses import replace
+    return [replace(c, region=region) if isinstance(c, Text) else c for c in cmds]
+
+
+class SpacePanel(Panel):
+    """A diagram drawn to a length scale (the space diagram) at an ISO 5455 scale."""
+
+    kind = "space"
+    priority = 0
+
+    def __init__(self, key: str, title: str, entities: Sequence[Entity], units, cache: PanelCache,
+                 text: TextFn | None = None) -> None:
+        self.key, self.title = key, title
+        self.figure = Figure(entities, text)
+        self.units, self.cache = units, cache
+        self.unit = symbol_of(units, "length")
+        self.per_m = per_si(units, "length")                  # display length units per metre
+        self.ratios = tuple(reversed(ISO_5455))               # smallest drawing first
+
+    def rungs(self) -> int:
+        return len(self.ratios)
+
+    def k(self, rung: int) -> float:
+        return 1000.0 * ratio_factor(self.ratios[rung])
+
+    def heading(self, rung: int) -> str:
+        return f"{self.title} {ratio_text(self.ratios[rung])}"
+
+    def min_rung(self) -> int:
+        size = self.figure.size
+        if size <= 0:
+            return self.ratios.index((1, 1))
+        for i in range(len(self.ratios)):
+            if size * self.k(i) >= SPACE_MIN_MM:
+                return i
+        return len(self.ratios) - 1
+
+    def ppu(self, rung: int) -> float:
+        return self.k(rung) / self.per_m                      # paper mm per display length unit
+
+    def need(self, rung: int, width: float) -> Size | None:
+        w, h = _fit_drawing(self.figure.drawing(self.k(rung)))
+        if w > width + 1e-9:
+            return None
+        hh = self.cache.header_height(width, self.heading(rung), self.ppu(rung), self.unit)
+        if hh is None:
+            return None
+        return w, h + hh
+
+    def scale_text(self, rung: int) -> str:
+        return f"Space {ratio_text(self.ratios[rung])}" if self.key == "space" else \
+            f"{self.title} {ratio_text(self.ratios[rung])}"
+
+    def scale(self, rung: int) -> DiagramScale:
+        return DiagramScale(self.key, "length", 1.0 / self.k(rung), self.per_m / self.k(rung), self.unit)
+
+    def drawn_size(self, rung: int) -> Size:
+        k = self.k(rung)
+        return self.figure.extent[0] * k, self.figure.extent[1] * k
+
+    def render(self, rung: int, rect: Rect, region: str):
+        heading = self.heading(rung)
+        header = L.viewport_header(rect, heading, self.ppu(rung), self.unit, region=region, name=self.key)
+        return _render_drawing(self.figure.drawing(self.k(rung)), self.k(rung), header, rect, region, heading)
+
+
+VECTOR_TITLES = {"velocity": "Velocity polygon", "acceleration": "Acceleration polygon", "force": "Force polygon"}
+
+
+class VectorPanel(Panel):
+    """A vector polygon at the scale its construction fixed, or at the largest 1-2-5 scale (in the
+    sheet's unit) that fits its panel when the construction leaves the scale to the drawing."""
+
+    kind = "vector"
+
+    def __init__(self, key: str, title: str, label: str, quantity: str, entities: Sequence[Entity],
+                 fixed: float | None, units, cache: PanelCache, text: TextFn | None = None) -> None:
+        self.key, self.title, self.label, self.quantity = key, title, label, quantity
+        self.figure = Figure(entities, text)
+        self.units, self.cache = units, cache
+        self.unit = symbol_of(units, quantity)
+        self.f = per_si(units, quantity)                      # display units per SI unit
+        self.fixed = fixed
+        if fixed is not None:
+            self.values = (fixed * self.f,)
+        else:
+            size = self.figure.size * self.f
+            if size > 0 and math.isfinite(size):
+                # display units per mm, from a drawing 10 mm large to one 2 m large: largest value first
+                self.values = tuple(reversed(nice_values(size / 2000.0, size / 10.0)))
+            else:
+                self.values = (1.0,)
+        self.known = max(((e.tip - e.tail).norm() for e in entities
+                          if isinstance(e, Arrow) and e.role is Role.KNOWN), default=0.0)
+
+    @property
+    def free(self) -> bool:
+        return self.fixed is None
+
+    def rungs(self) -> int:
+        return len(self.values)
+
+    def upm(self, rung: int) -> float:
+        """SI units per paper mm."""
+        return self.fixed if self.fixed is not None else self.values[rung] / self.f
+
+    def k(self, rung: int) -> float:
+        return 1.0 / self.upm(rung)
+
+    def min_rung(self) -> int:
+        if self.fixed is not None:
+            return 0
+        for i in range(len(self.values)):
+            if self.figure.size * self.k(i) >= POLYGON_MIN_MM - 1e-9:
+                return i
+        return len(self.values) - 1
+
+    def need(self, rung: int, width: float) -> Size | None:
+        w, h = _fit_drawing(self.figure.drawing(self.k(rung)))
+        w = max(w, VECTOR_MIN_W)
+        if w > width + 1e-9:
+            return None
+        hh = self.cache.header_height(width, self.title, self.k(rung) / self.f, self.unit)
+        if hh is None:
+            return None
+        return w, h + hh
+
+    def min_width(self) -> float:
+        return VECTOR_MIN_W
+
+    def scale_text(self, rung: int) -> str:
+        return f"{self.label} 1 mm = {number_text(self.upm(rung) * self.f)} {self.unit}"
+
+    def scale(self, rung: int) -> DiagramScale:
+        return DiagramScale(self.key, self.quantity, self.upm(rung), self.upm(rung) * self.f, self.unit)
+
+    def drawn_size(self, rung: int) -> Size:
+        k = self.k(rung)
+        return self.figure.extent[0] * k, self.figure.extent[1] * k
+
+    def known_mm(self, rung: int) -> float:
+        return self.known * self.k(rung)
+
+    def render(self, rung: int, rect: Rect, region: str):
+        header = L.viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region,
+                                   name=self.key)
+        return _render_drawing(self.figure.drawing(self.k(rung)), self.k(rung), header, rect, region, self.title)
+
+
+class ChartPanel(Panel):
+    """One or more charts stacked in a panel of their own; they fill whatever room they get."""
+
+    kind = "chart"
+    priority = 2
+
+    def __init__(self, key: str, title: str, charts: Sequence[Chart], units, cache: PanelCache) -> None:
+        self.key, self.title, self.charts = key, title, tuple(charts)
+        self.units, self.cache = units, cache
+        self.axes = AxisUnits(lambda kind, v: v * per_si(units, kind), lambda kind: symbol_of(units, kind))
+
+    def rungs(self) -> int:
+        return 1
+
+    def need(self, rung: int, width: float) -> Size | None:
+        if width < CHART_MIN[0]:
+            return None
+        hh = self.cache.header_height(width, self.title, None, "")
+        if hh is None:
+            return None
+        return CHART_MIN[0], hh + CHART_MIN[1] * len(self.charts)
+
+    def min_width(self) -> float:
+        return CHART_MIN[0]
+
+    def render(self, rung: int, rect: Rect, region: str):
+        header = L.viewport_header(rect, self.title, None, "", region=region, name=self.key)
+        cmds: list[Command] = list(header.commands)
+        area = Rect.from_edges(rect.x + 2.0, rect.y + header.height, rect.right - 2.0, rect.bottom - 2.0)
+        n = len(self.charts)
+        h = area.h / n
+        for i, c in enumerate(self.charts):
+            sub = Rect(area.x, area.y + i * h, area.w, h - (2.0 if i < n - 1 else 0.0))
+            cmds.extend(draw_chart(c, sub, self.axes, region))
+        return cmds, None
+
+
+# ---- building the panels of a construction ------------------------------------------------------------
+
+def _title(kind: str, name: str) -> str:
+    base = VECTOR_TITLES.get(kind, kind[:1].upper() + kind[1:] + " diagram")
+    return f"{base}, {name}" if name else base
+
+
+def _label(kind: str, name: str) -> str:
+    return f"{kind} ({name})" if name else kind
+
+
+def panels_for(construction, units, cache: PanelCache, text: TextFn | None = None) -> list[Panel]:
+    """One panel per diagram of ``construction`` (in the order space, velocity, acceleration, force,
+    the others as they first appear), and one chart panel per diagram holding charts."""
+    from .diagram import is_panel_entity
+    by_diagram: dict = {}
+    for e in construction.entities():
+        by_diagram.setdefault(e.diagram, []).append(e)
+    order = {"space": 0, "velocity": 1, "acceleration": 2, "force": 3}
+    diagrams = sorted(by_diagram, key=lambda d: order.get(d.kind, 4))       # stable: first appearance
+    panels: list[Panel] = []
+    charts: list[Panel] = []
+    for dg in diagrams:
+        ents = by_diagram[dg]
+        chart_ents = [e for e in ents if is_panel_entity(e)]
+        drawn = [e for e in ents if not is_panel_entity(e)]
+        if chart_ents:
+            title = dg.name if dg.kind == "chart" and dg.name else _title(dg.kind, dg.name) if dg.kind != "chart" \
+                else "Chart"
+            charts.append(ChartPanel(dg.key if not drawn else f"{dg.key} (chart)", title, chart_ents, units, cache))
+        if not any(not isinstance(e, ScaleBar) for e in drawn):
+            continue
+        bar = next((e for e in drawn if isinstance(e, ScaleBar)), None)
+        quantity = bar.quantity if bar is not None else dg.kind
+        if quantity not in VECTOR_TITLES:          # drawn to a length scale: space, free body ...
+            title = "Space diagram" if dg.kind == "space" and not dg.name else _title(dg.kind, dg.name)
+            panels.append(SpacePanel(dg.key, title, drawn, units, cache, text))
+        else:
+            upm = bar.units_per_mm if bar is not None else None
+            fixed = upm if upm is not None and upm > 0 and math.isfinite(upm) else None
+            panels.append(VectorPanel(dg.key, _title(dg.kind, dg.name), _label(dg.kind, dg.name), quantity, drawn,
+                                      fixed, units, cache, text))
+    out = panels + charts
+    for i, p in enumerate(out):
+        p.index = i
+    return out
+
+
+__all__ = ["Panel", "SpacePanel", "VectorPanel", "ChartPanel", "PanelCache", "Figure", "panels_for", "VIEW_PAD",
+           "POLYGON_MIN_MM", "POLYGON_AIM_MM"]
+
+
+def fit_space(entities: tuple[Entity, ...], w: float, h: float, units=None):
+    """The largest ISO 5455 scale at which a space diagram fits a ``w`` x ``h`` viewport, and the
+    height it needs: ``(ratio, height)`` or None."""
+    from .unitset import Units
+    p = SpacePanel("space", "Space diagram", entities, units or Units(), PanelCache())
+    for r in range(p.rungs() - 1, -1, -1):
+        got = p.need(r, w)
+        if got is not None and got[1] <= h:
+            return p.ratios[r], got[1]
+    return None
+

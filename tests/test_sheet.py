@@ -21,10 +21,10 @@ from constructions.record import (Arc, Arrow, Bar, Block, Construction, Diagram,
 from drafting import layout as L
 from drafting.layout import LayoutError
 from drafting.paper import Line, Polygon, Rectangle
-from drafting.sheet import ResultRow, SheetInfo, compose_sheet
+from drafting.sheet import ResultRow, SheetInfo, compose_sheet, compose_sheets
 from drafting.style import MIN_TEXT, dashed, long_dash_dot, style
 from drafting.svg import sheet_to_svg
-from drafting.viewport import display_unit
+from drafting.unitset import Units
 
 SVG = "{http://www.w3.org/2000/svg}"
 S, V = Diagram.SPACE, Diagram.VELOCITY
@@ -174,11 +174,7 @@ def test_scale_text_in_title_block(a4):
 
 
 def test_velocity_unit_taken_from_sheet_units():
-    assert display_unit("mm, mm/s, rad/s", "velocity") == "mm/s"
-    assert display_unit("m, rad/s, m/s", "velocity") == "m/s"
-    assert display_unit("mm, rad/s", "velocity") == "mm/s"
-    assert display_unit("mm, mm/s, mm/s^2", "acceleration") == "mm/s^2"
-    sheet = compose_sheet(small_construction(), info(units="m, m/s, rad/s"), result_rows(2))
+    sheet = compose_sheet(small_construction(), info(units=Units(length="m", velocity="m/s")), result_rows(2))
     assert dict(sheet.scales)["velocity"] == "velocity 1 mm = 0.01 m/s"
     units = [t.plain for t in sheet.texts() if t.name == "scale bar velocity unit"]
     assert units == ["m/s"]
@@ -374,14 +370,27 @@ def test_svg_is_stable_and_rounded(a4):
     assert not re.search(r"\d\.\d{4,}", svg)
 
 
-def test_layout_error_when_too_much_for_a4():
+def test_too_much_for_one_a4_sheet_spills_onto_more():
+    """30 more steps and 20 result rows: a document of sheets n/m (compose_sheet names the count)."""
     big = slider_crank(extra_steps=30)
-    with pytest.raises(LayoutError, match="A3"):
+    sheets = compose_sheets(big, info(), result_rows(20))
+    m = len(sheets)
+    assert m >= 2 and [s.number for s in sheets] == [(i + 1, m) for i in range(m)]
+    for s in sheets:
+        assert f"{s.number[0]}/{m}" in {t.plain for t in s.texts() if t.region == "title_block"}
+        assert s.text_size >= MIN_TEXT
+    steps = [t for s in sheets for t in s.texts() if t.name.startswith("step ") and t.name.endswith(" number")]
+    assert sorted(int(t.plain[:-1]) for t in steps) == list(range(1, 43))
+    with pytest.raises(LayoutError, match=f"{m} sheets.*use A3"):
         compose_sheet(big, info(), result_rows(20))
 
 
-def test_a4_portrait_too_full_says_use_a3():
-    with pytest.raises(LayoutError, match="use A3"):
+def test_a4_portrait_too_full_for_one_sheet_takes_two():
+    sheets = compose_sheets(slider_crank(), info(orientation="portrait"), result_rows(8))
+    assert len(sheets) == 2
+    assert {k for s in sheets for k in s.regions if k.startswith("viewport:")} == {"viewport:space",
+                                                                                   "viewport:velocity"}
+    with pytest.raises(LayoutError, match="2 sheets.*use A3"):
         compose_sheet(slider_crank(), info(orientation="portrait"), result_rows(8))
 
 
