@@ -276,8 +276,9 @@ def m_odd_text(rng: random.Random, c: Case) -> None:
         c.notes.append("odd text everywhere")
     else:
         dr = d.setdefault("drawing", {})
-        dr["title"] = _oddify(rng, str(dr.get("title", "t")))[:200]
-        dr["number"] = _oddify(rng, str(dr.get("number", "n")))[:200]
+        for key, default in (("title", "t"), ("number", "n")):
+            old = str(dr.get(key, default))
+            dr[key] = _oddify(rng, old)[:200] if len(old) <= 200 else _oddify(rng, old)
         if not dr["title"].strip():
             dr["title"] = "x" + dr["title"]
         if not dr["number"].strip():
@@ -333,7 +334,8 @@ def m_duplicate(rng: random.Random, c: Case) -> None:
     if c.data is None:
         return
     d = c.data
-    used = {x["number"] for x in d.get("link", []) + d.get("slider", []) if isinstance(x, dict) and "number" in x}
+    used = {x["number"] for x in d.get("link", []) + d.get("slider", [])
+            if isinstance(x, dict) and type(x.get("number")) is int} or {10}
     if d.get("slider") and rng.random() < 0.6:
         s = dict(d["slider"][0])
         s["number"] = max(used) + 1
@@ -394,7 +396,7 @@ def m_long_string(rng: random.Random, c: Case) -> None:
 
 def m_odd_filename(rng: random.Random, c: Case) -> None:
     c.filename = rng.choice(ODD_NAMES) + rng.choice([".toml", ".TOML", "", ".toml.toml"])
-    if c.data is not None and rng.random() < 0.5:
+    if c.data is not None and not c.must_refuse and rng.random() < 0.5:
         c.data.get("drawing", {}).pop("title", None)          # the title becomes the file's stem
     c.notes.append(f"file name {c.filename!r}")
 
@@ -430,7 +432,13 @@ def make_case(rng: random.Random, bases: dict[str, dict[str, Any]], kinds: list[
     kinds = sorted(kinds, key=lambda k: k in TEXT_LEVEL)
     c = Case(base, list(kinds), copy.deepcopy(bases[base]))
     for k in kinds:
-        MUTATIONS[k](rng, c)
+        before = (copy.deepcopy(c.data), c.text, c.must_refuse, list(c.notes))
+        try:
+            MUTATIONS[k](rng, c)
+        except (TypeError, KeyError, IndexError, AttributeError, ValueError):
+            # an earlier mutation changed the shape this one edits: skip it
+            c.data, c.text, c.must_refuse, c.notes = before
+            c.notes.append(f"({k} skipped)")
     return c
 
 
@@ -452,7 +460,7 @@ class _Hang(BaseException):
 
 
 _KEYED = re.compile(
-    r"(?:[A-Za-z_][\w\-]*(?:\[\d+\])*(?:\.[^\s:]+)*"            # link[2].length, frame.O1, input
+    r"(?:[A-Za-z_][\w\-]*(?:\[\d+\])*(?:\.[^:]+)?"              # link[2].length, frame.O1, input, frame.a b
     r"|line \d+(?: \([^)]*\))?"                                   # line 3 (a.b)
     r"|at [^:]+"                                                  # at crank angle 70 deg
     r"): \S")
