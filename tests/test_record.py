@@ -9,7 +9,7 @@ import pytest
 
 from constructions.geometry import Vec
 from constructions.record import Arrow, Construction, Diagram, Point, Role, Term, VectorEquation
-from drafting.sheet import SheetInfo, compose_sheet
+from drafting.sheet import SheetInfo, compose_sheet, compose_sheets
 from drafting.svg import sheet_to_svg
 
 
@@ -58,3 +58,29 @@ def test_an_acceleration_equation_sets_on_a_sheet():
     assert [s.text for s in spans[:3]] == ["A", "C", "n"]
     assert float(spans[1].get("dy")) > 0 > float(spans[2].get("dy"))
     assert "baseline-shift" not in svg
+
+
+def test_step_values_are_written_in_the_scene_units_on_a_sheet():
+    """Words with placeholders and values apart: the sheet writes them in the scene's units; a lab
+    sheet's hook can blank the answers without touching the record."""
+    from constructions.record import StepKind, Value
+    from drafting.unitset import Units
+
+    c = (Construction("Velocity polygon")
+         .then("Draw V_B ($v, crank at $a) from O_v.", values={"v": Value("velocity", 0.5),
+                                                              "a": Value("angle", 1.2217304763960306)})
+         .then("Measure V_C = $vc.", values={"vc": Value("velocity", 0.5685)}, kind=StepKind.ANSWER)
+         .then("A caption without values."))
+    info = SheetInfo(title="t", drawing_number="n", date="2026-11-22", units=Units(velocity="m/min"))
+    (sheet,) = compose_sheets(c, info)
+    steps = [t.plain for t in sheet.texts() if t.name.startswith("step ") and not t.name.endswith("number")]
+    assert steps == ["Draw VB (30.00 m/min, crank at 70.00 deg) from Ov.", "Measure VC = 34.11 m/min.",
+                     "A caption without values."]
+    answers = {s.words for s in c.steps if s.kind is StepKind.ANSWER}
+
+    def blank(v, default):
+        return "____" if v.kind == "velocity" and v.value == 0.5685 else default(v)
+    (lab,) = compose_sheets(c, info, values=blank)
+    lab_steps = [t.plain for t in lab.texts() if t.name.startswith("step ") and not t.name.endswith("number")]
+    assert lab_steps[1] == "Measure VC = ____." and lab_steps[0] == steps[0]
+    assert answers == {"Measure V_C = $vc."}
