@@ -133,6 +133,8 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
                 raise UserError(f"{path}: {e}") from None
             except LayoutError as e:                  # the sheet: the paper is what the user can change
                 raise UserError(f"{path}: drawing.paper: {e}") from None
+            except ConstructionError as e:            # raised while drawing: told at its position
+                raise UserError(f"{path}: {_located(study, e)}") from None
         except UserError as e:
             print(f"drafting: error: {e}", file=sys.stderr)
             failed += 1
