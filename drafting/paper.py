@@ -9,7 +9,7 @@ without rendering anything, and :mod:`drafting.svg` is the only module that turn
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Iterable, Union
 
 # ISO 216 sizes, landscape (width, height) in mm.

@@ -258,7 +258,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
 
     def tb_height(width: float, on_page: Sequence[Panel]) -> float:
         # the scales are not known before the rungs are; size the title block with long stand-ins
-        probe_text = "; ".join(_probe_scale(p) for p in on_page) or "none"
+        probe_text = "; ".join(t for t in (_probe_scale(p) for p in on_page) if t) or "none"
         key = (round(width, 6), probe_text)
         if key not in tb_memo:
             tb_memo[key] = L.title_block(frame, width, info.title, tb_fields(probe_text, 10, 10)).rect.h
@@ -278,7 +278,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
 
 def _probe_scale(p: Panel) -> str:
     if isinstance(p, VectorPanel):
-        return f"{p.label} 1 mm = 0.0005 {p.unit}"
+        return p.scale_text(0) if not p.free else f"{p.label} 1 mm = 0.0005 {p.unit}"
     if hasattr(p, "ratios"):
         return "Space 1:10000" if p.key == "space" else f"{getattr(p, 'title', p.key)} 1:10000"
     return ""

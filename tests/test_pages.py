@@ -12,19 +12,16 @@ the length of V_B as values, so what the text says can be checked against the sc
 from __future__ import annotations
 
 import dataclasses
-import math
 import re
 import xml.etree.ElementTree as ET
 
 import pytest
 
-from constructions.geometry import Vec
-from constructions.record import (Arrow, Construction, Diagram, Point, Role, ScaleBar, Step, Term, TrialLine,
-                                  Value, VectorEquation)
+from constructions.record import Construction, Diagram, ScaleBar, Step, Term, Value, VectorEquation
 from drafting.diagram import model_points
 from drafting.errors import LayoutError
-from drafting.paper import Rect, Rectangle, command_points
-from drafting.sheet import ResultRow, SheetInfo, compose_sheet, compose_sheets
+from drafting.paper import command_points
+from drafting.sheet import SheetInfo, compose_sheet, compose_sheets
 from drafting.style import MIN_TEXT
 from drafting.svg import sheet_to_svg
 from drafting.unitset import Units
