@@ -24,31 +24,50 @@ def _median_seconds(fn: Callable[[], object], repeats: int) -> float:
     return statistics.median(times)
 
 
+GALLERY = Path(__file__).resolve().parents[1] / "gallery"
+
+#: The sheets timed side by side: the velocity-only default sheet, then the same slider-crank with its
+#: acceleration polygon, then the toggle six-bar with both polygons (the cost of each analysis).
+RENDER_SCENES = (("velocity, slider-crank (default sheet)", None),
+                 ("acceleration, slider-crank (notes acc. Ex. 1)", "notes-acceleration-example-1.toml"),
+                 ("acceleration, toggle six-bar (notes acc. Ex. 4)", "notes-acceleration-example-4.toml"))
+
+
 def render_rows(repeats: int = 7) -> list[dict]:
-    """Median wall time of each stage for the built-in example sheet."""
-    from .cli import builtin_example, sheet_for
-    from .export import write_sheet
+    """Median wall time of each stage (solve, layout of every sheet, SVG/PDF/PNG) for each sheet of
+    :data:`RENDER_SCENES` that exists in this checkout."""
+    from .cli import builtin_example, sheets_for
+    from .export import write_sheets
     from .scene import load_scene
     from .study import Study
 
-    path = builtin_example()
+    rows = []
+    for label, name in RENDER_SCENES:
+        path = builtin_example() if name is None else GALLERY / name
+        if not path.exists():
+            continue
 
-    def solve() -> Study:
-        s = Study(load_scene(path))
-        s.comparisons
-        return s
+        def solve() -> Study:
+            return Study(load_scene(path)).run()
 
-    study = solve()
-    sheet = sheet_for(study)
-    rows = [{"stage": "scene -> solved study (position, velocity, analytic check)",
-             "median_seconds": _median_seconds(solve, repeats)},
-            {"stage": "study -> sheet layout", "median_seconds": _median_seconds(lambda: sheet_for(study), repeats)}]
-    with tempfile.TemporaryDirectory() as tmp:
-        for fmt in ("svg", "pdf", "png"):
-            rows.append({"stage": f"sheet -> {fmt.upper()} file",
-                         "median_seconds": _median_seconds(lambda: write_sheet(sheet, Path(tmp), "bench", [fmt]),
-                                                           repeats)})
+        study = solve()
+        sheets = sheets_for(study)
+        row = {"scene": label, "sheets": len(sheets), "solve": _median_seconds(solve, repeats),
+               "layout": _median_seconds(lambda: sheets_for(study), repeats)}
+        with tempfile.TemporaryDirectory() as tmp:
+            for fmt in ("svg", "pdf", "png"):
+                row[fmt] = _median_seconds(lambda: write_sheets(sheets, Path(tmp), "bench", [fmt]), repeats)
+        rows.append(row)
     return rows
+
+
+def format_render_rows(rows: list[dict]) -> str:
+    head = f"  {'sheet':<50} {'pages':>5} {'solve':>8} {'layout':>8} {'SVG':>8} {'PDF':>8} {'PNG':>8}"
+    lines = [head]
+    for r in rows:
+        lines.append(f"  {r['scene']:<50} {r['sheets']:>5} " + " ".join(
+            f"{r[k] * 1e3:6.1f}ms" for k in ("solve", "layout", "svg", "pdf", "png")))
+    return "\n".join(lines)
 
 
 def chain_rows(sizes=(10**3, 10**4, 10**5, 10**6), repeats: int = 3) -> list[dict]:
@@ -74,9 +93,8 @@ def chain_rows(sizes=(10**3, 10**4, 10**5, 10**6), repeats: int = 3) -> list[dic
 def run_benchmarks(quick: bool = False) -> str:
     repeats = 3 if quick else 7
     sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
-    lines = ["Default sheet (notes velocity Example 1), median of %d runs:" % repeats]
-    for r in render_rows(repeats):
-        lines.append(f"  {r['stage']:<62} {r['median_seconds'] * 1e3:8.1f} ms")
+    lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; "
+             "layout = every page's drawing commands):" % repeats, format_render_rows(render_rows(repeats))]
     lines.append("")
     lines.append("Analytic sweep, positions and velocities (one core, numpy):")
     lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))

@@ -82,16 +82,19 @@ def _located(study: Study, e: ConstructionError) -> str:
     return f"at {where}: {e}"
 
 
-def sheet_for(study: Study):
-    from .sheet import ResultRow, SheetInfo, compose_sheet
+def sheets_for(study: Study):
+    """The sheets of a solved study: one, or as many pages as its diagrams need to stay legible."""
+    from .sheet import ResultRow, SheetInfo, compose_sheets
     s = study.scene
-    u = s.units
     info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
-                     date=_dt.date.today().isoformat(),
-                     units=f"{u.length}, {u.velocity}, {u.angular_velocity}",
-                     notes=study.warnings)
+                     date=_dt.date.today().isoformat(), units=s.units, notes=study.warnings)
     rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
-    return compose_sheet(study.construction, info, rows)
+    return compose_sheets(study.construction, info, rows)
+
+
+def sheet_for(study: Study):
+    """The first sheet of a study (tests and callers that want one page)."""
+    return sheets_for(study)[0]
 
 
 def results_text(study: Study) -> str:
@@ -128,7 +131,7 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
         try:
             study = _solve(_study(path, paper))
             try:
-                written = write_sheets([sheet_for(study)], out, path.stem, formats)
+                written = write_sheets(sheets_for(study), out, path.stem, formats)
             except ExportError as e:                  # names the output file it could not write
                 raise UserError(f"{path}: {e}") from None
             except LayoutError as e:                  # the sheet: the paper is what the user can change

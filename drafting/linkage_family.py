@@ -20,33 +20,14 @@ def _position(study):
     return locate(s.mechanism, s.angle, assembly_plan(s.mechanism), fmt=s.units.format)
 
 
-# Until the sheet chooses each polygon's scale from its panel, the study fixes one per paper size.
-_POLYGON_EXTENT_MM = {"A4": 110.0, "A3": 160.0}
-
-
-def _fixed_scale(study, known, points):
-    from constructions.polygons.common import vector_scale
-    xs, ys = [p.x for p in points], [p.y for p in points]
-    extent = max(max(xs) - min(xs), max(ys) - min(ys))
-    return vector_scale(known, extent, max_extent_mm=_POLYGON_EXTENT_MM[study.scene.paper])
-
-
 def _velocity(study):
     s = study.scene
-    va = velocity_polygon(s.mechanism, study.get("position"), s.omega)
-    known = max(v.norm() for v in va.velocities.values())
-    return velocity_polygon(s.mechanism, study.get("position"), s.omega,
-                            scale=_fixed_scale(study, known, list(va.velocities.values())))
+    return velocity_polygon(s.mechanism, study.get("position"), s.omega)
 
 
 def _acceleration(study):
     s = study.scene
-    aa = acceleration_polygon(s.mechanism, study.get("velocity"), s.alpha)
-    pts = list(aa.accelerations.values()) + [a + b for (j, p), a in aa.normal.items()
-                                             for b in (aa.accelerations[p],)]
-    known = max(a.norm() for a in aa.accelerations.values())
-    return acceleration_polygon(s.mechanism, study.get("velocity"), s.alpha,
-                                scale=_fixed_scale(study, known, pts))
+    return acceleration_polygon(s.mechanism, study.get("velocity"), s.alpha)
 
 
 def _analytic(study):

@@ -296,8 +296,8 @@ def test_check_exits_1_when_graphical_and_analytic_disagree(monkeypatch, capsys)
     assert code == 1 and "DISAGREE" in out
 
 
-@pytest.mark.parametrize("factor,unit,expect", [(1e-3, "um", "Space 500:1"), (1.0, "mm", "Space 1:1"),
-                                                (1e3, "m", "Space 1:2000")])
+@pytest.mark.parametrize("factor,unit,expect", [(1e-3, "um", "Space 1000:1"), (1.0, "mm", "Space 1:1"),
+                                                (1e3, "m", "Space 1:1000")])
 def test_sheet_of_a_scaled_mechanism_keeps_its_drawing(factor, unit, expect, tmp_path, capsys):
     """The same slider-crank in micrometres, millimetres and metres: same decisions, an ISO 5455 space
     scale that follows the size (its series extended by powers of ten), and the same velocity polygon
