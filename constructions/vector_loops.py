@@ -284,9 +284,10 @@ def _snap(f: np.ndarray, tol: float, ok: np.ndarray, tangent: np.ndarray) -> np.
     return np.where(touch, 0.0, f)
 
 
-#: Crank angles solved per chunk: the chain's many temporaries then stay in cache (2**11 .. 2**14
-#: measure within noise of each other; whole 1e6-angle arrays are about twice as slow).
-CHUNK = 2**12
+#: Crank angles solved per chunk, so the chain's many temporaries stay in cache (measured on the
+#: toggle linkage: 2**12 .. 2**14 within ~20 % of each other; unchunked 1e6-angle arrays about twice
+#: as slow).
+CHUNK = 2**13
 
 
 def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:

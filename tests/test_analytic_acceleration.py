@@ -584,7 +584,7 @@ def test_chain_scalar_and_vector_calls_agree():
     omega = np.linspace(-20.0, 30.0, th.size)
     alpha = np.linspace(300.0, -100.0, th.size)
     c = chain_solution(m, th, omega, alpha)
-    for i in (0, 1, 4_095, 4_096, 12_345, 19_999):
+    for i in (0, 1, 4_095, 4_096, 8_191, 8_192, 12_345, 19_999):   # across chunk boundaries
         a, b = c.at(i), chain_solution(m, th[i], omega[i], alpha[i]).at()
         for n in a.accelerations:
             np.testing.assert_allclose(a.accelerations[n], b.accelerations[n], rtol=0,
