@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import datetime as _dt
 import json
+import os
 import sys
 from dataclasses import replace
 from importlib import resources
@@ -222,6 +223,19 @@ def main(argv: Sequence[str] | None = None) -> int:
             remove_temporaries()
             print(f"drafting: interrupted by {e.name}; no file was left half-written", file=sys.stderr)
             return e.exit_code
+        except BrokenPipeError:               # the reader went away (drafting ... | head): stop quietly
+            remove_temporaries()
+            _silence_stdout()
+            return 141
+
+
+def _silence_stdout() -> None:
+    """After a broken pipe, point stdout at /dev/null so the interpreter's final flush cannot fail."""
+    try:
+        fd = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(fd, sys.__stdout__.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass
 
 
 def _main(argv: Sequence[str] | None) -> int:

@@ -207,3 +207,17 @@ def test_kill_9_leftovers_are_removed_by_the_next_run(tmp_path):
     assert all(n.startswith(f".drafting-tmp-{p.pid}-") for n in left)
     assert main(["render", str(GALLERY[3]), "-o", str(out), "--format", "svg"]) == 0
     assert temporaries(out) == []
+
+
+def test_a_reader_that_goes_away_ends_the_run_quietly(tmp_path):
+    """drafting render ... | head -1: the broken pipe ends the run without a traceback (exit 141)."""
+    env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
+    p = subprocess.Popen([sys.executable, "-m", "drafting.cli", "render", *map(str, GALLERY[:3]), "-o",
+                          str(tmp_path / "out"), "--format", "svg"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, env=env, cwd=ROOT)
+    p.stdout.readline()
+    p.stdout.close()
+    err = p.stderr.read().decode()
+    p.wait(timeout=60)
+    assert p.returncode in (0, 141) and "Traceback" not in err and "BrokenPipe" not in err, err
+    assert temporaries(tmp_path / "out") == []
