@@ -235,17 +235,23 @@ def magnitude_problem(kind: str, si: float) -> str | None:
     return None
 
 
-def length_ratio_problem(lengths: Iterable[tuple[str, float]]) -> tuple[str, str, float, float] | None:
+def length_ratio_problem(lengths: Iterable[tuple[str, float]]) -> tuple[str, float, str, float] | None:
     """The non-zero lengths of a scene (key, SI value) must lie within :data:`LENGTH_RATIO` of each
-    other; returns (key of the smallest, key of the largest, smallest, largest) when they do not."""
+    other.  When they do not, returns (key, value, other key, other value): the extreme (smallest or
+    largest) that lies farther from the scene's typical length (the median, on a log scale) -- the one
+    most likely mistyped -- and the opposite extreme it was compared with."""
     nz = [(k, abs(v)) for k, v in lengths if v != 0 and math.isfinite(v)]
     if len(nz) < 2:
         return None
     small = min(nz, key=lambda kv: kv[1])
     large = max(nz, key=lambda kv: kv[1])
-    if large[1] > LENGTH_RATIO * small[1]:
-        return small[0], large[0], small[1], large[1]
-    return None
+    if large[1] <= LENGTH_RATIO * small[1]:
+        return None
+    logs = sorted(math.log10(v) for _, v in nz)
+    mid = logs[len(logs) // 2] if len(logs) % 2 else (logs[len(logs) // 2 - 1] + logs[len(logs) // 2]) / 2
+    if math.log10(large[1]) - mid > mid - math.log10(small[1]):
+        return large[0], large[1], small[0], small[1]
+    return small[0], small[1], large[0], large[1]
 
 
 def sweep_problem(steps: int) -> str | None:

@@ -132,11 +132,12 @@ def scene_from_data(data: dict[str, Any], path: Path | str = "<scene>") -> Scene
     scene = reader.scene()
     bad = limits.length_ratio_problem(reader.lengths)
     if bad:
-        small, large, lo, hi = bad
+        key, value, other, other_value = bad
         ratio = f"{limits.LENGTH_RATIO:.0e}".replace("e+0", "e").replace("e+", "e")
-        raise SceneError(path, small, f"{scene.units.format('length', lo)} is too small beside "
-                                      f"{scene.units.format('length', hi)} at {large}: a scene's non-zero "
-                                      f"lengths must lie within a factor {ratio} of each other (write 0 for zero)")
+        size = "large" if value > other_value else "small"
+        raise SceneError(path, key, f"{scene.units.format('length', value)} is too {size} beside "
+                                    f"{scene.units.format('length', other_value)} at {other}: a scene's non-zero "
+                                    f"lengths must lie within a factor {ratio} of each other (write 0 for zero)")
     return scene
 
 

@@ -97,9 +97,9 @@ def test_a_number_too_long_for_python(tmp_path, capsys):
     ("length = 94", "length = 1e300", "link[2].length", "a length may be at most 1e+09 mm"),
     ("length = 94", "length = 1e-9", "link[2].length", "at least 0.001 mm (write 0 for zero)"),
     ("O1 = [0, 0]", "O1 = [1e300, 0]", "frame.O1", "too large"),
-    ("O1 = [0, 0]", "O1 = [1e8, 0]", "link[1].length", "within a factor 1e6"),
+    ("O1 = [0, 0]", "O1 = [1e8, 0]", "frame.O1", "1.000e+08 mm is too large beside 50.00 mm at link[1].length"),
     ("through = [0, 0]", "through = [0, 1e-5]", "slider[1].through", "at least 0.001 mm"),
-    ("O1 = [0, 0]", 'O1 = ["0 m", "2e5 m"]', "link[1].length", "beside 2.000e+08 mm at frame.O1"),
+    ("O1 = [0, 0]", 'O1 = ["0 m", "2e5 m"]', "frame.O1", "within a factor 1e6"),
     ('angle = "70 deg"', 'angle = "1e9 deg"', "input.angle", "too large"),
     ('tip_speed = "500 mm/s"', 'tip_speed = "1e20 m/s"', "input.tip_speed", "too large"),
     ('tip_speed = "500 mm/s"', "tip_speed = inf", "input.tip_speed", "too large"),
@@ -115,6 +115,13 @@ def test_the_design_span_of_lengths_is_accepted():
     s = parse_scene(EXAMPLE.replace("O1 = [0, 0]", "O1 = [0, 0]\nFAR = [1000, 0]")
                     .replace("through = [0, 0]", "through = [0, 0.001]"))
     assert s.mechanism.ground["FAR"].x == pytest.approx(1.0)
+
+
+def test_the_length_named_is_the_odd_one_out():
+    lengths = [("a", 0.05), ("b", 0.094), ("c", 0.06), ("zero", 0.0)]
+    assert limits.length_ratio_problem(lengths) is None
+    assert limits.length_ratio_problem(lengths + [("far", 1e5)]) == ("far", 1e5, "a", 0.05)
+    assert limits.length_ratio_problem(lengths + [("tiny", 1e-8)]) == ("tiny", 1e-8, "b", 0.094)
 
 
 def test_sweep_limit_is_reserved():
