@@ -13,9 +13,10 @@ from dataclasses import dataclass
 from typing import Mapping, Sequence
 
 from . import analytic
-from .errors import DegenerateInput
+from .constraint_kinematics import solve_constraints
+from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
-from .linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, TwoCircles, assembly_plan
+from .linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, SlotThrough, TwoCircles, assembly_plan
 from .quantities import Measured
 from .vector_loops import chain_solution
 
@@ -106,14 +107,18 @@ def compare(measured: Sequence[Measured], analytic: Mapping[str, Vec | float] | 
 
 
 def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0.0, *,
-                      accelerations: bool = True) -> AnalyticSolution | None:
+                      accelerations: bool = True, guess: Mapping[str, Vec] | None = None) -> AnalyticSolution | None:
     """The vector-loop solution of ``m`` at ``angle`` (crank turning at ``omega`` with angular
     acceleration ``alpha``), or None where the mechanism does not assemble.
 
     A plain four-bar or slider-crank (one dyad hung from the crank tip and the frame, points fixed to
     any of its links) is evaluated by the closed forms of :mod:`constructions.analytic`; any other
     crank followed by dyads by the dyad-chain vector loops of :mod:`constructions.vector_loops`.
-    With ``accelerations`` False the acceleration fields are left None."""
+    Mechanisms neither models (a slot in a moving link, a ternary link joined at its third point) are
+    solved by the constraint equations of :mod:`constructions.constraint_kinematics` (Newton from
+    ``guess``, e.g. the construction's pose, then the linear velocity and acceleration systems); without
+    a guess they raise :class:`NotModelled`.  With ``accelerations`` False the acceleration fields are
+    left None."""
     plan = assembly_plan(m)
     crank = plan[0]
     assert isinstance(crank, CrankTip)
@@ -138,7 +143,9 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
         try:
             st = chain_solution(m, angle, omega, alpha)
         except DegenerateInput as e:
-            raise NotModelled(f"the vector-loop check does not model this mechanism yet ({e})") from None
+            if guess is None:
+                raise NotModelled(f"the vector-loop check does not model this mechanism ({e})") from None
+            return _constraint_solution(m, angle, omega, alpha, guess, accelerations)
         if not bool(st.assembles):
             return None
         at = st.at()
@@ -201,6 +208,24 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
     return AnalyticSolution(model, pos, vel, ang, acc if accelerations else None, alp if accelerations else None)
 
 
+def _constraint_solution(m, angle, omega, alpha, guess, accelerations) -> AnalyticSolution | None:
+    """The constraint-equation solution; None where it cannot assemble near the guess."""
+    try:
+        st = solve_constraints(m, angle, omega, alpha, guess)
+    except CannotAssemble:
+        return None
+    except IndeterminatePosition as e:
+        raise NotModelled(f"the constraint equations are singular here ({e.reason})") from None
+    L = m.size
+    moved = max((st.positions[n].distance_to(p) for n, p in guess.items() if n in st.positions), default=0.0)
+    if moved > 1e-6 * L:
+        raise NotModelled(f"Newton's method settled on another assembly ({moved / L:.1e} L from the "
+                          f"construction), so there is nothing to compare")
+    return AnalyticSolution("constraint equations", dict(st.positions), dict(st.velocities), dict(st.angular),
+                            dict(st.accelerations) if accelerations else None,
+                            dict(st.angular_acceleration) if accelerations else None)
+
+
 def analytic_values(m: Mechanism, a: AnalyticSolution | None) -> dict[str, Vec | float] | None:
     """The analytic solution under the names the constructions measure: V_J, V_JP, omega_n (and, when
     present, A_J, A_JP^t, A_JP^n, alpha_n for every pair of joints on a link)."""
@@ -234,4 +259,25 @@ def analytic_values(m: Mechanism, a: AnalyticSolution | None) -> dict[str, Vec |
                     if al is not None:
                         out[f"{name}^t"] = r.perp() * al
                     out[f"A_{j}{p}"] = a.accelerations[j] - a.accelerations[p]
+        # at a sliding joint J on the slot of link G (JG: the point of G under J), from the joint's and the
+        # point's absolute motion: A_JG = A_J + A^s + 2 omega_G x (V_JG - V_J) for a slot turned through a
+        # known joint (SlotThrough), and A_J = A_JG + A^s + 2 omega_G x (V_J - V_JG) where a circle meets
+        # the slot (CircleAndGuide on a moving slot) -- the names the construction measures
+        for step in assembly_plan(m):
+            jg = getattr(step, "coincident", "")
+            if not jg or jg not in a.accelerations:
+                continue
+            j = step.joint
+            w = a.angular[step.slide.on]
+            al = (a.angular_acceleration or {}).get(step.slide.on)
+            for q in m.points_of(step.slide.on):       # components of the point under J about the link's points
+                r = a.positions[jg] - a.positions[q]
+                name = f"A_{jg}" if q in m.ground else f"A_{jg}{q}"
+                out[f"{name}^n"] = r * (-w * w)
+                if al is not None:
+                    out[f"{name}^t"] = r.perp() * al
+            first, second = (jg, j) if isinstance(step, SlotThrough) else (j, jg)
+            cor = (a.velocities[first] - a.velocities[second]).perp() * (2.0 * w)
+            out[f"A_{first}{second}^c"] = cor
+            out[f"A_{first}{second}^s"] = a.accelerations[first] - a.accelerations[second] - cor
     return out

@@ -35,7 +35,8 @@ def _analytic(study):
     s = study.scene
     try:
         return analytic_solution(s.mechanism, s.angle, s.omega, s.alpha,
-                                 accelerations=study.asked("acceleration"))
+                                 accelerations=study.asked("acceleration"),
+                                 guess=study.get("position").positions)
     except NotModelled as e:
         return e
 

@@ -251,15 +251,31 @@ def test_bad_format_is_refused(capsys):
 
 @pytest.mark.parametrize("scene", sorted(GALLERY.glob("*.toml")), ids=lambda p: p.stem)
 def test_every_gallery_scene_renders(scene, tmp_path, capsys):
+    """Every gallery scene renders: one SVG per sheet (stem.svg, or stem-1.svg .. stem-n.svg numbered n/n
+    in their title blocks), on its paper, with the notes' labels, every scale and the results."""
     import xml.etree.ElementTree as ET
     code, out, err = run(["render", str(scene), "-o", str(tmp_path), "--format", "svg"], capsys)
     assert code == 0, err
-    svg = tmp_path / f"{scene.stem}.svg"
-    root = ET.parse(svg).getroot()
-    text = " ".join("".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text"))
-    for label in ("Ov", "b", "c", "Space diagram", "Velocity polygon", "Results", load_scene(scene).drawing_number):
-        assert label in text
-    assert root.get("width") == "297mm" and root.get("height") == "210mm"
+    assert "agree to 1e-9 relative" in out
+    s = load_scene(scene)
+    one = tmp_path / f"{scene.stem}.svg"
+    pages = [one] if one.exists() else sorted(tmp_path.glob(f"{scene.stem}-*.svg"),
+                                              key=lambda p: int(p.stem.rsplit("-", 1)[1]))
+    assert pages and [p.name for p in pages] == ([one.name] if one.exists() else
+                                                 [f"{scene.stem}-{i}.svg" for i in range(1, len(pages) + 1)])
+    text = ""
+    size = {"A4": ("297mm", "210mm"), "A3": ("420mm", "297mm")}[s.paper]
+    for i, svg in enumerate(pages, 1):
+        root = ET.parse(svg).getroot()
+        page = " ".join("".join(t.itertext()) for t in root.iter("{http://www.w3.org/2000/svg}text"))
+        assert f"{i}/{len(pages)}" in page and s.drawing_number in page
+        assert (root.get("width"), root.get("height")) == size
+        text += " " + page
+    labels = ["Space diagram", "Velocity polygon", "Results", "Ov"]
+    if "acceleration" in s.analyses:
+        labels += ["Acceleration polygon", "Oa"]
+    for label in labels:
+        assert label in text, label
 
 
 def test_default_command_writes_three_formats(tmp_path, monkeypatch, capsys):

@@ -191,3 +191,45 @@ def test_a_slot_that_cannot_reach_the_joint_says_so():
     m = quick_return(offset=0.2, ram=False)          # the slot passes 200 mm from O2; A is ~100 mm away
     with pytest.raises(CannotAssemble, match="slot of link 3 passes"):
         locate(m, math.radians(30))
+
+
+# -- against the analytic check (constraint equations) on random slotted levers and ternary six-bars ----------
+
+@st.composite
+def random_slotted_levers(draw):
+    """A crank O1A whose block slides in the (offset, slanted) slot of a lever about O2, the lever driving
+    a ram through PQ: random proportions, branch and sense."""
+    unit = draw(st.floats(0.01, 2.0))
+    d = unit * draw(st.floats(1.2, 3.0))                 # O1O2 > crank: the lever oscillates (quick-return)
+    r = unit
+    offset = unit * draw(st.floats(-0.3, 0.3))
+    slant = draw(st.floats(-0.3, 0.3))
+    branch = draw(st.sampled_from([1, -1]))
+    block = draw(st.booleans())
+    m = Mechanism({"O1": Vec(0.0, d), "O2": Vec(0.0, 0.0)},
+                  (Link(1, ("O1", "A"), r), Link(3, ("O2", "P"), 2.5 * d)),
+                  (Slide(2 if block else None, "A", Vec(0, 0), slant, on=3, offset=offset),), (), 1,
+                  {"A": Branch(branch, ("O2",))})
+    return m
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(m=st.one_of(random_slotted_levers(), st.sampled_from([watt_six_bar(), ternary_posed_by_other_points(),
+                                                            rocker_with_slot()])),
+       theta=st.floats(-math.pi, math.pi), omega=st.floats(1.0, 50.0).flatmap(lambda w: st.sampled_from([w, -w])),
+       alpha=st.one_of(st.just(0.0), st.floats(-500.0, 500.0)))
+def test_graphical_equals_the_constraint_equations(m, theta, omega, alpha):
+    from constructions.check import analytic_solution, analytic_values, compare
+    try:
+        va, aa = solve(m, theta, omega, alpha)
+    except (CannotAssemble, IndeterminatePosition):
+        assume(False)
+    assume(va.worst_condition >= 0.05 and aa.worst_condition >= 0.05)
+    a = analytic_solution(m, theta, omega, alpha, guess=va.pose.positions)
+    assert a is not None and a.model in ("constraint equations", "dyad chain")
+    rows = compare(va.measured(m) + aa.measured(m), analytic_values(m, a), {**va.scales(), **aa.scales()})
+    assert all(r.analytic is not None for r in rows)
+    bad = [(r.name, r.relative, r.tolerance) for r in rows if not r.agrees]
+    assert not bad
+    if any(s.on is not None for s in m.slides):
+        assert any(r.name.endswith("^c") for r in rows)          # the Coriolis component is checked too
