@@ -258,7 +258,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
 
     def tb_height(width: float, on_page: Sequence[Panel]) -> float:
         # the scales are not known before the rungs are; size the title block with long stand-ins
-        probe_text = "; ".join(t for t in (_probe_scale(p) for p in on_page) if t) or "none"
+        probe_text = "; ".join(t for t in (_probe_scale(p) for p in on_page) if t) or "\u2014 (no drawing on this sheet)"
         key = (round(width, 6), probe_text)
         if key not in tb_memo:
             tb_memo[key] = L.title_block(frame, width, info.title, tb_fields(probe_text, 10, 10)).rect.h
@@ -310,7 +310,7 @@ def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, t
     n_of_m = number or (index + 1, m)
     in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
     scale_list = [(p.key, p.scale_text(r)) for p, r, _ in in_order if p.scale_text(r)]
-    scale_text = "; ".join(t for _, t in scale_list) or "none"
+    scale_text = "; ".join(t for _, t in scale_list) or "\u2014 (no drawing on this sheet)"
     tb = L.title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
     regions: dict[str, Rect] = {"page": pp.page, "frame": frame, "title_block": tb.rect}
     cmds: list[Command] = [Rectangle(frame.x, frame.y, frame.w, frame.h, "frame", "frame")]

@@ -379,7 +379,7 @@ class _Polygon:
         ap, aq = self.acc[p], self.acc[q]
         ad, t, _ = image_point(pos[p], pos[q], pos[d], ap, aq)
         self._alpha_of(link.number)
-        ip, iq, idd = _img(p), _img(q), _img(d)
+        ip, iq, idd = (("O_a" if x in self.m.ground else _img(x)) for x in (p, q, d))
         self.acc[d] = ad
         self.steps.append((
             f"Acceleration image of link {link.number}: on {ip}{iq} draw the triangle {ip}{iq}{idd} similar to "

@@ -295,7 +295,7 @@ class _Polygon:
         p, q = step.via
         P, Q, D = pos[p], pos[q], pos[d]
         vp, vq = vel[p], vel[q]
-        ip, iq, idd = image_name(p), image_name(q), image_name(d)
+        ip, iq, idd = (("O_v" if x in self.m.ground else image_name(x)) for x in (p, q, d))
         vd, t, _ = image_point(P, Q, D, vp, vq)
         self._omega_of(link.number)
         pd, qd = D - P, D - Q
