@@ -361,8 +361,9 @@ def _sincos(th, c, s, t, u):
 # --------------------------------------------------------------------------------------------
 
 # atan on [0, 0.66]: atan(z) = z + z w P(w) / Q(w), w = z^2, Q monic -- the rational minimax
-# approximation of S. L. Moshier's Cephes library (atan.c; peak relative error 1.9e-16 over its
-# range).  Checked against np.arctan2 to 2 ulp in tests/test_analytic.py.
+# approximation of S. L. Moshier's Cephes library (atan.c, documented to about 2e-16 relative).
+# Coefficients cannot be derived by hand; they are checked instead: within 2 ulp of np.arctan2 over
+# 2e5 directions and lengths 1e-290 .. 1e290 in tests/test_analytic.py.
 _ATAN_P = (-8.750608600031904122785e-1, -1.615753718733365076637e1, -7.500855792314704667340e1,
            -1.228866684490136173410e2, -6.485021904942025371773e1)
 _ATAN_Q = (2.485846490142306297962e1, 1.650270098316988542046e2, 4.328810604912902668951e2,
