@@ -436,6 +436,7 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
     rec = rec.then("Draw the frame: the fixed pivots" + (" and the slider guide" if fixed else "")
                    + " at the space scale.", *frame, kind=StepKind.GIVEN)
     drawn: set[int] = set()
+    partial: set[str] = set()
 
     def bar(link: Link, a: str, b: str) -> list:
         """The link's outline once it is placed: a bar, or a plate through all its points."""
@@ -443,7 +444,11 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
             return []
         pts = m.local(link.number)
         if not all(x in pos for x in pts):
-            return [Bar(f"link {link.number} {a}{b}", Role.GIVEN, Diagram.SPACE, pos[a], pos[b], link.number)]
+            name = f"link {link.number} {a}{b}"
+            if name in partial:                     # already drawn while the link's other points were unknown
+                return []
+            partial.add(name)
+            return [Bar(name, Role.GIVEN, Diagram.SPACE, pos[a], pos[b], link.number)]
         drawn.add(link.number)
         if len(pts) == 2:
             p, q = link.joints

@@ -211,6 +211,8 @@ def check_data(data: dict[str, Any]) -> None:
             if len(value) > MAX_ENTRIES and key not in MAX_COUNTS:
                 raise LimitError(key or "scene", f"{len(value):,} entries; a table may have at most {MAX_ENTRIES}")
             for k, v in value.items():
+                if not isinstance(k, str):              # only from data built in Python, never from TOML
+                    raise LimitError(_key(key, str(k)[:40]), "a key must be text")
                 if len(k) > MAX_STRING:
                     raise LimitError(_key(key, k[:40] + "\u2026"),
                                      f"a key of {len(k):,} characters; keys may have at most {MAX_STRING}")

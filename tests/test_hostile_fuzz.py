@@ -82,8 +82,6 @@ def test_the_fuzzer_sees_what_it_should():
         assert fuzz.check_svg(good) is None
 
 
-@pytest.mark.xfail(reason="engine bug outside issue 6 (constructions/linkage.py): two points fixed to one link "
-                          "draw the link's outline twice under one entity name", strict=False)
 def test_two_points_on_one_link_render(tmp_path, capsys):
     from drafting.cli import main
     text = (ROOT / "gallery" / "notes-velocity-example-1.toml").read_text()
