@@ -34,7 +34,8 @@ class Family:
     name, such as the analytic check); ``askable`` are those a scene may name under [ask].
     ``measured(study)`` lists the measured quantities, ``analytic(study)`` their analytic values by name
     (or None), ``construction(study)`` the record to draw, ``json(study)`` the family's own JSON fields,
-    ``warnings(study)`` what the reader must know.
+    ``warnings(study)`` what the reader must know.  ``sections`` and ``read`` are the family's part of
+    the scene file.
     """
 
     kind: str
@@ -47,6 +48,14 @@ class Family:
     warnings: Callable[[Any], tuple[str, ...]]
     model_name: Callable[[Any], str | None] = field(default=lambda study: None)
     scales: Callable[[Any], dict] = field(default=lambda study: {})
+    sections: frozenset[str] = frozenset()
+    """The top-level sections of a scene file this family reads (besides kind, drawing, units, ask)."""
+    read: Callable[[Any, Any], dict] = field(default=lambda reader, units: {})
+    """``read(reader, units)`` reads the family's sections with the shared reader (whose errors name the
+    file and key) and returns the Scene fields of its state (``mechanism``/``angle``/... or ``model``)."""
+    default_analyses: tuple[str, ...] = ()
+    planned: tuple[str, ...] = ()
+    """Analyses announced for this family but not built yet (a scene asking for one is told so)."""
 
 
 FAMILIES: dict[str, Family] = {}

@@ -12,6 +12,7 @@ from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Construction
 
 from .families import Analysis, Family, register
+from .linkage_scene import SECTIONS, read_linkage
 from .study import rate_json, vec_json
 
 
@@ -143,4 +144,8 @@ LINKAGE = register(Family(
     warnings=_warnings,
     model_name=_model,
     scales=_scales,
+    sections=SECTIONS,
+    read=read_linkage,
+    default_analyses=("velocity",),
+    planned=("forces", "static forces", "dynamic forces", "sweep"),
 ))

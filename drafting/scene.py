@@ -6,7 +6,6 @@ wrong.  The format is documented in README.md ("Scene files").
 
 from __future__ import annotations
 
-import math
 import os
 import re
 import stat
@@ -15,23 +14,21 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from constructions.errors import DegenerateInput
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan
+from constructions.linkage import Mechanism
 
 from .unitset import KEYS as UNIT_KEYS, Units
 from . import limits
 from .textsafe import cut, cut_middle, one_line, printable
 from .units import UnitError, check_unit, to_si
 
-ANALYSES = ("position", "velocity", "acceleration")
-PLANNED = ("forces", "static forces", "dynamic forces", "sweep")
-KINDS = ("linkage",)
 PLANNED_KINDS = ("cam", "gear pair", "gear train")
+"""Scene families announced but not built yet: a scene of one of these kinds gets a clear "not yet"."""
 PAPERS = ("A4", "A3")
 ORIENTATIONS = ("landscape", "portrait")
 
-TOP_KEYS = {"kind", "drawing", "units", "frame", "link", "slider", "point", "input", "assembly", "ask"}
+COMMON_KEYS = frozenset({"kind", "drawing", "units", "ask"})
+"""The sections every scene family shares; each family adds its own (Family.sections)."""
 
 
 class SceneError(Exception):
@@ -48,19 +45,25 @@ class SceneError(Exception):
 
 @dataclass(frozen=True)
 class Scene:
+    """A read scene: the shared sections (drawing, units, what it asks) and its family's own state.
+
+    A linkage fills ``mechanism`` and the input (``angle``, ``omega``, ``alpha``); another family puts its
+    model in ``model``."""
+
     path: Path
     title: str
     drawing_number: str
     paper: str
     orientation: str
     units: Units
-    mechanism: Mechanism
-    angle: float          # crank angle, rad CCW from +x
-    omega: float          # crank angular velocity, rad/s CCW positive
     analyses: tuple[str, ...]
     find: tuple[str, ...] | None
-    alpha: float = 0.0    # crank angular acceleration, rad/s^2 CCW positive
     kind: str = "linkage"
+    mechanism: Mechanism | None = None
+    angle: float = 0.0    # crank angle, rad CCW from +x
+    omega: float = 0.0    # crank angular velocity, rad/s CCW positive
+    alpha: float = 0.0    # crank angular acceleration, rad/s^2 CCW positive
+    model: Any = None
 
 
 def load_scene(path: Path | str) -> Scene:
@@ -209,15 +212,23 @@ class _Reader:
 
     # -- sections --------------------------------------------------------------------------------
     def scene(self) -> Scene:
-        unknown = sorted(set(self.data) - TOP_KEYS)
-        if unknown:
-            raise self.fail(unknown[0], f"unknown key; a scene has {', '.join(sorted(TOP_KEYS))}")
+        from .families import FAMILIES, family
         kind = self.data.get("kind", "linkage")
-        if kind in PLANNED_KINDS:
-            raise self.fail("kind", f"{kind!r} scenes are not available yet; this version reads "
-                                    f"{', '.join(KINDS)} scenes")
-        if kind not in KINDS:
-            raise self.fail("kind", f"{kind!r} is not a scene kind; choose from {', '.join(KINDS)}")
+        fam = None
+        if isinstance(kind, str):
+            try:
+                fam = family(kind)
+            except KeyError:
+                fam = None
+        if fam is None:
+            kinds = ", ".join(sorted(FAMILIES))
+            if kind in PLANNED_KINDS:
+                raise self.fail("kind", f"{kind!r} scenes are not available yet; this version reads {kinds} scenes")
+            raise self.fail("kind", f"{kind!r} is not a scene kind; choose from {kinds}")
+        allowed = COMMON_KEYS | fam.sections
+        unknown = sorted(set(self.data) - allowed)
+        if unknown:
+            raise self.fail(unknown[0], f"unknown key; a {kind} scene has {', '.join(sorted(allowed))}")
         drawing = self.table("drawing", {"title", "number", "paper", "orientation"})
         title = self.text("drawing.title", drawing.get("title", self.path.stem))
         number = self.text("drawing.number", drawing.get("number", "TOM-000"))
@@ -228,22 +239,22 @@ class _Reader:
         if orientation not in ORIENTATIONS:
             raise self.fail("drawing.orientation", f"{orientation!r} must be landscape or portrait")
         units = self.units()
-        mechanism, angle, omega, alpha = self.mechanism(units)
+        state = fam.read(self, units)
         ask = self.table("ask", {"analyses", "find"})
-        analyses = ask.get("analyses", ["velocity"])
+        analyses = ask.get("analyses", list(fam.default_analyses))
         if not isinstance(analyses, list) or not all(isinstance(a, str) for a in analyses) or not analyses:
-            raise self.fail("ask.analyses", "must be a list of analyses, e.g. [\"velocity\"]")
+            raise self.fail("ask.analyses", f"must be a list of analyses, e.g. {list(fam.default_analyses)}")
         for a in analyses:
-            if a in PLANNED:
+            if a in fam.planned:
                 raise self.fail("ask.analyses", f"{a!r} is not available yet; this version draws "
-                                                f"{' and '.join(ANALYSES)}")
-            if a not in ANALYSES:
-                raise self.fail("ask.analyses", f"{a!r} is not an analysis; choose from {', '.join(ANALYSES)}")
+                                                f"{' and '.join(fam.askable)}")
+            if a not in fam.askable:
+                raise self.fail("ask.analyses", f"{a!r} is not an analysis; choose from {', '.join(fam.askable)}")
         find = ask.get("find")
         if find is not None and (not isinstance(find, list) or not all(isinstance(f, str) for f in find)):
             raise self.fail("ask.find", "must be a list of quantities, e.g. [\"V_C\", \"omega_2\"]")
-        return Scene(self.path, title, number, paper, orientation, units, mechanism, angle, omega,
-                     tuple(dict.fromkeys(analyses)), tuple(find) if find is not None else None, alpha, kind)
+        return Scene(self.path, title, number, paper, orientation, units, tuple(dict.fromkeys(analyses)),
+                     tuple(find) if find is not None else None, kind, **state)
 
     def units(self) -> Units:
         t = self.table("units", set(UNIT_KEYS))
@@ -255,145 +266,3 @@ class _Reader:
                 except UnitError as e:
                     raise self.fail(f"units.{key}", str(e)) from None
         return Units(**out)
-
-    def mechanism(self, units: Units) -> tuple[Mechanism, float, float, float]:
-        frame = self.named_table("frame")
-        if not frame:
-            raise self.fail("frame", "is missing: name the fixed pivots, e.g. O1 = [0, 0]")
-        ground = {self.name(f"frame.{n}", n): self.point(f"frame.{n}", p, units) for n, p in frame.items()}
-
-        links: list[Link] = []
-        for i, t in enumerate(self.array("link"), 1):
-            k = f"link[{i}]"
-            self.table(k, {"number", "joints", "length"}, {"number", "joints", "length"}, value=t)
-            n = self.number(f"{k}.number", t["number"])
-            joints = t["joints"]
-            if not (isinstance(joints, list) and len(joints) == 2):
-                raise self.fail(f"{k}.joints", "must name the two joints of the link, e.g. [\"B\", \"C\"]")
-            a, b = (self.name(f"{k}.joints", j) for j in joints)
-            if a == b:
-                raise self.fail(f"{k}.joints", f"a link needs two different joints, not {a} twice")
-            length = self.quantity(f"{k}.length", t["length"], "length", units)
-            if length <= 0:
-                raise self.fail(f"{k}.length", "must be positive")
-            if any(x.number == n for x in links):
-                raise self.fail(f"{k}.number", f"link {n} is defined twice")
-            links.append(Link(n, (a, b), length))
-        if not links:
-            raise self.fail("link", "is missing: a mechanism needs [[link]] tables")
-        joints = {j for x in links for j in x.joints}
-
-        attached: list[Attached] = []
-        for i, t in enumerate(self.array("point"), 1):
-            k = f"point[{i}]"
-            self.table(k, {"name", "link", "from", "distance", "angle"}, {"name", "link", "from", "distance"},
-                       value=t)
-            nm = self.name(f"{k}.name", t["name"])
-            if nm in ground:
-                raise self.fail(f"{k}.name", f"{nm} is a fixed pivot")
-            if any(a.name == nm for a in attached):
-                raise self.fail(f"{k}.name", f"point {nm} is defined twice")
-            ln = self.number(f"{k}.link", t["link"])
-            link = next((x for x in links if x.number == ln), None)
-            if link is None:
-                raise self.fail(f"{k}.link", f"there is no link {ln}")
-            if nm in link.joints:
-                raise self.fail(f"{k}.name", f"{nm} is already a joint of link {ln} ({'-'.join(link.joints)})")
-            base = self.name(f"{k}.from", t["from"])
-            if base not in link.joints:
-                raise self.fail(f"{k}.from", f"{base} is not a joint of link {ln} ({'-'.join(link.joints)})")
-            dist = self.quantity(f"{k}.distance", t["distance"], "length", units)
-            if dist <= 0:
-                raise self.fail(f"{k}.distance", "must be positive")
-            attached.append(Attached(nm, ln, base, dist, self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)))
-        points = joints | {a.name for a in attached}
-
-        slides: list[Slide] = []
-        for i, t in enumerate(self.array("slider"), 1):
-            k = f"slider[{i}]"
-            self.table(k, {"number", "joint", "through", "angle", "on", "offset"}, {"joint"}, value=t)
-            n = None
-            if "number" in t:
-                n = self.number(f"{k}.number", t["number"])
-                if any(x.number == n for x in links) or any(s.number == n for s in slides):
-                    raise self.fail(f"{k}.number", f"link {n} is already used")
-            j = self.name(f"{k}.joint", t["joint"])
-            if j not in points:
-                raise self.fail(f"{k}.joint", f"joint {j} is on no link")
-            if j in ground:
-                raise self.fail(f"{k}.joint", f"{j} is a fixed pivot and cannot slide")
-            if any(s.joint == j for s in slides):      # one guide per joint (the guide is named after it)
-                raise self.fail(f"{k}.joint", f"joint {j} already slides on the guide of another slider")
-            angle = self.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)
-            if "on" in t:
-                on = self.number(f"{k}.on", t["on"])
-                slotted = next((x for x in links if x.number == on), None)
-                if slotted is None:
-                    raise self.fail(f"{k}.on", f"there is no link {on} to cut the slot in")
-                if j in slotted.joints or any(a.name == j and a.link == on for a in attached):
-                    raise self.fail(f"{k}.on", f"{j} is a point of link {on}, so it cannot slide in its slot")
-                if "through" in t:
-                    raise self.fail(f"{k}.through", "a slot moves with its link: give offset (and angle), "
-                                                    "not a fixed point")
-                offset = self.quantity(f"{k}.offset", t.get("offset", 0), "length", units)
-                slides.append(Slide(n, j, Vec(0.0, 0.0), angle, on, offset))
-            else:
-                if "through" not in t:
-                    raise self.fail(f"{k}.through", "is missing: a fixed guide needs a point it passes through "
-                                                    "(or give on = <link> for a slot in a moving link)")
-                if "offset" in t:
-                    raise self.fail(f"{k}.offset", "applies to a slot in a link (on = <link>)")
-                if n is None:
-                    raise self.fail(f"{k}.number", "a block on a fixed guide needs its link number")
-                slides.append(Slide(n, j, self.point(f"{k}.through", t["through"], units), angle))
-
-        inp = self.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha"}, {"link", "angle"})
-        crank_no = self.number("input.link", inp["link"])
-        crank = next((x for x in links if x.number == crank_no), None)
-        if crank is None:
-            raise self.fail("input.link", f"there is no link {crank_no}")
-        if sum(j in ground for j in crank.joints) != 1:
-            raise self.fail("input.link", f"link {crank_no} must join one fixed pivot in [frame] to a moving joint")
-        angle = self.quantity("input.angle", inp["angle"], "angle", units)
-        sense = inp.get("sense")
-        if sense not in (None, "ccw", "cw"):
-            raise self.fail("input.sense", f"{sense!r} must be \"ccw\" or \"cw\"")
-        if ("omega" in inp) == ("tip_speed" in inp):
-            raise self.fail("input", "give exactly one of omega (e.g. \"10 rad/s\", \"120 rpm\") or "
-                                     "tip_speed (e.g. \"500 mm/s\")")
-        if "omega" in inp:
-            omega = self.quantity("input.omega", inp["omega"], "angular velocity", units)
-        else:
-            speed = self.quantity("input.tip_speed", inp["tip_speed"], "velocity", units)
-            if speed < 0:
-                raise self.fail("input.tip_speed", "is a speed: give it positive and set sense = \"cw\" or \"ccw\"")
-            omega = speed / crank.length
-        if sense is not None:
-            omega = abs(omega) if sense == "ccw" else -abs(omega)
-        if omega == 0 or not math.isfinite(omega):
-            raise self.fail("input", "the crank must turn: omega or tip_speed must not be zero")
-        alpha = self.quantity("input.alpha", inp.get("alpha", 0), "angular acceleration", units)
-
-        assembly = self.named_table("assembly")
-        branches = {self.name(f"assembly.{j}", j): self.branch(f"assembly.{j}", v) for j, v in assembly.items()}
-        for j in branches:
-            if j not in points:
-                raise self.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
-        m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
-        try:
-            assembly_plan(m)
-        except DegenerateInput as e:
-            key = "assembly" if "branch" in str(e) or "assemblies" in str(e) else "link"
-            raise self.fail(key, str(e)) from None
-        return m, angle, omega, alpha
-
-    def branch(self, key: str, value: Any) -> Branch:
-        v = self.text(key, value)
-        m = re.fullmatch(r"(left|right)\s+of\s+([A-Za-z][A-Za-z0-9]*)\s*->\s*([A-Za-z][A-Za-z0-9]*)", v)
-        if m:
-            return Branch(1 if m[1] == "left" else -1, (m[2], m[3]))
-        m = re.fullmatch(r"(ahead of|behind)\s+([A-Za-z][A-Za-z0-9]*)", v)
-        if m:
-            return Branch(1 if m[1] == "ahead of" else -1, (m[2],))
-        raise self.fail(key, f"{v!r} is not a branch; write e.g. \"left of B->O2\", \"right of B->O2\", "
-                             f"\"ahead of B\" or \"behind B\"")
