@@ -62,6 +62,7 @@ FAMILIES: dict[str, Family] = {}
 
 
 def register(family: Family) -> Family:
+    """Add a family (a module does this once, on import); a kind can be registered only once."""
     if family.kind in FAMILIES:
         raise ValueError(f"a scene family {family.kind!r} is already registered")
     for a in family.analyses.values():
@@ -72,9 +73,13 @@ def register(family: Family) -> Family:
     return family
 
 
+def builtin_families() -> None:
+    """Register the families this package ships (idempotent: a module registers once, on import)."""
+    from . import linkage_family  # noqa: F401
+
+
 def family(kind: str) -> Family:
-    if not FAMILIES:
-        from . import linkage_family  # noqa: F401  (registers the built-in families)
+    builtin_families()
     try:
         return FAMILIES[kind]
     except KeyError:
