@@ -70,24 +70,16 @@ def format_render_rows(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def chain_rows(sizes=(10**3, 10**4, 10**5, 10**6), repeats: int = 3) -> list[dict]:
-    """The dyad-chain vector loop (compound mechanisms) over crank-angle arrays: the notes' toggle
-    linkage of gallery Example 3 (two dyads, a slider)."""
-    import numpy as np
-
-    from constructions.vector_loops import chain_solution
-    from .scene import load_scene
-
-    root = Path(__file__).resolve().parents[1] / "gallery" / "notes-velocity-example-3.toml"
-    if not root.exists():
-        return []
-    m = load_scene(root).mechanism
-    rows = []
-    for n in sizes:
-        theta = np.linspace(0.0, 2 * np.pi, n)
-        t = _median_seconds(lambda: chain_solution(m, theta, 100.0), repeats)
-        rows.append({"n": n, "median_seconds": t, "angles_per_second": n / t})
-    return rows
+def run_benchmarks(quick: bool = False) -> str:
+    repeats = 3 if quick else 7
+    sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
+    lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; "
+             "layout = every page's drawing commands):" % repeats, format_render_rows(render_rows(repeats))]
+    lines.append("")
+    lines.append("Analytic sweep, full states -- positions, velocities and accelerations of every joint "
+                 "(one core, numpy):")
+    lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))
+    return "\n".join(lines)
 
 
 def run_benchmarks(quick: bool = False) -> str:

@@ -20,8 +20,8 @@ on the right over the title block, the space diagram on top with a text slot und
 room; portrait, diagrams on top and text below.  When the content cannot be set on one page legibly
 (lettering at least 2.5 mm, every polygon at least ``POLYGON_MIN_MM`` large, the space diagram at an
 ISO scale), the panels are split over pages (in order) and the text continues from page to page,
-with pages of text only at the end when needed; every page has the title block with its sheet number
-n/m.  :class:`~drafting.errors.LayoutError` is raised only when one block alone cannot fit an empty
+with pages of text only at the end when needed, the drawings kept together on as few pages as hold
+them; every page has the title block with its sheet number n/m.  :class:`~drafting.errors.LayoutError` is raised only when one block alone cannot fit an empty
 page.
 """
 
@@ -546,7 +546,11 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
                 doc = _document(paper, groups, mode, sections, tb_height, cache)
                 if doc is None:
                     continue
-                key = (-doc.count, doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
+                # fewest pages; then the drawings kept together on as few pages as hold them (a reader
+                # compares the polygons with the space diagram), then comfortable lettering, the largest
+                # diagrams, the largest lettering
+                drawing_pages = sum(1 for pg in doc.pages if pg.panels)
+                key = (-doc.count, -drawing_pages, doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
                     doc.size, -doc.empty_columns(), -m)
                 if best is None or key > best[0]:
                     best = (key, doc)
