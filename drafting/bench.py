@@ -80,21 +80,3 @@ def run_benchmarks(quick: bool = False) -> str:
                  "(one core, numpy):")
     lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))
     return "\n".join(lines)
-
-
-def run_benchmarks(quick: bool = False) -> str:
-    repeats = 3 if quick else 7
-    sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
-    lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; "
-             "layout = every page's drawing commands):" % repeats, format_render_rows(render_rows(repeats))]
-    lines.append("")
-    lines.append("Analytic sweep, positions and velocities (one core, numpy):")
-    lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))
-    chain = chain_rows((10**3, 10**4, 10**5) if quick else (10**3, 10**4, 10**5, 10**6))
-    if chain:
-        lines.append("")
-        lines.append("Dyad-chain vector loop, toggle linkage (gallery Example 3), positions and velocities:")
-        for r in chain:
-            lines.append(f"  {r['n']:>9.0e} angles  {r['median_seconds'] * 1e3:9.2f} ms  "
-                         f"{r['angles_per_second']:9.3g} angles/s")
-    return "\n".join(lines)
