@@ -69,11 +69,14 @@ class Fill:
 
 
 def quality(placed: Sequence[tuple[Panel, int]]) -> tuple:
-    """How good a set of panels at their rungs is: the space diagram's scale first, then the smallest
-    and the total size of the polygons drawn at a scale the sheet chose."""
+    """How good a set of panels at their rungs is: the space diagram up to true scale first (a sheet laid
+    over a drawing, a ruler on the links), then the smallest polygon drawn at a scale the sheet chose
+    (the answers are read off the polygons), then the space diagram enlarged beyond 1:1, then the total
+    size of the polygons."""
     space = sum(ratio_factor(p.ratios[r]) for p, r in placed if isinstance(p, SpacePanel))
     free = [max(p.drawn_size(r)) for p, r in placed if isinstance(p, VectorPanel) and p.free]
-    return (round(space, 9), round(min(free), 6) if free else 0.0, round(sum(free), 6))
+    return (round(min(space, 1.0), 9), round(min(free), 6) if free else 0.0, round(space, 9),
+            round(sum(free), 6))
 
 
 def _row_widths(row: Sequence[Panel], w: float) -> tuple[float, ...] | None:
