@@ -28,7 +28,7 @@ from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, P
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
-from .common import (SINGULAR_SINE, WARN_SINE, image_name, image_point, near_singular_warning,
+from .common import (SINGULAR_SINE, WARN_SINE, joined, image_name, image_point, near_singular_warning,
                      rounding_estimate, sense, singular_position)
 from .velocity import VelocityAnalysis
 
@@ -382,8 +382,9 @@ class _Polygon:
         ip, iq, idd = (("O_a" if x in self.m.ground else _img(x)) for x in (p, q, d))
         self.acc[d] = ad
         self.steps.append((
-            f"Acceleration image of link {link.number}: on {ip}{iq} draw the triangle {ip}{iq}{idd} similar to "
-            f"{p}{q}{d}, in the same order of letters (it is {p}{q}{d} turned and scaled as {ip}{iq} is {p}{q}). "
+            f"Acceleration image of link {link.number}: on {joined(ip, iq)} draw the triangle {joined(ip, iq, idd)} "
+            f"similar to {p}{q}{d}, in the same order of letters (it is {p}{q}{d} turned and scaled as "
+            f"{joined(ip, iq)} is {p}{q}). "
             f"Join O_a to {idd}: A_{d} = $a.",
             (Polygon(f"acceleration image {p}{q}{d}", Role.IMAGE, Diagram.ACCELERATION, (ap, aq, ad)),
              Point(f"acceleration image {d}", Role.LABEL, Diagram.ACCELERATION, ad, idd),

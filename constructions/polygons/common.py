@@ -61,6 +61,12 @@ def image_name(joint: str, prime: str = "") -> str:
     return joint[0].lower() + joint[1:] + prime
 
 
+def joined(*names: str) -> str:
+    """Image points written together as the notes do (bcd, b'c'd'); with the pole among them (O_v), spaced
+    so the subscript stays the pole's: "O_v c f"."""
+    return (" " if any("_" in n for n in names) else "").join(names)
+
+
 def sense(rate: float) -> str:
     """Words for the sense of an angular velocity or acceleration (CCW positive)."""
     return "counter-clockwise" if rate > 0 else "clockwise" if rate < 0 else "zero"

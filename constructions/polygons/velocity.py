@@ -23,7 +23,7 @@ from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, P
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
-from .common import (SINGULAR_SINE, WARN_SINE, dead_centre, image_name, image_point, near_singular_warning,
+from .common import (SINGULAR_SINE, WARN_SINE, joined, dead_centre, image_name, image_point, near_singular_warning,
                      rounding_estimate, sense, singular_position)
 
 
@@ -301,7 +301,7 @@ class _Polygon:
         pd, qd = D - P, D - Q
         crossing = abs(pd.unit().cross(qd.unit())) if pd.norm() > 0 and qd.norm() > 0 else 0.0
         if crossing < WARN_SINE:
-            self.steps.append((f"{d} lies on (or next to) the line {p}{q}: mark {idd} dividing {ip}{iq} as {d} "
+            self.steps.append((f"{d} lies on (or next to) the line {p}{q}: mark {idd} dividing {joined(ip, iq)} as {d} "
                                f"divides {p}{q} ({p}{d}/{p}{q} = $t).", (), None,
                                {"t": Value("number", t)}, StepKind.CONSTRUCTION))
         else:
@@ -314,7 +314,7 @@ class _Polygon:
         vel[d] = vd
         self.rel[(d, p)] = vd - vp
         self.steps.append((
-            f"The shaded triangle {ip}{iq}{idd} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
+            f"The shaded triangle {joined(ip, iq, idd)} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
             f"V_{d} = $v.",
             (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd)),
              Point(f"image {d}", Role.LABEL, Diagram.VELOCITY, vd, idd),
