@@ -2,8 +2,9 @@
 
 This module is the yardstick for the graphical velocity- and acceleration-polygon constructions, so it
 deliberately
-shares no code with them: it is pure numpy and imports nothing from :mod:`constructions` or
-:mod:`drafting`.  Every formula below is derived here from first principles (the derivations are in
+shares no code with them: it is pure numpy and imports nothing from :mod:`constructions` but the
+tolerance policy (:mod:`constructions.tolerance`: the one scene size and the snapping tolerance), and
+nothing from :mod:`drafting`.  Every formula below is derived here from first principles (the derivations are in
 the comments next to the code); none is copied from the course notes, whose vector-loop section has
 known sign and matrix mistakes (its four-bar acceleration matrix among them).
 
@@ -30,7 +31,8 @@ Numerical notes
   half-chord (Heron's formula written as a product of sums and differences), so near tangency the
   small factor is an exact floating-point difference (Sterbenz) and keeps its digits.
 * The assembly decision is three-way with a tolerance ``tol = ASSEMBLY_RTOL * L`` relative to the
-  mechanism scale ``L = sum of link lengths + |O1| + |O2|`` (``|O1| + |G|`` for the slider-crank).
+  one scene size ``L`` of :mod:`constructions.tolerance` (the largest link length or distance between
+  the pivots -- or of the crank pivot from the guide -- which does not move with the origin).
   Each small gap factor of the half-chord (``S - d`` and ``d - T`` for the four-bar, ``l -+ y`` for
   the slider) is classified: ``> tol`` crossing, ``|gap| <= tol`` tangent (snapped to exactly 0:
   assembles, C on the line of centres, condition 0, velocities NaN), ``< -tol`` apart (no assembly).
@@ -60,6 +62,8 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
+from .tolerance import ASSEMBLY_RTOL, scene_size, snap_tolerance
+
 __all__ = [
     "ASSEMBLY_RTOL",
     "CHUNK",
@@ -76,9 +80,8 @@ __all__ = [
 #: solve is indeterminate (toggle / dead centre) and velocities are NaN.
 SINE_TOL = 1e-12
 
-#: Relative tolerance (times the mechanism scale L): a gap factor of an intersection within
-#: +-ASSEMBLY_RTOL * L of zero is rounding noise at a tangency and is snapped to exactly zero.
-ASSEMBLY_RTOL = 64 * np.finfo(np.float64).eps
+# ASSEMBLY_RTOL (constructions.tolerance, times the scene size L): a gap factor of an intersection
+# within +-ASSEMBLY_RTOL * L of zero is rounding noise at a tangency and is snapped to exactly zero.
 
 #: Number of crank angles processed per chunk (tuned on a Xeon with 2 MB of L2 per core;
 #: 2**13 .. 2**15 measure within noise of each other).
@@ -543,8 +546,8 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
     th, w1, a1, shape = _angles(theta1, omega1, alpha1)
     n = th.size
 
-    scale = r1 + r2 + r3 + math.hypot(o1x, o1y) + math.hypot(o2x, o2y)
-    tol = ASSEMBLY_RTOL * scale
+    scale = scene_size((r1, r2, r3), ((o1x, o1y), (o2x, o2y)))   # the one scene size
+    tol = snap_tolerance(scale, max(abs(o1x), abs(o1y), abs(o2x), abs(o2y)))
     S = r2 + r3
     T = abs(r2 - r3)
     K = (r2 - r3) * (r2 + r3)  # coupler^2 - rocker^2 without squaring cancellation
@@ -772,8 +775,8 @@ def slider_crank(theta1, omega1, alpha1=0.0, *, crank_pivot, crank, coupler, gui
     ex, ey = math.cos(g), math.sin(g)
     nx, ny = -ey, ex
     y0 = (o1x - gx) * nx + (o1y - gy) * ny
-    scale = r1 + l + math.hypot(o1x, o1y) + math.hypot(gx, gy)
-    tol = ASSEMBLY_RTOL * scale
+    scale = scene_size((r1, l), ((o1x, o1y),), (((gx, gy), g),))   # the one scene size
+    tol = snap_tolerance(scale, max(abs(o1x), abs(o1y), abs(gx), abs(gy)))
     inv_l = 1.0 / l
 
     out = _outputs(_SLIDER_FIELDS, n)

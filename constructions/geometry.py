@@ -14,6 +14,10 @@ from dataclasses import dataclass
 from enum import Enum
 
 from .errors import DegenerateInput
+from .tolerance import Tolerance
+
+__all__ = ["Vec", "ORIGIN", "Tolerance", "Side", "Contact", "Line", "Circle", "Segment", "Intersection",
+           "intersect_lines", "intersect_line_circle", "intersect_circles"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -80,28 +84,6 @@ class Vec:
 
 
 ORIGIN = Vec(0.0, 0.0)
-
-
-@dataclass(frozen=True, slots=True)
-class Tolerance:
-    """Decision tolerances relative to the scene size.
-
-    ``length_scale`` is the size L of the figure (longest link, or the known vector in a polygon).
-    Lengths closer than ``rel * L`` are the same length; lines whose directions differ by a sine below
-    ``sine`` are parallel.  Scaling a figure and its L by any factor leaves every decision unchanged.
-    """
-
-    length_scale: float
-    rel: float = 1e-9
-    sine: float = 1e-9
-
-    def __post_init__(self) -> None:
-        if not (self.length_scale > 0.0 and math.isfinite(self.length_scale)):
-            raise DegenerateInput(f"the scene size must be a positive length, not {self.length_scale!r}")
-
-    @property
-    def length(self) -> float:
-        return self.rel * self.length_scale
 
 
 class Side(Enum):

@@ -24,6 +24,7 @@ from typing import Mapping
 
 from .errors import CannotAssemble, DegenerateInput
 from .formatting import Formatter, si_format
+from .tolerance import scene_size
 from .geometry import (Circle, Contact, Intersection, Line, Tolerance, Vec, intersect_circles,
                        intersect_line_circle)
 from .record import (Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role, Segment,
@@ -150,14 +151,13 @@ class Mechanism:
 
     @property
     def size(self) -> float:
-        """The scene scale L: the longest link, point distance or frame distance; tolerances are relative
-        to it (it does not move with the origin)."""
-        pts = list(self.ground.values()) + [s.through for s in self.slides if s.on is None]
-        spans = [k.length for k in self.links]
-        spans += [p.distance_to(q) for p in pts for q in pts]
-        spans += [a.distance for a in self.attached]
-        spans += [abs(s.offset) for s in self.slides]
-        return max(spans)
+        """The scene size L (:func:`constructions.tolerance.scene_size`): link lengths, point distances on
+        links, slot offsets, distances between fixed pivots and of fixed pivots from fixed guides --
+        tolerances are relative to it, and it does not move with the origin."""
+        lengths = [k.length for k in self.links] + [a.distance for a in self.attached]
+        lengths += [abs(s.offset) for s in self.slides]
+        lines = [(s.through.as_tuple(), s.angle) for s in self.slides if s.on is None]
+        return scene_size(lengths, [p.as_tuple() for p in self.ground.values()], lines)
 
     def tolerance(self) -> Tolerance:
         return Tolerance(self.size)

@@ -35,9 +35,8 @@ Conventions
   joint, point, velocity and acceleration, and for every angular velocity and angular acceleration
   except the crank's (the inputs) and the slider blocks' (0).  The fixed pivots keep their
   coordinates and zero velocity and acceleration.
-* Decisions are three-way with a tolerance ``ASSEMBLY_RTOL * L`` relative to the mechanism scale
-  ``L`` (sum of the link lengths plus the largest distance of a pivot or guide point from the
-  origin): a gap factor within the tolerance of zero is a tangency, snapped to exactly zero -- the
+* Decisions are three-way with a tolerance ``ASSEMBLY_RTOL * L`` relative to the one scene size
+  ``L = m.size`` (:mod:`constructions.tolerance`; it does not move with the origin): a gap factor within the tolerance of zero is a tangency, snapped to exactly zero -- the
   mechanism assembles, the joint lies on the line of centres (or square to the guide), its
   condition is 0 and its velocities and accelerations are NaN.
 * ``conditions[J]`` is the sine of the angle between the two velocity trial lines of J (the sine of
@@ -58,11 +57,11 @@ import numpy as np
 
 from .errors import DegenerateInput
 from .linkage import Attached, Branch, Link, Mechanism, Slide
+from .tolerance import ASSEMBLY_RTOL, snap_tolerance
 
 __all__ = ["ASSEMBLY_RTOL", "SINGULAR", "ChainPoint", "ChainState", "chain_solution", "solving_order"]
 
 #: Gap factors of a dyad within +-ASSEMBLY_RTOL * L of zero are a tangency (snapped to zero).
-ASSEMBLY_RTOL = 64 * np.finfo(np.float64).eps
 
 #: Relative determinant (sine of the angle between the velocity trial lines) below which the velocity
 #: system of a joint is singular and its velocity NaN.
@@ -269,12 +268,6 @@ class ChainState:
 
 # -- the solution -----------------------------------------------------------------------------------
 
-def _scale(m: Mechanism) -> float:
-    pts = list(m.ground.values()) + [s.through for s in m.slides]
-    far = max((math.hypot(p.x, p.y) for p in pts), default=0.0)
-    return sum(k.length for k in m.links) + far
-
-
 def _snap(f: np.ndarray, tol: float, ok: np.ndarray, tangent: np.ndarray) -> np.ndarray:
     """Three-way decision on a gap factor f (which must be >= 0 for the dyad to close): f < -tol apart
     (clears ``ok``), |f| <= tol tangent (f := 0, sets ``tangent``), f > tol crossing."""
@@ -303,7 +296,9 @@ def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
     shape = th.shape
     th, w1, a1 = (np.ascontiguousarray(v).reshape(-1) for v in (th, w1, a1))
     n = th.size
-    tol = ASSEMBLY_RTOL * _scale(m)
+    far = max((max(abs(p.x), abs(p.y)) for p in list(m.ground.values()) + [s.through for s in m.slides]),
+              default=0.0)
+    tol = snap_tolerance(m.size, far)     # the one scene size, plus the rounding of far coordinates
 
     out: dict[str, dict] | None = None
     ok_all = np.empty(n, dtype=bool)

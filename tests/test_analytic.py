@@ -759,6 +759,8 @@ def test_invalid_mechanisms_are_rejected(bad):
 
 
 def test_module_is_independent_of_the_constructions():
+    """Only the tolerance policy (one scene size, one snapping tolerance) is shared with the engine;
+    nothing of the construction path it checks."""
     import ast
     import inspect
 
@@ -766,4 +768,24 @@ def test_module_is_independent_of_the_constructions():
     imported = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import)
                 for alias in node.names}
     imported |= {node.module or "" for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
-    assert imported <= {"__future__", "math", "dataclasses", "numpy"}, imported
+    assert imported <= {"__future__", "math", "dataclasses", "numpy", "tolerance"}, imported
+
+
+@pytest.mark.parametrize("shift", [(0.0, 0.0), (1e3, -2e3), (-5e4, 3e4)])
+def test_decisions_do_not_move_with_the_origin(shift):
+    """The scene size does not grow with the distance from the origin; only the rounding floor of far
+    coordinates widens the snapping band (constructions.tolerance.snap_tolerance).  A four-bar at its
+    extended toggle (crank at 180 deg: |B O2| = 0.4 = coupler + rocker) reads as a toggle wherever it is
+    put, and its joint translates with it."""
+    o2 = (0.3, 0.0)
+    r1, r2, r3 = 0.1, 0.25, 0.15
+    kw = dict(crank=r1, coupler=r2, rocker=r3, branch=1)
+    base = four_bar(math.pi, 1.0, crank_pivot=(0.0, 0.0), rocker_pivot=o2, **kw)
+    moved = four_bar(math.pi, 1.0, crank_pivot=shift, rocker_pivot=(o2[0] + shift[0], o2[1] + shift[1]), **kw)
+    assert bool(base.assembles) and bool(moved.assembles)
+    assert float(base.condition) == float(moved.condition) == 0.0      # both snapped to the toggle
+    assert float(moved.Cx) - shift[0] == pytest.approx(float(base.Cx), abs=1e-6)
+    from constructions.tolerance import scene_size
+    # the same size, up to the rounding the far coordinates carry
+    assert scene_size((r1, r2, r3), ((0.0, 0.0), o2)) == pytest.approx(
+        scene_size((r1, r2, r3), (shift, (o2[0] + shift[0], o2[1] + shift[1]))), rel=1e-9)
