@@ -36,7 +36,7 @@ RENDER_SCENES = (("velocity, slider-crank (default sheet)", None),
 def render_rows(repeats: int = 7) -> list[dict]:
     """Median wall time of each stage (solve, layout of every sheet, SVG/PDF/PNG) for each sheet of
     :data:`RENDER_SCENES` that exists in this checkout."""
-    from .cli import builtin_example, sheets_for
+    from .worked import builtin_example, sheets_for
     from .export import write_sheets
     from .scene import load_scene
     from .study import Study

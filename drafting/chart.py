@@ -14,7 +14,7 @@ from typing import Callable, Sequence
 
 from constructions.record import Chart
 
-from .diagram import panel_drawer
+from .drawing import panel_drawer
 from .paper import Command, Line, Polyline, Rect, Rectangle, Text
 from .scales import nice_step, number_text
 from .style import MIN_TEXT, measure, plain, rich

@@ -12,12 +12,10 @@ Exit codes: 0 fine, 1 graphical and analytic disagree, 2 bad input (one sentence
 from __future__ import annotations
 
 import argparse
-import datetime as _dt
 import json
 import os
 import sys
 from dataclasses import replace
-from importlib import resources
 from pathlib import Path
 from typing import Sequence
 
@@ -26,6 +24,7 @@ from constructions.errors import ConstructionError, IndeterminatePosition
 from .faults import Interrupted, remove_temporaries, signals_handled
 from .scene import PAPERS, SceneError, load_scene
 from .study import Study
+from .worked import builtin_example, sheet_for, sheets_for  # noqa: F401  (sheet_for: API)
 from .textsafe import one_line, safe_streams
 from .units import from_si, unit_symbol
 
@@ -45,10 +44,6 @@ class UserError(Exception):
     def __init__(self, message: str, code: int = EXIT_INPUT) -> None:
         super().__init__(one_line(message, cut_quotes=False))    # escaped and bounded: one line
         self.code = code
-
-
-def builtin_example() -> Path:
-    return Path(str(resources.files("drafting") / "examples" / "notes-velocity-example-1.toml"))
 
 
 def _study(path: Path, paper: str | None = None) -> Study:
@@ -81,21 +76,6 @@ def _located(study: Study, e: ConstructionError) -> str:
     except Exception:
         where = "the given crank angle"
     return f"at {where}: {e}"
-
-
-def sheets_for(study: Study):
-    """The sheets of a solved study: one, or as many pages as its diagrams need to stay legible."""
-    from .sheet import ResultRow, SheetInfo, compose_sheets
-    s = study.scene
-    info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
-                     date=_dt.date.today().isoformat(), units=s.units, notes=study.warnings)
-    rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
-    return compose_sheets(study.construction, info, rows)
-
-
-def sheet_for(study: Study):
-    """The first sheet of a study (tests and callers that want one page)."""
-    return sheets_for(study)[0]
 
 
 def results_text(study: Study) -> str:

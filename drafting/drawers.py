@@ -19,7 +19,7 @@ from constructions.record import (AngleMark, Arc, Arrow, Bar, Block, Circle as C
                                   Entity, Guide, Note, Pivot, Plate, Point, Polygon as PolygonEntity, Role,
                                   ScaleBar, Segment, TrialLine)
 
-from .diagram import (ARROW_LEN, BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, NOTES, PATHS, PIN_R, PINS,
+from .drawing import (ARROW_LEN, BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, NOTES, PATHS, PIN_R, PINS,
                       SHAFTS, THICK_STYLES, TRIALS, DrawContext, Drawing, LabelReq, Pt, _dist, angle_gap,
                       arrowhead, drawer, incident_directions, nonzero, shifted, unit_vector)
 from .paper import Circle, Line, Polygon, Polyline, Rect, Rectangle, Text

@@ -73,9 +73,16 @@ def register(family: Family) -> Family:
     return family
 
 
+BUILTIN = ("drafting.linkage_family",)
+"""The modules of the families this package ships; each registers its family when imported.  Named, not
+imported here, so this registry depends on no family (a family depends on it)."""
+
+
 def builtin_families() -> None:
     """Register the families this package ships (idempotent: a module registers once, on import)."""
-    from . import linkage_family  # noqa: F401
+    import importlib
+    for name in BUILTIN:
+        importlib.import_module(name)
 
 
 def family(kind: str) -> Family:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from .diagram import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
+from .drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
 from .errors import LayoutError
 from .paper import Command, Rect, Rectangle, Text
 from .style import LABEL, measure, rich

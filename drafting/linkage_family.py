@@ -13,7 +13,6 @@ from constructions.record import Construction
 
 from .families import Analysis, Family, register
 from .linkage_scene import SECTIONS, read_linkage
-from .study import rate_json, vec_json
 
 
 def _position(study):
@@ -111,19 +110,19 @@ def _json(study) -> dict[str, Any]:
     out["position"] = {n: [u.convert("length", p.x), u.convert("length", p.y)] for n, p in pose.positions.items()}
     v = study.result("velocity")
     if v is not None:
-        out["velocity"] = {f"V_{n}": vec_json(p, "velocity", u) for n, p in v.velocities.items() if n not in m.ground}
-        out["relative_velocity"] = {f"V_{j}{p}": vec_json(w, "velocity", u) for (j, p), w in v.relative.items()}
-        out["angular_velocity"] = {f"omega_{n}": rate_json(w, "angular velocity", u)
+        out["velocity"] = {f"V_{n}": u.vector_json(p, "velocity") for n, p in v.velocities.items() if n not in m.ground}
+        out["relative_velocity"] = {f"V_{j}{p}": u.vector_json(w, "velocity") for (j, p), w in v.relative.items()}
+        out["angular_velocity"] = {f"omega_{n}": u.rate_json(w, "angular velocity")
                                    for n, w in sorted(v.angular.items())}
     a = study.result("acceleration")
     if a is not None:
         from constructions.polygons.acceleration import component_name
-        out["acceleration"] = {f"A_{n}": vec_json(p, "acceleration", u) for n, p in a.accelerations.items()
+        out["acceleration"] = {f"A_{n}": u.vector_json(p, "acceleration") for n, p in a.accelerations.items()
                                if n not in m.ground}
         out["acceleration_components"] = {
-            component_name(j, p, sup, m): vec_json(x, "acceleration", u)
+            component_name(j, p, sup, m): u.vector_json(x, "acceleration")
             for comps, sup in ((a.normal, "n"), (a.tangential, "t")) for (j, p), x in comps.items()}
-        out["angular_acceleration"] = {f"alpha_{n}": rate_json(al, "angular acceleration", u)
+        out["angular_acceleration"] = {f"alpha_{n}": u.rate_json(al, "angular acceleration")
                                        for n, al in sorted(a.angular.items())}
     return out
 

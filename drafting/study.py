@@ -8,7 +8,6 @@ accelerations.  ``Study.ran`` lists what has been computed so far (e.g. "positio
 
 from __future__ import annotations
 
-import math
 from functools import cached_property
 from typing import Any
 
@@ -19,6 +18,7 @@ from constructions.record import Construction
 
 from .families import Family, family
 from .scene import Scene
+from .unitset import direction_deg
 
 
 class Study:
@@ -146,20 +146,3 @@ class Study:
 def display_name(name: str) -> str:
     """omega_2 -> ω_2, alpha_2 -> α_2 (the rest of the name is the notes' markup already)."""
     return name.replace("omega_", "\u03c9_").replace("alpha_", "\u03b1_")
-
-
-def direction_deg(v: Vec) -> float:
-    """Direction CCW from +x in [0, 360), rounded so that 180 never prints as -180 or 360."""
-    if v.norm() == 0:
-        return 0.0
-    d = round(math.degrees(v.angle()), 9) % 360.0
-    return 0.0 if d >= 360.0 else d
-
-
-def vec_json(v: Vec, kind: str, units) -> dict[str, float]:
-    return {"x": units.convert(kind, v.x), "y": units.convert(kind, v.y),
-            "magnitude": units.convert(kind, v.norm()), "angle_deg": direction_deg(v)}
-
-
-def rate_json(w: float, kind: str, units) -> dict[str, Any]:
-    return {"value": units.convert(kind, w), "sense": "ccw" if w > 0 else "cw" if w < 0 else "none"}

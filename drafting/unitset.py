@@ -6,7 +6,9 @@ unit of a quantity kind, so a scene in m/min gets m/min everywhere (never a join
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, fields
+from typing import Any
 
 from .units import DEFAULT_UNITS, format_value, from_si, unit_symbol
 
@@ -61,3 +63,20 @@ class Units:
     def summary(self, kinds=("length", "velocity", "angular velocity")) -> str:
         """The units a title block names, e.g. "mm, mm/s, rad/s"."""
         return ", ".join(dict.fromkeys(self.symbol(k) for k in kinds))
+
+    def vector_json(self, v, kind: str) -> dict[str, float]:
+        """A vector (SI) as JSON in this unit of ``kind``: components, magnitude and direction."""
+        return {"x": self.convert(kind, v.x), "y": self.convert(kind, v.y),
+                "magnitude": self.convert(kind, v.norm()), "angle_deg": direction_deg(v)}
+
+    def rate_json(self, w: float, kind: str) -> dict[str, Any]:
+        """An angular rate (SI, CCW positive) as JSON: value in this unit and its sense."""
+        return {"value": self.convert(kind, w), "sense": "ccw" if w > 0 else "cw" if w < 0 else "none"}
+
+
+def direction_deg(v) -> float:
+    """Direction CCW from +x in [0, 360), rounded so that 180 never prints as -180 or 360."""
+    if v.norm() == 0:
+        return 0.0
+    d = round(math.degrees(v.angle()), 9) % 360.0
+    return 0.0 if d >= 360.0 else d

@@ -17,7 +17,7 @@ import pytest
 from constructions.geometry import Vec
 from constructions.record import (AngleMark, Chart, Circle, Construction, Curve, Diagram, Dimension, Entity,
                                   Note, Point, Role, Segment, Series, Step, Value)
-from drafting import diagram as D
+from drafting import drawing as D
 from drafting.diagram import draw_entities, drawer, drawer_for, model_points
 from drafting.errors import DrawingError, StyleError
 from drafting.paper import Circle as CircleCmd, Line, Polygon, Polyline, Rectangle, Text
