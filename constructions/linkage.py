@@ -535,8 +535,10 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
                 words = f"Mark {x} on link {link.number}: {att.base}{x} = $d at $angle from {link.label}."
                 values = {"d": Value("length", att.distance), "angle": Value("angle", att.angle)}
             else:
-                words = f"Mark {x} on link {link.number}: its shape is fixed by {a} and {b}."
-                values = None
+                words = (f"Mark {x} on link {link.number} from its own shape: {a}{x} = $da from {a} and "
+                         f"{b}{x} = $db from {b}, on the side the link's triangle {a}{b}{x} has.")
+                values = {"da": Value("length", pts[x].distance_to(pts[a])),
+                          "db": Value("length", pts[x].distance_to(pts[b]))}
             rec = rec.then(words, *bar(link, a, b), Point(f"point {x}", Role.LABEL, Diagram.SPACE, p, x),
                            values=values)
     return Pose(angle, pos, rec, cond, lines)
