@@ -16,7 +16,8 @@ from . import analytic
 from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
-from .linkage import CircleAndGuide, CrankTip, FixedToLink, Mechanism, SlotThrough, TwoCircles, assembly_plan
+from .linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, SlotThrough, TwoCircles, TwoLines,
+                      assembly_plan)
 from .quantities import Measured
 from .vector_loops import chain_solution
 
@@ -122,7 +123,7 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
     plan = assembly_plan(m)
     crank = plan[0]
     assert isinstance(crank, CrankTip)
-    dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide))]
+    dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines))]
     fixed = [s for s in plan if isinstance(s, FixedToLink)]
     b = crank.tip
     # Is it a plain four-bar or slider-crank?  (Topology only; the closed forms below then apply.)
@@ -132,9 +133,11 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
         if isinstance(d, TwoCircles):
             arms = {d.first: d.link_a, d.second: d.link_b}
             ground = [c for c in arms if c in m.ground]
-            plain = b in arms and len(ground) == 1
+            plain = b in arms and len(ground) == 1 and not m.slides
+        elif isinstance(d, CircleAndGuide):
+            plain = d.centre == b and d.slide.on is None and len(m.slides) == 1
         else:
-            plain = d.centre == b
+            plain = False
         if plain:
             solved = {crank.link.number} | {k.number for k in (arms.values() if isinstance(d, TwoCircles)
                                                                else (d.link,))}
@@ -263,14 +266,20 @@ def analytic_values(m: Mechanism, a: AnalyticSolution | None) -> dict[str, Vec |
         # point's absolute motion: A_JG = A_J + A^s + 2 omega_G x (V_JG - V_J) for a slot turned through a
         # known joint (SlotThrough), and A_J = A_JG + A^s + 2 omega_G x (V_J - V_JG) where a circle meets
         # the slot (CircleAndGuide on a moving slot) -- the names the construction measures
+        sliding = []
         for step in assembly_plan(m):
-            jg = getattr(step, "coincident", "")
-            if not jg or jg not in a.accelerations:
+            if isinstance(step, TwoLines):
+                sliding += [(step, sl, jg) for sl, jg in ((step.slide_a, step.coincident_a),
+                                                          (step.slide_b, step.coincident_b)) if jg]
+            elif getattr(step, "coincident", ""):
+                sliding.append((step, step.slide, step.coincident))
+        for step, slide, jg in sliding:
+            if jg not in a.accelerations:
                 continue
             j = step.joint
-            w = a.angular[step.slide.on]
-            al = (a.angular_acceleration or {}).get(step.slide.on)
-            for q in m.points_of(step.slide.on):       # components of the point under J about the link's points
+            w = a.angular[slide.on]
+            al = (a.angular_acceleration or {}).get(slide.on)
+            for q in m.points_of(slide.on):       # components of the point under J about the link's points
                 r = a.positions[jg] - a.positions[q]
                 name = f"A_{jg}" if q in m.ground else f"A_{jg}{q}"
                 out[f"{name}^n"] = r * (-w * w)

@@ -195,13 +195,13 @@ def _model(m: Mechanism) -> _Model:
         bodies.append(_Body("link", k.number, MappingProxyType(local), max(math.hypot(*p) for p in local.values())))
     link_points = {n for b in bodies for n in b.local}
     names = set(m.ground) | link_points | {s.joint for s in m.slides}
-    seen: set[str] = set()
+    count: dict[str, int] = {}
     for s in m.slides:
         if s.joint in m.ground:
             raise DegenerateInput(f"slider joint {s.joint} is also a fixed pivot")
-        if s.joint in seen:
-            raise DegenerateInput(f"joint {s.joint} is carried by two sliders")
-        seen.add(s.joint)
+        count[s.joint] = count.get(s.joint, 0) + 1
+        if count[s.joint] > 2:              # two: a joint carried along two lines (a PRP dyad)
+            raise DegenerateInput(f"joint {s.joint} is carried by three sliders; a joint takes at most two")
         if s.on is not None:
             if s.on not in index:
                 raise DegenerateInput(f"joint {s.joint} slides on link {s.on}, which does not exist")
@@ -221,9 +221,9 @@ def _model(m: Mechanism) -> _Model:
     scale = max(size, extent)
     if not (scale > 0 and math.isfinite(scale)):
         raise DegenerateInput(f"the scene size must be a positive length, not {scale!r}")
-    block_index: dict[str, int] = {}
+    block_index: dict[int, int] = {}
     for s in blocks:
-        block_index[s.joint] = len(bodies)
+        block_index[s.number] = len(bodies)
         ell = bodies[index[s.on]].size if s.on is not None else scale
         bodies.append(_Body("block", s.number, MappingProxyType({s.joint: (0.0, 0.0)}), ell))
 
@@ -242,7 +242,7 @@ def _model(m: Mechanism) -> _Model:
     for s in m.slides:
         g = index[s.on] if s.on is not None else None
         if s.number is not None:
-            carrier, at = block_index[s.joint], (0.0, 0.0)
+            carrier, at = block_index[s.number], (0.0, 0.0)
             where = f"block {s.number}"
         else:
             carrier, at = next((i, b.local[s.joint]) for i, b in enumerate(bodies) if s.joint in b.local)

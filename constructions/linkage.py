@@ -26,7 +26,7 @@ from .errors import CannotAssemble, DegenerateInput
 from .formatting import Formatter, si_format
 from .tolerance import scene_size
 from .geometry import (Circle, Contact, Intersection, Line, Tolerance, Vec, intersect_circles,
-                       intersect_line_circle)
+                       intersect_line_circle, intersect_lines)
 from .record import (Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role, Segment,
                      StepKind, Value)
 
@@ -237,6 +237,19 @@ class SlotThrough:
 
 
 @dataclass(frozen=True, slots=True)
+class TwoLines:
+    """Joint found where the lines of two slides cross (a PRP dyad): the joint carries two blocks (or
+    pins), each sliding on a fixed guide or on the slot of a placed link; ``coincident_a``/``_b`` name the
+    point of each slotted link under the joint ("" for a fixed guide)."""
+
+    joint: str
+    slide_a: Slide
+    slide_b: Slide
+    coincident_a: str = ""
+    coincident_b: str = ""
+
+
+@dataclass(frozen=True, slots=True)
 class FixedToLink:
     """A point of ``link`` placed once two of its points, ``via``, are known (rigid body)."""
 
@@ -249,8 +262,8 @@ class FixedToLink:
         return self.point if isinstance(self.point, str) else self.point.name
 
 
-PlanStep = CrankTip | TwoCircles | CircleAndGuide | SlotThrough | FixedToLink
-Dyad = TwoCircles | CircleAndGuide | SlotThrough
+PlanStep = CrankTip | TwoCircles | CircleAndGuide | SlotThrough | TwoLines | FixedToLink
+Dyad = TwoCircles | CircleAndGuide | SlotThrough | TwoLines
 
 
 def coincident_name(joint: str, link: int) -> str:
@@ -267,11 +280,14 @@ def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
         raise DegenerateInput(f"the crank, link {crank.number} ({crank.label}), must join one fixed pivot "
                               f"to one moving joint; fixed pivots are {', '.join(m.ground) or 'none'}")
     seen: set[str] = set()
+    twice: set[str] = set()
     for s in m.slides:
         if s.joint in m.ground:
             raise DegenerateInput(f"slider joint {s.joint} is also a fixed pivot")
+        if s.joint in seen and s.joint in twice:
+            raise DegenerateInput(f"joint {s.joint} is carried by three sliders; a joint takes at most two")
         if s.joint in seen:
-            raise DegenerateInput(f"joint {s.joint} is carried by two sliders")
+            twice.add(s.joint)
         seen.add(s.joint)
         if s.on is not None:
             m.link(s.on)
@@ -282,7 +298,9 @@ def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
     plan: list[PlanStep] = [CrankTip(crank, pivots[0], tip)]
     known = set(m.ground) | {tip}
     posed: set[int] = set()                      # links whose every point is fixed
-    slides = {s.joint: s for s in m.slides}
+    slides: dict[str, list[Slide]] = {}
+    for sl in m.slides:
+        slides.setdefault(sl.joint, []).append(sl)
     everything = set(m.ground) | {j for pts in local.values() for j in pts} | set(slides)
 
     def pose_points(number: int) -> bool:
@@ -320,14 +338,21 @@ def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
                 progress = True
         for j in sorted(everything - known):
             cs = circles(j)
-            s = slides.get(j)
-            if s is None and len(cs) >= 2:
+            on_lines = slides.get(j, [])
+            placed = [sl for sl in on_lines if sl.on is None or sl.on in posed]
+            s = placed[0] if placed else (on_lines[0] if on_lines else None)
+            if len(on_lines) == 2 and len(placed) == 2:
+                a, b = placed
+                plan.append(TwoLines(j, a, b,
+                                     _coincident(m, j, a.on, everything) if a.on is not None else "",
+                                     _coincident(m, j, b.on, everything) if b.on is not None else ""))
+            elif s is None and len(cs) >= 2:
                 (ka, a, ra), (kb, b, rb) = cs[:2]
                 branch = _branch_for(m, j, (a, b))
                 if branch.reference == (b, a):
                     (ka, a, ra), (kb, b, rb) = (kb, b, rb), (ka, a, ra)
                 plan.append(TwoCircles(j, ka, a, kb, b, branch, ra, rb))
-            elif s is not None and cs and (s.on is None or s.on in posed):
+            elif s is not None and len(on_lines) == 1 and cs and (s.on is None or s.on in posed):
                 k, c, r = cs[0]
                 plan.append(CircleAndGuide(j, k, c, s, _branch_for(m, j, (c,)), r,
                                            _coincident(m, j, s.on, everything) if s.on is not None else ""))
@@ -335,7 +360,7 @@ def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
                 continue
             known.add(j)
             progress = True
-        for j, s in sorted(slides.items()):
+        for j, s in [(sl.joint, sl) for key in sorted(slides) for sl in slides[key]]:
             if j in known and s.on is not None and s.on not in posed:
                 pts = local[s.on]
                 have = [x for x in pts if x in known]
@@ -497,12 +522,33 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
             cond[step.joint] = hit.condition
             block = ([Block(f"block {step.slide.number}", Role.GIVEN, Diagram.SPACE, p, line.direction,
                             step.slide.number)] if step.slide.number is not None else [])
+            if step.slide.on is not None:
+                block.append(_slot_segment(m, step.slide, pos, p))
             rec = rec.then(
                 f"Find {step.joint}: swing {step.centre}{step.joint} about {step.centre} to meet the "
                 f"{where_line}; take the crossing {step.branch.describe()}.",
                 _arc_through(f"path {step.joint} about {step.centre}", c, p),
                 *bar(step.link, step.centre, step.joint), *block,
                 Point(f"joint {step.joint}", Role.LABEL, Diagram.SPACE, p, step.joint))
+        elif isinstance(step, TwoLines):
+            la, lb = slide_line(m, step.slide_a, pos), slide_line(m, step.slide_b, pos)
+            hit = intersect_lines(la, lb, tol)
+            if hit.contact is not Contact.CROSSING:
+                raise CannotAssemble(f"the lines {step.joint} slides on ({_line_name(step.slide_a)} and "
+                                     f"{_line_name(step.slide_b)}) are parallel, so {step.joint} cannot be placed",
+                                     position=where)
+            p = hit.points[0]
+            pos[step.joint] = p
+            for c in (step.coincident_a, step.coincident_b):
+                if c:
+                    pos[c] = p
+            cond[step.joint] = hit.condition
+            blocks = [Block(f"block {sl.number}", Role.GIVEN, Diagram.SPACE, p, ln.direction, sl.number)
+                      for sl, ln in ((step.slide_a, la), (step.slide_b, lb)) if sl.number is not None]
+            blocks += [_slot_segment(m, sl, pos, p) for sl in (step.slide_a, step.slide_b) if sl.on is not None]
+            rec = rec.then(
+                f"Find {step.joint} where the {_line_name(step.slide_a)} and the {_line_name(step.slide_b)} cross.",
+                *blocks, Point(f"joint {step.joint}", Role.LABEL, Diagram.SPACE, p, step.joint))
         elif isinstance(step, SlotThrough):
             p = _slot_through(m, step, pos, tol, where, fmt)
             pts = m.local(step.link.number)
@@ -542,6 +588,20 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
             rec = rec.then(words, *bar(link, a, b), Point(f"point {x}", Role.LABEL, Diagram.SPACE, p, x),
                            values=values)
     return Pose(angle, pos, rec, cond, lines)
+
+
+def _slot_segment(m: Mechanism, s: Slide, pos: Mapping[str, Vec], at: Vec) -> Segment:
+    """The slot drawn along its link, from the link's first joint's foot to past the joint it carries."""
+    line = slide_line(m, s, pos)
+    first = pos[m.link(s.on).joints[0]]
+    t0, t1 = line.parameter(first), line.parameter(at)
+    lo, hi = min(t0, t1), max(t0, t1)
+    pad = 0.1 * (hi - lo)
+    return Segment(f"slot {s.joint} in link {s.on}", Role.PATH, Diagram.SPACE, line.at(lo - pad), line.at(hi + pad))
+
+
+def _line_name(s: Slide) -> str:
+    return "guide" if s.on is None else f"slot in link {s.on}"
 
 
 def _slot_through(m: Mechanism, step: SlotThrough, pos: dict[str, Vec], tol: Tolerance, where: str,

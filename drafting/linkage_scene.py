@@ -80,12 +80,14 @@ def read_linkage(r, units: Units) -> dict:
             if any(x.number == n for x in links) or any(s.number == n for s in slides):
                 raise r.fail(f"{k}.number", f"link {n} is already used")
         j = r.name(f"{k}.joint", t["joint"])
-        if j not in points:
-            raise r.fail(f"{k}.joint", f"joint {j} is on no link")
         if j in ground:
             raise r.fail(f"{k}.joint", f"{j} is a fixed pivot and cannot slide")
-        if any(s.joint == j for s in slides):      # one guide per joint (the guide is named after it)
-            raise r.fail(f"{k}.joint", f"joint {j} already slides on the guide of another slider")
+        already = [s for s in slides if s.joint == j]
+        if len(already) >= 2:
+            raise r.fail(f"{k}.joint", f"joint {j} already slides along two lines; a joint takes at most two")
+        if already and already[0].on is None and "on" not in t:
+            raise r.fail(f"{k}.joint", f"joint {j} already slides on a fixed guide; a second line must be a "
+                                        f"slot in a moving link (on = <link>)")
         angle = r.quantity(f"{k}.angle", t.get("angle", 0), "angle", units)
         if "on" in t:
             on = r.number(f"{k}.on", t["on"])
@@ -108,6 +110,12 @@ def read_linkage(r, units: Units) -> dict:
             if n is None:
                 raise r.fail(f"{k}.number", "a block on a fixed guide needs its link number")
             slides.append(Slide(n, j, r.point(f"{k}.through", t["through"], units), angle))
+    for i, sl in enumerate(slides, 1):           # a joint on no link is carried by two blocks (PRP)
+        if sl.joint not in points and sum(x.joint == sl.joint for x in slides) < 2:
+            raise r.fail(f"slider[{i}].joint", f"joint {sl.joint} is on no link (a joint only blocks carry "
+                                               f"needs two of them)")
+        if sl.joint not in points and sl.number is None:
+            raise r.fail(f"slider[{i}].number", f"joint {sl.joint} is on no link, so it needs a block (a number)")
 
     inp = r.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha"}, {"link", "angle"})
     crank_no = r.number("input.link", inp["link"])

@@ -219,7 +219,8 @@ def test_units_section_refuses_percent_and_expressions(tmp_path, capsys):
 def test_two_sliders_on_one_joint(tmp_path, capsys):
     second = '\n[[slider]]\nnumber = 4\njoint = "C"\nthrough = [0, 10]\n'
     text = EXAMPLE.replace("[input]", second + "\n[input]")
-    refuse(tmp_path, capsys, text, "slider[2].joint", "joint C already slides on the guide of another slider")
+    refuse(tmp_path, capsys, text, "slider[2].joint", "joint C already slides on a fixed guide; a second line "
+                                                      "must be a slot in a moving link")
 
 
 def test_a_point_defined_twice(tmp_path, capsys):

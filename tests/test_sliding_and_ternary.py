@@ -63,7 +63,17 @@ def ternary_posed_by_other_points():
                      {"E": Branch(1, ("B", "O2")), "D": Branch(1, ("C",))})
 
 
-MECHANISMS = {"quick-return": quick_return, "quick-return, offset slot": lambda: quick_return(0.012),
+def slot_and_guide(pin=False):
+    """A PRP dyad: a four-bar whose rocker (link 3) has a slot along it; the joint J is carried by a block
+    (link 5, or a bare pin) in that slot and by a block (link 6) on a fixed vertical guide -- J is where
+    the slot and the guide cross."""
+    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.1, 0.0)},
+                     (Link(1, ("O1", "B"), 0.03), Link(2, ("B", "C"), 0.1), Link(3, ("O2", "C"), 0.08)),
+                     (Slide(5, "J", Vec(0, 0), 0.0, on=3), Slide(6, "J", Vec(0.07, 0.0), math.pi / 2)), (), 1,
+                     {"C": Branch(1, ("B", "O2"))})
+
+
+MECHANISMS = {"quick-return": quick_return, "slot meets a guide (PRP)": slot_and_guide, "quick-return, offset slot": lambda: quick_return(0.012),
               "quick-return, other branch": lambda: quick_return(-0.01, -1, ram=False),
               "pin in a slot": lambda: quick_return(block=False), "block meets a moving slot": rocker_with_slot,
               "Watt six-bar": watt_six_bar, "ternary posed through its third point": ternary_posed_by_other_points}
@@ -76,7 +86,10 @@ def solve(m, theta, omega, alpha):
 
 def coincident(m):
     """Names of points that only coincide with a joint for an instant (no time derivative applies)."""
-    return {s.coincident for s in assembly_plan(m) if getattr(s, "coincident", "")}
+    names = set()
+    for s in assembly_plan(m):
+        names |= {getattr(s, a, "") for a in ("coincident", "coincident_a", "coincident_b")}
+    return names - {""}
 
 
 @pytest.mark.parametrize("name", MECHANISMS)
@@ -215,7 +228,7 @@ def random_slotted_levers(draw):
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(m=st.one_of(random_slotted_levers(), st.sampled_from([watt_six_bar(), ternary_posed_by_other_points(),
-                                                            rocker_with_slot()])),
+                                                            rocker_with_slot(), slot_and_guide()])),
        theta=st.floats(-math.pi, math.pi), omega=st.floats(1.0, 50.0).flatmap(lambda w: st.sampled_from([w, -w])),
        alpha=st.one_of(st.just(0.0), st.floats(-500.0, 500.0)))
 def test_graphical_equals_the_constraint_equations(m, theta, omega, alpha):
@@ -233,3 +246,15 @@ def test_graphical_equals_the_constraint_equations(m, theta, omega, alpha):
     assert not bad
     if any(s.on is not None for s in m.slides):
         assert any(r.name.endswith("^c") for r in rows)          # the Coriolis component is checked too
+
+
+def test_a_joint_carried_along_two_lines_reads_as_the_notes_would_write_it():
+    from constructions.linkage import TwoLines
+    m = slot_and_guide()
+    plan = assembly_plan(m)
+    assert isinstance(plan[-1], TwoLines) and plan[-1].coincident_a == "J3"
+    va, aa = solve(m, 0.7, 10.0, 30.0)
+    assert [e.text(marks=False) for e in va.construction.equations][-1] == "V_J3 + V_JJ3 = V_J"
+    assert [e.text(marks=False) for e in aa.construction.equations][-1] == "A_J3 + A_JJ3^c + A_JJ3^s = A_J"
+    assert abs(aa.accelerations["J"].x) <= 1e-12 * aa.accelerations["J"].norm()      # along the vertical guide
+    assert "A_JJ3^c" in aa.coriolis and aa.angular[6] == 0.0 and aa.angular[5] == aa.angular[3]

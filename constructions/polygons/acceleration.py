@@ -24,7 +24,7 @@ from typing import Mapping
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
 from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles,
-                       assembly_plan)
+                       TwoLines, assembly_plan, slide_line)
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
@@ -113,7 +113,7 @@ def acceleration_polygon(m: Mechanism, va: VelocityAnalysis, alpha: float = 0.0,
     assert isinstance(crank, CrankTip)
     poly = _Polygon(m, va, crank, alpha)
     for step in plan[1:]:
-        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough)):
+        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines)):
             poly.dyad(step)
         elif isinstance(step, FixedToLink):
             poly.image(step)
@@ -226,6 +226,8 @@ class _Polygon:
         """One vector equation: the known normal (and Coriolis) components, two trial lines, their crossing."""
         if isinstance(step, SlotThrough):
             return self.slot_through(step)
+        if isinstance(step, TwoLines):
+            return self.two_lines(step)
         m, pos, vel = self.m, self.pose.positions, self.va
         j = step.joint
         guided = isinstance(step, CircleAndGuide)
@@ -311,6 +313,66 @@ class _Polygon:
             f"{'; '.join(alphas)}.",
             (Point(f"acceleration image {j}", Role.LABEL, Diagram.ACCELERATION, aj, _img(j)), *measured),
             eq, values, StepKind.ANSWER))
+
+    def two_lines(self, step: TwoLines) -> None:
+        """J carried along two lines: for each, A_J = A_JG + A_J,JG^c + A_J,JG^s (the Coriolis component
+        2 omega x V_J,JG of a slot in a turning link; on a fixed guide A_J itself lies along it)."""
+        m, pos, vel = self.m, self.pose.positions, self.va
+        j = step.joint
+        sides, trials, tips = [], [], []
+        eq_terms = []
+        for sl, jg in ((step.slide_a, step.coincident_a), (step.slide_b, step.coincident_b)):
+            if sl.on is None:
+                eq_terms.append((Term("A", j, False, True),))
+            else:
+                eq_terms.append((Term("A", jg, True, True), Term("A", f"{j}{jg}", True, True, "c"),
+                                 Term("A", f"{j}{jg}", False, True, "s")))
+        eq = VectorEquation(eq_terms[0], eq_terms[1])
+        self.equations.append((f"Relative acceleration equation at {j}, carried along two lines: "
+                               f"{eq.text(marks=False)}; two unknown magnitudes.", eq))
+        for sl, jg in ((step.slide_a, step.coincident_a), (step.slide_b, step.coincident_b)):
+            g = slide_line(m, sl, pos).direction
+            if sl.on is None:
+                trials.append(Line(ORIGIN, g))
+                tips.append(None)
+                self.steps.append((f"Draw the direction of A_{j} through O_a, parallel to the guide.",
+                                   (TrialLine(f"trial A_{j} guide", Role.TRIAL, Diagram.ACCELERATION, ORIGIN, g,
+                                              "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
+                continue
+            a_jg = self._acceleration_on(sl.on, jg)
+            self.acc[jg] = a_jg
+            self.steps.append((f"Mark {_img(jg)}, the acceleration image of the point {jg} of link {sl.on} "
+                               f"under {j} (A_{jg} = $a).",
+                               (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a_jg, _img(jg)),),
+                               eq, {"a": _a(a_jg.norm())}, StepKind.CONSTRUCTION))
+            v_rel = vel.velocities[j] - vel.velocities[jg]
+            tip = self._coriolis(sl.on, v_rel, a_jg, f"A_{j}{jg}^c", f"{j}{jg}", jg, eq)
+            trials.append(Line(tip, g))
+            tips.append((jg, tip))
+            self.steps.append((f"Through its tip draw the direction of the sliding component A_{j}{jg}^s, "
+                               f"parallel to the slot.",
+                               (TrialLine(f"trial A_{j}{jg}^s", Role.TRIAL, Diagram.ACCELERATION, tip, g,
+                                          "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
+        aj = self._close(step, trials)
+        self.acc[j] = aj
+        measured = [Arrow(f"result A_{j}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, aj, f"A_{j}")]
+        values = {"a": _a(aj.norm())}
+        parts = [f"A_{j} (from O_a to {_img(j)}) = $a"]
+        for i, t in enumerate(tips):
+            if t is None:
+                continue
+            jg, tip = t
+            name = f"A_{j}{jg}^s"
+            self.sliding[name] = aj - tip
+            measured.append(Arrow(f"result {name}", Role.RESULT, Diagram.ACCELERATION, tip, aj, name))
+            values[f"s{i}"] = _a((aj - tip).norm())
+            parts.append(f"{name} = $s{i}")
+        for sl in (step.slide_a, step.slide_b):
+            if sl.number is not None:
+                self.ang[sl.number] = 0.0 if sl.on is None else self._alpha_of(sl.on)
+        self.steps.append((f"The trial lines meet at {_img(j)}. Measure {', '.join(parts)}.",
+                           (Point(f"acceleration image {j}", Role.LABEL, Diagram.ACCELERATION, aj, _img(j)), *measured),
+                           eq, values, StepKind.ANSWER))
 
     def slot_through(self, step: SlotThrough) -> None:
         """The slotted link about its known point P, J sliding in its slot, JG the link's point under J:

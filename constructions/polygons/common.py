@@ -85,6 +85,8 @@ def singular_kind(m: Mechanism, step, pose: Pose) -> tuple[str, str]:
     if isinstance(step, TwoCircles):
         kind = "change point" if change_point(m, pose) else "toggle"
         return kind, f"transmission angle {transmission_angle(pose, step):.3g} deg"
+    if not hasattr(step, "centre"):                 # two lines (PRP): their crossing
+        return "limit position", f"the two lines {j} slides on are parallel"
     line = pose.lines.get(j) if pose.lines else None
     centre = step.centre
     r = p[j] - p[centre]
@@ -104,6 +106,9 @@ def singular_position(m: Mechanism, step, pose: Pose, condition: float, polygon:
         a, b = step.link_a, step.link_b
         reason = (f"{kind}: links {a.number} and {b.number} are in line at {j} ({angle}), so the trial lines "
                   f"for {j} are parallel (sine {condition:.1e}) and the {polygon} cannot close")
+    elif not hasattr(step, "link"):
+        reason = (f"limit position (lock): {angle}, so the trial lines for {j} are parallel (sine "
+                  f"{condition:.1e}) and the {polygon} cannot close")
     else:
         reason = (f"limit position (lock): link {step.link.number} stands square to the "
                   f"{'slot' if step.slide.on else 'guide'} of {j} ({angle}), so the trial lines for {j} are "

@@ -19,7 +19,7 @@ from typing import Mapping
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
 from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles,
-                       assembly_plan)
+                       TwoLines, assembly_plan, slide_line)
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
@@ -86,7 +86,7 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, scale: float | N
     assert isinstance(crank, CrankTip)
     poly = _Polygon(m, pose, crank, omega)
     for step in plan[1:]:
-        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough)):
+        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines)):
             poly.dyad(step)
         elif isinstance(step, FixedToLink):
             poly.image(step)
@@ -160,6 +160,8 @@ class _Polygon:
         """One vector equation, V_C = V_B + V_CB: two trial lines and their crossing c."""
         if isinstance(step, SlotThrough):
             return self.slot_through(step)
+        if isinstance(step, TwoLines):
+            return self.two_lines(step)
         m, pos = self.m, self.pose.positions
         j = step.joint
         guided = isinstance(step, CircleAndGuide)
@@ -232,10 +234,49 @@ class _Polygon:
             values[f"w{i}"] = _w(w)
             omegas.append(f"\u03c9_{link.number} = {what}/{centre}{j} = $w{i} {sense(w)}")
         at = image or image_name(j)
-        self.steps.append((f"The trial lines meet at {at}. Measure {', '.join(parts)}; {'; '.join(omegas)}.",
+        tail = f"; {'; '.join(omegas)}" if omegas else ""
+        self.steps.append((f"The trial lines meet at {at}. Measure {', '.join(parts)}{tail}.",
                            (Point(f"image {j}" if image is None else f"image {image}", Role.LABEL, Diagram.VELOCITY,
                                   measured[0].tip, at), *measured),
                            eq, values, StepKind.ANSWER))
+
+    def two_lines(self, step: TwoLines) -> None:
+        """J carried along two lines (a PRP dyad): for each, V_J = V_JG + V_J,JG along it (JG the point of
+        the slotted link under J; on a fixed guide V_J itself lies along it) -- two trial lines."""
+        m, pos = self.m, self.pose.positions
+        j = step.joint
+        terms, trials, entities, words, rels = [], [], [], [], []
+        for sl, jg in ((step.slide_a, step.coincident_a), (step.slide_b, step.coincident_b)):
+            g = slide_line(m, sl, pos).direction
+            if sl.on is None:
+                terms.append((Term("V", j, False, True),))
+                trials.append(Line(ORIGIN, g))
+                entities.append(TrialLine(f"trial V_{j} guide", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g, "\u2225 guide"))
+                words.append(f"through O_v the direction of V_{j}, parallel to the guide")
+            else:
+                v_jg = self._velocity_on(sl.on, jg)
+                self.vel[jg] = v_jg
+                terms.append((Term("V", jg, True, True), Term("V", f"{j}{jg}", False, True)))
+                trials.append(Line(v_jg, g))
+                entities += [Point(f"image {jg}", Role.LABEL, Diagram.VELOCITY, v_jg, image_name(jg)),
+                             TrialLine(f"trial V_{j}{jg}", Role.TRIAL, Diagram.VELOCITY, v_jg, g, "\u2225 slot")]
+                words.append(f"through {image_name(jg)} (the image of the point {jg} of link {sl.on} under {j}) "
+                             f"the direction of V_{j}{jg}, parallel to its slot")
+                rels.append((jg, v_jg))
+        eq = VectorEquation(terms[0], terms[1])
+        self.equations.append((f"Relative velocity equation at {j}, carried along two lines: "
+                               f"{eq.text(marks=False)}; two unknown magnitudes.", eq))
+        self.steps.append((f"Draw {words[0]}, and {words[1]}.", tuple(entities), eq, {}, StepKind.CONSTRUCTION))
+        vj = self._close(step, trials)
+        self.vel[j] = vj
+        measured = [Arrow(f"result V_{j}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vj, f"V_{j}")]
+        for jg, v_jg in rels:
+            self.rel[(j, jg)] = vj - v_jg
+            measured.append(Arrow(f"result V_{j}{jg}", Role.RESULT, Diagram.VELOCITY, v_jg, vj, f"V_{j}{jg}"))
+        for sl in (step.slide_a, step.slide_b):
+            if sl.number is not None:
+                self.ang[sl.number] = 0.0 if sl.on is None else self._omega_of(sl.on)
+        self._answer(j, measured, [], eq)
 
     def slot_through(self, step: SlotThrough) -> None:
         """The slotted link turns about its known point P; J slides in its slot.  With JG the point of the
