@@ -221,3 +221,19 @@ def test_a_reader_that_goes_away_ends_the_run_quietly(tmp_path):
     p.wait(timeout=60)
     assert p.returncode in (0, 141) and "Traceback" not in err and "BrokenPipe" not in err, err
     assert temporaries(tmp_path / "out") == []
+
+
+def test_an_interrupt_while_loading_is_one_line_too():
+    """A Ctrl-C while the command is still importing numpy and the engine: one line, exit 130, no traceback
+    (drafting.entry imports the application only inside its own handler)."""
+    code = "import sys; from drafting.entry import main; sys.exit(main(sys.argv[1:]))"
+    for delay in (0.1, 0.2, 0.35):
+        p = subprocess.Popen([sys.executable, "-c", code, "solve", str(GALLERY[0])], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, env={**os.environ, "PYTHONPATH": str(ROOT)},
+                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+        time.sleep(delay)
+        p.send_signal(signal.SIGINT)
+        out, err = p.communicate(timeout=60)
+        text = err.decode()
+        assert "Traceback" not in text, text
+        assert p.returncode in (130, -signal.SIGINT) and text.count("\n") <= 1, (p.returncode, text)
