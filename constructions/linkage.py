@@ -379,6 +379,18 @@ def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
     if f != 1:
         loose = (f"; joint {missing[0]} cannot be constructed: it needs two links to known joints, or one "
                  f"link and a guide or placed slot") if missing and f > 1 else ""
+        # a joint named on one link only, that nothing else holds, is usually a fixed pivot left undeclared
+        held = set(m.ground) | set(slides) | {a.name for a in m.attached}
+        on_links: dict[str, list[int]] = {}
+        for k in m.links:
+            for j in k.joints:
+                on_links.setdefault(j, []).append(k.number)
+        loose_ends = [j for j in sorted(on_links) if len(on_links[j]) == 1 and j not in held
+                      and j != tip and j in missing]
+        if f > 1 and loose_ends:
+            j = loose_ends[0]
+            loose = (f"; {j} is on link {on_links[j][0]} only and is not a fixed pivot (if it is one, declare "
+                     f"it with the frame)")
         raise DegenerateInput(f"the mechanism has {f} degrees of freedom ({working}); a crank drives only a "
                               f"mechanism with one{loose}")
     if missing:

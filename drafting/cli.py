@@ -59,6 +59,8 @@ def _solve(study: Study) -> Study:
     a singular position, whose message names its kind, else 2)."""
     try:
         study.run()
+    except SceneError as e:                  # what the scene asks for, found wrong once solved (ask.find)
+        raise UserError(str(e)) from None
     except IndeterminatePosition as e:
         raise UserError(f"{study.scene.path}: {_located(study, e)}", EXIT_SINGULAR) from None
     except ConstructionError as e:
@@ -140,14 +142,21 @@ def cmd_solve(path: Path, as_json: bool) -> int:
 
 
 def cmd_check(scenes: Sequence[Path]) -> int:
+    """Check every scene; a scene that cannot be read or solved is reported in one line and the others are
+    still checked (as render does).  Exit: the worst of 1 (disagreement), 3 (singular), 2 (bad input)."""
     status = 0
     for path in scenes:
-        study = _solve(_study(path))
+        try:
+            study = _solve(_study(path))
+        except UserError as e:
+            print(f"drafting: error: {e}", file=sys.stderr)
+            status = max(status, e.code)
+            continue
         print(results_text(study))
         if study.comparisons and study.model is None:
             print(f"  {path}: no analytic model for this mechanism; nothing checked")
         if study.disagreements():
-            status = 1
+            status = max(status, EXIT_DISAGREE)
     return status
 
 

@@ -12,7 +12,12 @@ from constructions.errors import DegenerateInput
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan
 
+from .textsafe import cut, printable
 from .unitset import Units
+
+
+def printable_value(v) -> str:
+    return cut(printable(repr(v)), 40)
 
 SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"})
 
@@ -139,6 +144,10 @@ def read_linkage(r, units: Units) -> dict:
             raise r.fail("input.tip_speed", "is a speed: give it positive and set sense = \"cw\" or \"ccw\"")
         omega = speed / crank.length
     if sense is not None:
+        if "omega" in inp and omega != 0 and (omega > 0) != (sense == "ccw"):
+            raise r.fail("input.sense", f"says {sense} but omega = {printable_value(inp['omega'])} turns "
+                                        f"{'counter-clockwise' if omega > 0 else 'clockwise'}; give omega "
+                                        f"positive with a sense, or signed without one")
         omega = abs(omega) if sense == "ccw" else -abs(omega)
     if omega == 0 or not math.isfinite(omega):
         raise r.fail("input", "the crank must turn: omega or tip_speed must not be zero")
@@ -153,7 +162,9 @@ def read_linkage(r, units: Units) -> dict:
     try:
         assembly_plan(m)
     except DegenerateInput as e:
-        key = "assembly" if "branch" in str(e) or "assemblies" in str(e) else "link"
+        text = str(e)
+        key = ("assembly" if "branch" in text or "assemblies" in text else
+               "frame" if "is not a fixed pivot (if it is one" in text else "link")
         raise r.fail(key, str(e)) from None
     return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha}
 

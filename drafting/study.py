@@ -17,7 +17,7 @@ from constructions.quantities import key as quantity_key
 from constructions.record import Construction
 
 from .families import Family, family
-from .scene import Scene
+from .scene import Scene, SceneError
 from .unitset import direction_deg
 
 
@@ -94,6 +94,12 @@ class Study:
             return []
         rows = compare(measured, self.family.analytic(self), self.family.scales(self))
         if self.scene.find is not None:
+            have = {quantity_key(r.name) for r in rows}
+            unknown = [f for f in self.scene.find if quantity_key(f) not in have]
+            if unknown:
+                names = ", ".join(display_name(r.name) for r in rows[:24]) + (", ..." if len(rows) > 24 else "")
+                raise SceneError(self.scene.path, "ask.find", f"{unknown[0]!r} is not a quantity this scene "
+                                                              f"measures; it measures {names}")
             wanted = {quantity_key(f) for f in self.scene.find}
             rows = [r for r in rows if quantity_key(r.name) in wanted]
         return rows

@@ -324,3 +324,33 @@ def test_sheet_of_a_scaled_mechanism_keeps_its_drawing(factor, unit, expect, tmp
     assert code == 0, err
     svg = (tmp_path / "scene.svg").read_text()
     assert expect in svg and "velocity 1 mm = 10 mm/s" in svg
+
+
+# -- small bugs a new user met (issue 11) ------------------------------------------------------------------
+
+def test_a_typo_in_find_is_named_not_dropped(tmp_path, capsys):
+    p = write(tmp_path, EXAMPLE.replace('analyses = ["velocity"]', 'analyses = ["velocity"]\nfind = ["V_C", "V_X"]'))
+    code, out, err = run(["solve", str(p)], capsys)
+    assert code == 2 and "ask.find: 'V_X' is not a quantity this scene measures; it measures V_B" in err
+
+
+def test_a_signed_omega_against_its_sense_is_refused(tmp_path, capsys):
+    p = write(tmp_path, EXAMPLE.replace('tip_speed = "500 mm/s"', 'omega = "-120 rpm"'))
+    assert 'sense = "ccw"' in p.read_text()
+    code, out, err = run(["solve", str(p)], capsys)
+    assert code == 2 and "input.sense: says ccw but omega = '-120 rpm' turns clockwise" in err
+    p = write(tmp_path, EXAMPLE.replace('tip_speed = "500 mm/s"', 'omega = "120 rpm"'))
+    assert run(["solve", str(p)], capsys)[0] == 0          # agreeing sign and sense are fine
+
+
+def test_check_goes_on_past_a_bad_scene(tmp_path, capsys):
+    code, out, err = run(["check", str(tmp_path / "missing.toml"), str(builtin_example())], capsys)
+    assert code == 2 and err.count("\n") == 1 and "missing.toml: no such scene file" in err
+    assert "agree to 1e-9 relative" in out                  # the good scene was still checked
+
+
+def test_an_undeclared_fixed_pivot_is_named(tmp_path, capsys):
+    text = (GALLERY / "notes-velocity-example-2.toml").read_text()
+    p = write(tmp_path, "\n".join(l for l in text.splitlines() if not l.startswith("O2 = [")))
+    code, out, err = run(["solve", str(p)], capsys)
+    assert code == 2 and "frame: " in err and "O2 is on link 3 only and is not a fixed pivot" in err
