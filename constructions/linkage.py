@@ -389,8 +389,8 @@ def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
                       and j != tip and j in missing]
         if f > 1 and loose_ends:
             j = loose_ends[0]
-            loose = (f"; {j} is on link {on_links[j][0]} only and is not a fixed pivot (if it is one, declare "
-                     f"it with the frame)")
+            loose = (f"; {j} is held by link {on_links[j][0]} only: join it to another link, put it on a "
+                     f"slider, or declare it a fixed pivot")
         raise DegenerateInput(f"the mechanism has {f} degrees of freedom ({working}); a crank drives only a "
                               f"mechanism with one{loose}")
     if missing:

@@ -144,10 +144,10 @@ def read_linkage(r, units: Units) -> dict:
             raise r.fail("input.tip_speed", "is a speed: give it positive and set sense = \"cw\" or \"ccw\"")
         omega = speed / crank.length
     if sense is not None:
-        if "omega" in inp and omega != 0 and (omega > 0) != (sense == "ccw"):
-            raise r.fail("input.sense", f"says {sense} but omega = {printable_value(inp['omega'])} turns "
-                                        f"{'counter-clockwise' if omega > 0 else 'clockwise'}; give omega "
-                                        f"positive with a sense, or signed without one")
+        # a magnitude with a sense is fine; a negative omega (clockwise) said to turn ccw is a contradiction
+        if "omega" in inp and omega < 0 and sense == "ccw":
+            raise r.fail("input.sense", f"says ccw but omega = {printable_value(inp['omega'])} turns clockwise; "
+                                        f"give omega positive with a sense, or signed without one")
         omega = abs(omega) if sense == "ccw" else -abs(omega)
     if omega == 0 or not math.isfinite(omega):
         raise r.fail("input", "the crank must turn: omega or tip_speed must not be zero")
@@ -163,8 +163,7 @@ def read_linkage(r, units: Units) -> dict:
         assembly_plan(m)
     except DegenerateInput as e:
         text = str(e)
-        key = ("assembly" if "branch" in text or "assemblies" in text else
-               "frame" if "is not a fixed pivot (if it is one" in text else "link")
+        key = "assembly" if "branch" in text or "assemblies" in text else "link"
         raise r.fail(key, str(e)) from None
     return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha}
 
