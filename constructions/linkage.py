@@ -27,7 +27,7 @@ from .formatting import Formatter, si_format
 from .tolerance import scene_size
 from .geometry import (Circle, Contact, Intersection, Line, Tolerance, Vec, intersect_circles,
                        intersect_line_circle, intersect_lines)
-from .record import (Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role, Segment,
+from .record import (AngleMark, Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role, Segment,
                      StepKind, Value)
 
 
@@ -496,10 +496,19 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
         if isinstance(step, CrankTip):
             tip = pos[step.pivot] + Vec.polar(step.link.length, angle)
             pos[step.tip] = tip
+            # the crank angle dimensioned as a drafter would: from +x, counter-clockwise, to the crank
+            turn = math.remainder(angle, 2 * math.pi)
+            marks = []
+            if abs(turn) > 1e-6:
+                r_mark = 0.45 * step.link.length
+                marks = [Segment("crank angle datum", Role.DIMENSION, Diagram.SPACE, pos[step.pivot],
+                                 pos[step.pivot] + Vec(1.4 * r_mark, 0.0)),
+                         AngleMark("crank angle", Role.DIMENSION, Diagram.SPACE, pos[step.pivot], r_mark, 0.0, turn,
+                                   "$angle")]
             rec = rec.then(
                 f"Draw the crank {step.link.label} (link {step.link.number}) at $angle.",
                 *bar(step.link, step.pivot, step.tip),
-                Point(f"joint {step.tip}", Role.LABEL, Diagram.SPACE, tip, step.tip),
+                Point(f"joint {step.tip}", Role.LABEL, Diagram.SPACE, tip, step.tip), *marks,
                 values={"angle": Value("angle", angle)}, kind=StepKind.GIVEN)
         elif isinstance(step, TwoCircles):
             ca = Circle(pos[step.first], step.radius_a or step.link_a.length)
