@@ -423,10 +423,10 @@ def draw_angle_mark(e: AngleMark, ctx: DrawContext) -> None:
     ctx.d.hard.append(Rect.bounding(head.points))
     words = ctx.text(e, e.text)
     if words:
+        # the value is a label at the middle of the arc: the label placer keeps it off the lines around
+        # (a short crank, a lever crossing the arc) as it does every other label
         mid = e.start_angle + span / 2
-        hw, hh = _text_half(words)
-        reach = abs(math.cos(mid)) * hw + abs(math.sin(mid)) * hh + 1.0
-        _boxed_text(ctx, at(mid, r + reach), words, e.name)
+        ctx.d.labels.append(LabelReq("point", words, at(mid), True, e.name, r0=0.6))
 
 
 @drawer(Note, points=lambda e: (e.at,))
