@@ -186,10 +186,10 @@ def test_angle_mark_arc_arrow_and_text():
     (head,) = [c for c in d.commands if isinstance(c, Polygon)]
     end = (20 * math.cos(math.radians(60)), -20 * math.sin(math.radians(60)))
     assert head.points[0] == pytest.approx(end)
-    (t,) = [c for c in d.commands if isinstance(c, Text)]
-    assert t.plain == "\u03b8 = 60\u00b0"
-    cx, cy = t.box.center
-    assert math.hypot(cx, cy) > 20.0 and cy < 0                     # outside the arc, above the vertex
+    # the value is a mandatory label at the middle of the arc, placed by the label placer off the lines
+    (req,) = [r for r in d.labels if r.name == "theta"]
+    assert req.markup == "\u03b8 = 60\u00b0" and req.mandatory
+    assert req.anchor == pytest.approx((20 * math.cos(math.radians(30)), -20 * math.sin(math.radians(30))))
 
 
 def test_note_on_a_white_ground():
