@@ -22,14 +22,14 @@ from dataclasses import dataclass
 from typing import Mapping
 
 from ..errors import DegenerateInput
-from ..geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
-from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles,
+from ..geometry import ORIGIN, Line, Tolerance, Vec
+from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough,
                        TwoLines, assembly_plan, slide_line)
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
-from .common import (SINGULAR_SINE, WARN_SINE, joined, image_name, image_point, near_singular_warning,
-                     rounding_estimate, sense, singular_position)
+from .common import (SINGULAR_SINE, PolygonDrawing, image_name, image_point, joined, rounding_estimate,
+                     sense)
 from .velocity import VelocityAnalysis
 
 PRIME = "'"
@@ -112,11 +112,7 @@ def acceleration_polygon(m: Mechanism, va: VelocityAnalysis, alpha: float = 0.0,
     crank = plan[0]
     assert isinstance(crank, CrankTip)
     poly = _Polygon(m, va, crank, alpha)
-    for step in plan[1:]:
-        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines)):
-            poly.dyad(step)
-        elif isinstance(step, FixedToLink):
-            poly.image(step)
+    poly.draw_plan(plan)
     return poly.analysis(scale)
 
 
@@ -124,8 +120,10 @@ def _a(value: float) -> Value:
     return Value("acceleration", value)
 
 
-class _Polygon:
+class _Polygon(PolygonDrawing):
     """The acceleration polygon while it is drawn."""
+
+    what = "acceleration polygon"
 
     def __init__(self, m: Mechanism, va: VelocityAnalysis, crank: CrankTip, alpha: float) -> None:
         self.m, self.va, self.pose, self.crank, self.alpha = m, va, va.pose, crank, alpha
@@ -195,15 +193,6 @@ class _Polygon:
         r = pos[point] - pos[k]
         w = self.va.angular[number]
         return self.acc[k] + r.perp() * self._alpha_of(number) - r * (w * w)
-
-    def _close(self, step, trials: list[Line]) -> Vec:
-        hit = intersect_lines(trials[0], trials[1], self.tol)
-        if hit.contact is not Contact.CROSSING:
-            raise singular_position(self.m, step, self.pose, hit.condition, "acceleration polygon")
-        self.cond[step.joint] = hit.condition
-        if hit.condition < WARN_SINE:
-            self.warnings.append(near_singular_warning(self.m, step, self.pose, hit.condition, "acceleration polygon"))
-        return hit.points[0]
 
     def _coriolis(self, slot_link: int, v_rel: Vec, start: Vec, name: str, moving: str, frame_point: str,
                   eq) -> Vec:

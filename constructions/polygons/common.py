@@ -8,8 +8,8 @@ from __future__ import annotations
 import math
 
 from ..errors import DegenerateInput, IndeterminatePosition
-from ..geometry import Line, Vec
-from ..linkage import CrankTip, Mechanism, Pose, TwoCircles, describe_angle
+from ..geometry import Contact, Line, Vec, intersect_lines
+from ..linkage import CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, describe_angle
 
 SINGULAR_SINE = 1e-4
 """Trial lines crossing at a sine below this mark a singular position (toggle, limit, change point).
@@ -167,3 +167,30 @@ def image_point(P: Vec, Q: Vec, D: Vec, ip: Vec, iq: Vec) -> tuple[Vec, float, f
     u = pq.cross(pd) / pq.dot(pq)
     side = iq - ip
     return ip + side * t + side.perp() * u, t, u
+
+
+class PolygonDrawing:
+    """What the velocity and acceleration polygons share while they are drawn: the walk over the
+    assembly plan (each dyad gives one vector equation, each point placed by its link an image) and the
+    crossing of two trial lines, named as a singular position when they do not cross and warned about
+    near one.  A subclass sets ``what`` ("velocity polygon") and has ``m``, ``pose``, ``tol``, ``cond``
+    and ``warnings``, and draws ``dyad(step)`` and ``image(step)``."""
+
+    what = "polygon"
+
+    def draw_plan(self, plan) -> None:
+        for step in plan[1:]:
+            if isinstance(step, FixedToLink):
+                self.image(step)
+            elif not isinstance(step, CrankTip):
+                self.dyad(step)
+
+    def _close(self, step, trials) -> Vec:
+        """The crossing of two trial lines for ``step.joint``, recorded with its condition."""
+        hit = intersect_lines(trials[0], trials[1], self.tol)
+        if hit.contact is not Contact.CROSSING:
+            raise singular_position(self.m, step, self.pose, hit.condition, self.what)
+        self.cond[step.joint] = hit.condition
+        if hit.condition < WARN_SINE:
+            self.warnings.append(near_singular_warning(self.m, step, self.pose, hit.condition, self.what))
+        return hit.points[0]

@@ -17,14 +17,14 @@ from dataclasses import dataclass
 from typing import Mapping
 
 from ..errors import DegenerateInput
-from ..geometry import ORIGIN, Contact, Line, Tolerance, Vec, intersect_lines
-from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles,
+from ..geometry import ORIGIN, Line, Tolerance, Vec
+from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough,
                        TwoLines, assembly_plan, slide_line)
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
                       TrialLine, Value, VectorEquation)
-from .common import (SINGULAR_SINE, WARN_SINE, joined, dead_centre, image_name, image_point, near_singular_warning,
-                     rounding_estimate, sense, singular_position)
+from .common import (SINGULAR_SINE, WARN_SINE, PolygonDrawing, dead_centre, image_name, image_point, joined,
+                     rounding_estimate, sense)
 
 
 @dataclass(frozen=True)
@@ -85,11 +85,7 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, scale: float | N
     crank = plan[0]
     assert isinstance(crank, CrankTip)
     poly = _Polygon(m, pose, crank, omega)
-    for step in plan[1:]:
-        if isinstance(step, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines)):
-            poly.dyad(step)
-        elif isinstance(step, FixedToLink):
-            poly.image(step)
+    poly.draw_plan(plan)
     return poly.analysis(scale)
 
 
@@ -101,8 +97,10 @@ def _w(value: float) -> Value:
     return Value("angular velocity", abs(value))
 
 
-class _Polygon:
+class _Polygon(PolygonDrawing):
     """The polygon while it is drawn: image points found so far, measured values, pending steps."""
+
+    what = "velocity polygon"
 
     def __init__(self, m: Mechanism, pose: Pose, crank: CrankTip, omega: float) -> None:
         self.m, self.pose, self.crank, self.omega = m, pose, crank, omega
@@ -146,15 +144,6 @@ class _Polygon:
         pos = self.pose.positions
         x = next(x for x in self.m.points_of(number) if x in self.vel)
         return self.vel[x] + (pos[point] - pos[x]).perp() * self._omega_of(number)
-
-    def _close(self, step, trials: list[Line]) -> Vec:
-        hit = intersect_lines(trials[0], trials[1], self.tol)
-        if hit.contact is not Contact.CROSSING:
-            raise singular_position(self.m, step, self.pose, hit.condition, "velocity polygon")
-        self.cond[step.joint] = hit.condition
-        if hit.condition < WARN_SINE:
-            self.warnings.append(near_singular_warning(self.m, step, self.pose, hit.condition, "velocity polygon"))
-        return hit.points[0]
 
     def dyad(self, step: Dyad) -> None:
         """One vector equation, V_C = V_B + V_CB: two trial lines and their crossing c."""
