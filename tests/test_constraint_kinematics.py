@@ -30,65 +30,16 @@ from constructions.errors import CannotAssemble, DegenerateInput, IndeterminateP
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan, locate
 from constructions.vector_loops import chain_solution
+from mechanisms import (quick_return, rocker_with_slot, slanted_slot, ternary_posed_by_other_points,
+                        watt_six_bar)
 
 MM = 1e-3
 EPS = float(np.finfo(np.float64).eps)
 
 
 # -- mechanisms -------------------------------------------------------------------------------------
-# as tests/test_sliding_and_ternary.py and tests/test_vector_loops.py build them (copied, so that this
-# check does not move when those files do)
-
-def quick_return(offset=0.0, branch=1, block=True, ram=True):
-    """Slotted-lever quick-return: crank O1A (link 1) carries a block (link 2) sliding in the slot of the
-    lever O2P (link 3); the lever drives the ram Q (block 5) on a fixed guide through PQ (link 4)."""
-    links = [Link(1, ("O1", "A"), 0.05), Link(3, ("O2", "P"), 0.25)]
-    slides = [Slide(2 if block else None, "A", Vec(0, 0), 0.0, on=3, offset=offset)]
-    branches = {"A": Branch(branch, ("O2",))}
-    if ram:
-        links.append(Link(4, ("P", "Q"), 0.1))
-        slides.append(Slide(5, "Q", Vec(0, 0.24), 0.0))
-        branches["Q"] = Branch(1, ("P",))
-    return Mechanism({"O1": Vec(0, 0.1), "O2": Vec(0, 0)}, tuple(links), tuple(slides), (), 1, branches)
-
-
-def rocker_with_slot():
-    """A four-bar O1-B-C-O2 whose rocker (link 3) has a slot along it; a block (link 6) pinned at D on the
-    rocker O3D (link 5) slides in that slot."""
-    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.1, 0.0), "O3": Vec(0.12, 0.02)},
-                     (Link(1, ("O1", "B"), 0.03), Link(2, ("B", "C"), 0.1), Link(3, ("O2", "C"), 0.08),
-                      Link(5, ("O3", "D"), 0.06)),
-                     (Slide(6, "D", Vec(0, 0), 0.0, on=3),), (), 1,
-                     {"C": Branch(1, ("B", "O2")), "D": Branch(1, ("O3",))})
-
-
-def slanted_slot():
-    """The block meeting a moving slot, with the slot turned 20 deg from the rocker and 8 mm off it."""
-    m = rocker_with_slot()
-    return Mechanism(m.ground, m.links, (Slide(6, "D", Vec(0, 0), math.radians(20), on=3, offset=0.008),),
-                     (), 1, m.branches)
-
-
-def watt_six_bar():
-    """Watt I: four-bar O1-B-C-O2 with a ternary coupler BCE and a ternary rocker O2CF; the dyad E-G-F
-    (links 4 and 5) hangs from the two ternary links."""
-    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.09, 0.0)},
-                     (Link(1, ("O1", "B"), 0.025), Link(2, ("B", "C"), 0.08), Link(3, ("O2", "C"), 0.06),
-                      Link(4, ("E", "G"), 0.07), Link(5, ("F", "G"), 0.06)),
-                     (), (Attached("E", 2, "B", 0.05, math.radians(35)),
-                          Attached("F", 3, "O2", 0.05, math.radians(-40))), 1,
-                     {"C": Branch(1, ("B", "O2")), "G": Branch(1, ("E", "F"))})
-
-
-def ternary_posed_by_other_points():
-    """The ternary link 2 (base joints B, C, third point E) is found through E (circle of the rocker O2E)
-    and only then gives C, which drives the slider D through CD."""
-    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.08, 0.05)},
-                     (Link(1, ("O1", "B"), 0.02), Link(2, ("B", "C"), 0.07), Link(3, ("O2", "E"), 0.05),
-                      Link(4, ("C", "D"), 0.08)),
-                     (Slide(5, "D", Vec(0, -0.02), 0.0),), (Attached("E", 2, "B", 0.06, math.radians(30)),), 1,
-                     {"E": Branch(1, ("B", "O2")), "D": Branch(1, ("C",))})
-
+# the slot and ternary mechanisms come from tests/mechanisms.py (shared with test_sliding_and_ternary.py);
+# the compound ones as tests/test_vector_loops.py builds them
 
 def toggle_linkage(c_branch: int = -1, d_branch: int = 1) -> Mechanism:
     """The notes' toggle linkage: four-bar O1-B-C-O2 driving slider D."""

@@ -17,60 +17,8 @@ from constructions.linkage import (Attached, Branch, Link, Mechanism, SlotThroug
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Diagram, Role
-
-
-def quick_return(offset=0.0, branch=1, block=True, ram=True):
-    """Slotted-lever quick-return: crank O1A (link 1) carries a block (link 2) sliding in the slot of the
-    lever O2P (link 3); the lever drives the ram Q (block 5) on a fixed guide through PQ (link 4)."""
-    links = [Link(1, ("O1", "A"), 0.05), Link(3, ("O2", "P"), 0.25)]
-    slides = [Slide(2 if block else None, "A", Vec(0, 0), 0.0, on=3, offset=offset)]
-    branches = {"A": Branch(branch, ("O2",))}
-    if ram:
-        links.append(Link(4, ("P", "Q"), 0.1))
-        slides.append(Slide(5, "Q", Vec(0, 0.24), 0.0))
-        branches["Q"] = Branch(1, ("P",))
-    return Mechanism({"O1": Vec(0, 0.1), "O2": Vec(0, 0)}, tuple(links), tuple(slides), (), 1, branches)
-
-
-def rocker_with_slot():
-    """A four-bar O1-B-C-O2 whose rocker (link 3) has a slot along it; a block (link 6) pinned at D on the
-    rocker O3D (link 5) slides in that slot: D is where the circle about O3 meets the moving slot."""
-    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.1, 0.0), "O3": Vec(0.12, 0.02)},
-                     (Link(1, ("O1", "B"), 0.03), Link(2, ("B", "C"), 0.1), Link(3, ("O2", "C"), 0.08),
-                      Link(5, ("O3", "D"), 0.06)),
-                     (Slide(6, "D", Vec(0, 0), 0.0, on=3),), (), 1,
-                     {"C": Branch(1, ("B", "O2")), "D": Branch(1, ("O3",))})
-
-
-def watt_six_bar():
-    """Watt I: four-bar O1-B-C-O2 with a ternary coupler BCE and a ternary rocker O2CF; the dyad E-G-F
-    (links 4 and 5) hangs from the two ternary links."""
-    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.09, 0.0)},
-                     (Link(1, ("O1", "B"), 0.025), Link(2, ("B", "C"), 0.08), Link(3, ("O2", "C"), 0.06),
-                      Link(4, ("E", "G"), 0.07), Link(5, ("F", "G"), 0.06)),
-                     (), (Attached("E", 2, "B", 0.05, math.radians(35)),
-                          Attached("F", 3, "O2", 0.05, math.radians(-40))), 1,
-                     {"C": Branch(1, ("B", "O2")), "G": Branch(1, ("E", "F"))})
-
-
-def ternary_posed_by_other_points():
-    """Stephenson-like: the ternary link 2 (base joints B, C, third point E) is found through E (circle of
-    the rocker O2E) and only then gives C, which drives the slider D through CD."""
-    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.08, 0.05)},
-                     (Link(1, ("O1", "B"), 0.02), Link(2, ("B", "C"), 0.07), Link(3, ("O2", "E"), 0.05),
-                      Link(4, ("C", "D"), 0.08)),
-                     (Slide(5, "D", Vec(0, -0.02), 0.0),), (Attached("E", 2, "B", 0.06, math.radians(30)),), 1,
-                     {"E": Branch(1, ("B", "O2")), "D": Branch(1, ("C",))})
-
-
-def slot_and_guide(pin=False):
-    """A PRP dyad: a four-bar whose rocker (link 3) has a slot along it; the joint J is carried by a block
-    (link 5, or a bare pin) in that slot and by a block (link 6) on a fixed vertical guide -- J is where
-    the slot and the guide cross."""
-    return Mechanism({"O1": Vec(0, 0), "O2": Vec(0.1, 0.0)},
-                     (Link(1, ("O1", "B"), 0.03), Link(2, ("B", "C"), 0.1), Link(3, ("O2", "C"), 0.08)),
-                     (Slide(5, "J", Vec(0, 0), 0.0, on=3), Slide(6, "J", Vec(0.07, 0.0), math.pi / 2)), (), 1,
-                     {"C": Branch(1, ("B", "O2"))})
+from mechanisms import (quick_return, rocker_with_slot, slot_and_guide, ternary_posed_by_other_points,
+                        watt_six_bar)
 
 
 MECHANISMS = {"quick-return": quick_return, "slot meets a guide (PRP)": slot_and_guide, "quick-return, offset slot": lambda: quick_return(0.012),
