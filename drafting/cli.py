@@ -101,6 +101,8 @@ def results_text(study: Study) -> str:
         how = model if model == "constraint equations" else f"{model} vector loop"
         lines.append(f"  graphical vs analytic ({how}): "
                      + (agree if not bad else f"{len(bad)} DISAGREE beyond their tolerance"))
+    for n in study.notes:
+        lines.append(f"  note: {n}")
     for w in study.warnings:
         lines.append(f"  warning: {w}")
     return "\n".join(lines)

@@ -53,6 +53,8 @@ class Family:
     read: Callable[[Any, Any], dict] = field(default=lambda reader, units: {})
     """``read(reader, units)`` reads the family's sections with the shared reader (whose errors name the
     file and key) and returns the Scene fields of its state (``mechanism``/``angle``/... or ``model``)."""
+    notes: Callable[[Any], tuple[str, ...]] = field(default=lambda study: ())
+    """What the sheet and the results say about the scene besides its warnings (a linkage's class)."""
     default_analyses: tuple[str, ...] = ()
     planned: tuple[str, ...] = ()
     """Analyses announced for this family but not built yet (a scene asking for one is told so)."""

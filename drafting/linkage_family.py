@@ -3,8 +3,10 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
+from constructions.classify import classify_four_bar
 from constructions.check import NotModelled, analytic_solution, analytic_values
 from constructions.linkage import assembly_plan, locate
 from constructions.polygons.acceleration import acceleration_polygon
@@ -13,6 +15,21 @@ from constructions.record import Construction
 
 from .families import Analysis, Family, register
 from .linkage_scene import SECTIONS, read_linkage
+
+
+def _classification(study):
+    return classify_four_bar(study.scene.mechanism)
+
+
+def _transmission_at_pose(study) -> float | None:
+    """The transmission angle (deg) of the crank's four-bar at the drawn pose, between coupler and rocker."""
+    k = study.get("classification")
+    if k is None:
+        return None
+    P = study.get("position").positions
+    _, b, c, o2 = k.joints
+    u, v = P[b] - P[c], P[o2] - P[c]
+    return math.degrees(abs(math.atan2(u.cross(v), u.dot(v))))
 
 
 def _position(study):
@@ -80,6 +97,21 @@ def _construction(study) -> Construction:
     return c
 
 
+def _notes(study) -> tuple[str, ...]:
+    w: list[str] = []
+    k = study.get("classification")
+    if k is not None:
+        line = k.summary()
+        if k.transmission_min is not None:
+            line += (f"; transmission angle {math.degrees(k.transmission_min):.1f}..."
+                     f"{math.degrees(k.transmission_max):.1f} deg over the turn (40...140 deg is the usual range)")
+        mu = _transmission_at_pose(study)
+        if mu is not None:
+            line += f", {mu:.1f} deg as drawn"
+        w.append(line[:1].upper() + line[1:] + ".")
+    return tuple(w)
+
+
 def _warnings(study) -> tuple[str, ...]:
     w: list[str] = []
     for name in ("velocity", "acceleration"):
@@ -107,6 +139,20 @@ def _json(study) -> dict[str, Any]:
     m = s.mechanism
     out: dict[str, Any] = {}
     pose = study.get("position")
+    k = study.get("classification")
+    if k is not None:
+        deg = math.degrees
+        out["classification"] = {
+            "joints": list(k.joints), "closes": k.closes, "grashof": k.grashof, "kind": k.kind,
+            "turns_fully": list(k.turns_fully), "mobility": k.mobility[0],
+            "transmission_angle_deg": {
+                "as_drawn": _transmission_at_pose(study),
+                "min": deg(k.transmission_min) if k.transmission_min is not None else None,
+                "max": deg(k.transmission_max) if k.transmission_max is not None else None,
+                "min_at_crank_deg": deg(k.transmission_min_at) % 360 if k.transmission_min_at is not None else None,
+                "max_at_crank_deg": deg(k.transmission_max_at) % 360 if k.transmission_max_at is not None else None},
+            "limit_positions": [{"extended": lp.extended, "crank_angle_deg": deg(lp.crank_angle) % 360,
+                                 "rocker_angle_deg": deg(lp.rocker_angle) % 360} for lp in k.limit_positions]}
     out["position"] = {n: [u.convert("length", p.x), u.convert("length", p.y)] for n, p in pose.positions.items()}
     v = study.result("velocity")
     if v is not None:
@@ -130,7 +176,8 @@ def _json(study) -> dict[str, Any]:
 LINKAGE = register(Family(
     kind="linkage",
     analyses={
-        "position": Analysis("position", (), _position),
+        "classification": Analysis("classification", (), _classification),
+        "position": Analysis("position", ("classification",), _position),
         "velocity": Analysis("velocity", ("position",), _velocity),
         "acceleration": Analysis("acceleration", ("velocity",), _acceleration),
         "analytic": Analysis("analytic", ("position",), _analytic, label="analytic check"),
@@ -143,6 +190,7 @@ LINKAGE = register(Family(
     warnings=_warnings,
     model_name=_model,
     scales=_scales,
+    notes=_notes,
     sections=SECTIONS,
     read=read_linkage,
     default_analyses=("velocity",),

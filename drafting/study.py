@@ -87,6 +87,11 @@ class Study:
     def warnings(self) -> tuple[str, ...]:
         return self.family.warnings(self)
 
+    @property
+    def notes(self) -> tuple[str, ...]:
+        """What the family says about the scene besides its warnings (e.g. the linkage's class)."""
+        return self.family.notes(self)
+
     @cached_property
     def comparisons(self) -> list[Comparison]:
         measured = self.family.measured(self)
@@ -144,6 +149,7 @@ class Study:
                 "agrees": (not self.disagreements()) if self.model else None,
                 "rows": [{"quantity": c.name, "relative_difference": c.relative, "tolerance": c.tolerance,
                           "agrees": c.agrees} for c in self.comparisons]}
+        out["notes"] = list(self.notes)
         out["warnings"] = list(self.warnings)
         out["analyses"] = list(self.ran)
         return out

@@ -19,7 +19,7 @@ def sheets_for(study: Study):
     from .sheet import ResultRow, SheetInfo, compose_sheets
     s = study.scene
     info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
-                     date=_dt.date.today().isoformat(), units=s.units, notes=study.warnings)
+                     date=_dt.date.today().isoformat(), units=s.units, notes=study.notes + study.warnings)
     rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
     return compose_sheets(study.construction, info, rows)
 

@@ -134,7 +134,7 @@ def test_velocity_scene_builds_nothing_else(capsys):
     code, out, err = run(["solve", str(builtin_example()), "--json"], capsys)
     assert code == 0
     data = json.loads(out)
-    assert data["analyses"] == ["position", "velocity", "analytic check"]
+    assert data["analyses"] == ["classification", "position", "velocity", "analytic check"]
     assert "acceleration" not in data and "angular_acceleration" not in data and "force" not in out
     assert data["velocity"]["V_C"]["magnitude"] == pytest.approx(568.536, abs=1e-3)
     assert data["angular_velocity"]["omega_2"]["sense"] == "cw"
@@ -147,10 +147,10 @@ def test_position_only_scene_draws_no_polygon(tmp_path, capsys):
     assert study.velocity is None and study.analytic is None
     assert study.ran == []                    # nothing computed until asked
     study.construction
-    assert study.ran == ["position"]
+    assert study.ran == ["classification", "position"]     # the class is cheap and always said
     code, out, err = run(["solve", str(p), "--json"], capsys)
     data = json.loads(out)
-    assert data["analyses"] == ["position"] and "velocity" not in data
+    assert data["analyses"] == ["classification", "position"] and "velocity" not in data
 
 
 def test_find_selects_rows():

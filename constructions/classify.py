@@ -1,0 +1,144 @@
+"""What kind of linkage a mechanism is, before any polygon is drawn (notes, "Condition to form a 4-bar
+linkage", "Grashof condition", "Types of linkages", "Transmission angle", "Limiting position").
+
+For the four-bar the crank drives -- frame O1O2 (length g), crank O1B (a), coupler BC (b), rocker O2C
+(c) -- with s and l the shortest and longest of the four and p, q the others:
+
+* it closes when l < s + p + q (the notes write <=; at equality the four links only lie flat, one
+  position, no motion);
+* Grashof when s + l < p + q, a change point when s + l = p + q (the branches meet where all four links
+  line up), non-Grashof (a triple rocker) when s + l > p + q;
+* a Grashof linkage is a crank-rocker when the shortest link is the crank (next to the frame), a drag
+  link (double crank) when it is the frame, a double rocker when it is the coupler (opposite the frame),
+  and a rocker-crank when it is the rocker (the crank then rocks and the output turns);
+* the transmission angle mu, between coupler and rocker, follows from the law of cosines in the two
+  triangles that share the diagonal BO2:  BO2^2 = a^2 + g^2 - 2 a g cos(theta) = b^2 + c^2 - 2 b c cos(mu),
+  theta the crank angle from the frame line O1 -> O2.  cos(mu) falls as cos(theta) does, so for a crank
+  that turns fully the extremes are at theta = 0 (mu_min, crank along the frame towards O2) and
+  theta = 180 deg (mu_max) -- "when the crank aligns with the fixed link", as the notes say;
+* the rocker's limit positions are where crank and coupler are in line (O1C = a + b extended, |b - a|
+  folded): found here by construction, as circles about O1 and O2 crossing.
+
+Lengths are compared with the scene's one tolerance (constructions.tolerance), so a designed change
+point reads as one.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .geometry import Circle, Contact, Vec, intersect_circles
+from .linkage import CrankTip, Mechanism, TwoCircles, assembly_plan, mobility
+
+
+@dataclass(frozen=True)
+class LimitPosition:
+    """The rocker at a limit of its swing: crank and coupler in line, ``extended`` or folded."""
+
+    extended: bool
+    crank_angle: float          # rad, CCW from +x
+    rocker_angle: float         # rad, direction O2 -> C, CCW from +x
+    C: Vec
+
+
+@dataclass(frozen=True)
+class FourBarClass:
+    """The classification of the four-bar the crank drives (frame, crank, coupler, rocker)."""
+
+    joints: tuple[str, str, str, str]                # O1, B, C, O2
+    lengths: tuple[float, float, float, float]       # frame g, crank a, coupler b, rocker c
+    closes: bool
+    grashof: str                                     # "Grashof", "change point", "non-Grashof"
+    kind: str                                        # the notes' five types (+ rocker-crank)
+    turns_fully: tuple[str, ...]                     # of crank and rocker, those that turn 360 deg
+    transmission_min: float | None                   # rad, over the crank's motion
+    transmission_max: float | None
+    transmission_min_at: float | None                # crank angle (rad, from +x) where it occurs
+    transmission_max_at: float | None
+    limit_positions: tuple[LimitPosition, ...]
+    mobility: tuple[int, str]
+
+    def summary(self) -> str:
+        g, a, b, c = self.lengths
+        s = f"{self.grashof} {self.kind}" if self.grashof == "Grashof" else f"{self.kind} ({self.grashof})"
+        if not self.closes:
+            return f"the links cannot form a four-bar: the longest is not shorter than the other three together"
+        turns = ", ".join(self.turns_fully) if self.turns_fully else "no link"
+        return f"{s}; {turns} turns fully"
+
+
+def _same(x: float, y: float, tol: float) -> bool:
+    return abs(x - y) <= tol
+
+
+def classify_four_bar(m: Mechanism) -> FourBarClass | None:
+    """The class of the four-bar the crank drives, or None when the crank's first dyad is not hung from
+    the crank tip and a second fixed pivot (a slider-crank, say)."""
+    plan = assembly_plan(m)
+    crank = plan[0]
+    assert isinstance(crank, CrankTip)
+    step = next((s for s in plan if isinstance(s, TwoCircles)), None)
+    if step is None:
+        return None
+    ends = {step.first: (step.link_a, step.radius_a), step.second: (step.link_b, step.radius_b)}
+    if crank.tip not in ends:
+        return None
+    o2 = next((c for c in ends if c in m.ground), None)
+    if o2 is None:
+        return None
+    O1, O2 = m.ground[crank.pivot], m.ground[o2]
+    g, a = O1.distance_to(O2), crank.link.length
+    b, c = ends[crank.tip][1] or ends[crank.tip][0].length, ends[o2][1] or ends[o2][0].length
+    tol = m.tolerance().length
+    ls = sorted(((g, "frame"), (a, "crank"), (b, "coupler"), (c, "rocker")))
+    (s, s_name), (p, _), (q, _), (l, _) = ls
+    closes = l < s + p + q - tol
+    if _same(s + l, p + q, tol):
+        grashof, kind = "change point", "change-point linkage"
+    elif s + l < p + q:
+        grashof = "Grashof"
+        kind = {"crank": "crank-rocker", "frame": "drag link (double crank)", "coupler": "double rocker",
+                "rocker": "rocker-crank"}[s_name]
+    else:
+        grashof, kind = "non-Grashof", "triple rocker"
+    if grashof == "Grashof":
+        turns = {"crank-rocker": ("crank",), "drag link (double crank)": ("crank", "rocker"),
+                 "double rocker": (), "rocker-crank": ("rocker",)}[kind]
+    elif grashof == "change point":
+        turns = ("crank",) if s_name in ("crank", "frame") else ()
+    else:
+        turns = ()
+
+    # transmission angle over the crank's motion: cos(mu) = (b^2 + c^2 - BO2^2) / (2 b c)
+    frame_dir = (O2 - O1).angle()
+
+    def mu_at(theta_rel: float) -> float | None:
+        d2 = a * a + g * g - 2 * a * g * math.cos(theta_rel)
+        cm = (b * b + c * c - d2) / (2 * b * c)
+        return math.acos(cm) if -1 - 1e-12 <= cm <= 1 + 1e-12 else None
+
+    t_min = t_max = at_min = at_max = None
+    if closes and "crank" in turns:
+        t_min, t_max = mu_at(0.0), mu_at(math.pi)
+        at_min, at_max = frame_dir, frame_dir + math.pi
+        if t_min is not None and t_max is not None and t_min > t_max:   # an open or crossed assembly
+            t_min, t_max, at_min, at_max = t_max, t_min, at_max, at_min
+
+    # the rocker's limit positions: crank and coupler in line (O1C = a + b or |b - a|), by construction
+    limits = []
+    sign = step.branch.sign if step.branch.reference == (crank.tip, o2) else -step.branch.sign
+    if closes:
+        for extended, reach in ((True, a + b), (False, abs(b - a))):
+            if reach <= tol:
+                continue
+            hit = intersect_circles(Circle(O1, reach), Circle(O2, c), m.tolerance())
+            if hit.contact is Contact.APART:
+                continue
+            # the crossing on the scene's assembly side of the line O1 -> O2
+            C = hit.points[0] if (hit.contact is Contact.TANGENT or sign > 0) else hit.points[1]
+            along = (C - O1).angle()
+            limits.append(LimitPosition(extended, along if extended else (along if b > a else along + math.pi),
+                                        (C - O2).angle(), C))
+    return FourBarClass((crank.pivot, crank.tip, step.joint, o2), (g, a, b, c), closes, grashof, kind, turns,
+                        t_min, t_max, at_min, at_max, tuple(limits), mobility(m))

@@ -1,0 +1,99 @@
+"""The four-bar's class (notes' Grashof types), its transmission-angle extremes and the rocker's limit
+positions -- each checked against a dense analytic sweep of the same four-bar, not against the formula
+that produced it."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, assume, given, settings, strategies as st
+
+from constructions import analytic
+from constructions.classify import classify_four_bar
+from constructions.geometry import Vec
+from constructions.linkage import Branch, Link, Mechanism, Slide
+
+
+def four_bar(g, a, b, c, branch=1, frame_angle=0.0):
+    O2 = Vec.polar(g, frame_angle)
+    return Mechanism({"O1": Vec(0.0, 0.0), "O2": O2},
+                     (Link(1, ("O1", "B"), a), Link(2, ("B", "C"), b), Link(3, ("O2", "C"), c)), (), (), 1,
+                     {"C": Branch(branch, ("B", "O2"))})
+
+
+@pytest.mark.parametrize("lengths,kind,turns", [
+    ((0.10, 0.03, 0.09, 0.07), "crank-rocker", ("crank",)),
+    ((0.03, 0.06, 0.09, 0.08), "drag link (double crank)", ("crank", "rocker")),
+    ((0.08, 0.07, 0.03, 0.09), "double rocker", ()),
+    ((0.08, 0.09, 0.07, 0.03), "rocker-crank", ("rocker",)),
+    ((0.10, 0.04, 0.10, 0.04), "change-point linkage", ("crank",)),     # s + l = p + q (a parallelogram)
+    ((0.12, 0.09, 0.08, 0.07), "triple rocker", ()),                    # s + l = 0.19 > p + q = 0.17
+])
+def test_the_notes_types(lengths, kind, turns):
+    k = classify_four_bar(four_bar(*lengths))
+    assert k.closes and k.kind == kind and k.turns_fully == turns
+
+
+def test_links_that_cannot_close():
+    k = classify_four_bar(four_bar(0.30, 0.05, 0.10, 0.10))
+    assert not k.closes and "cannot form a four-bar" in k.summary()
+
+
+def test_a_slider_crank_is_not_a_four_bar():
+    m = Mechanism({"O1": Vec(0, 0)}, (Link(1, ("O1", "B"), 0.05), Link(2, ("B", "C"), 0.094)),
+                  (Slide(3, "C", Vec(0, 0), 0.0),), (), 1, {"C": Branch(1, ("B",))})
+    assert classify_four_bar(m) is None
+
+
+@st.composite
+def crank_rockers(draw):
+    a = draw(st.floats(0.01, 0.05))
+    g = draw(st.floats(0.06, 0.2))
+    b = draw(st.floats(0.06, 0.2))
+    c = draw(st.floats(0.06, 0.2))
+    assume(a + max(g, b, c) < sum(sorted((g, b, c))[:2]) * 0.98)     # Grashof with the crank shortest
+    return g, a, b, c, draw(st.sampled_from([1, -1])), draw(st.floats(-math.pi, math.pi))
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=crank_rockers())
+def test_extremes_and_limits_agree_with_a_sweep(case):
+    g, a, b, c, branch, frame_angle = case
+    m = four_bar(g, a, b, c, branch, frame_angle)
+    k = classify_four_bar(m)
+    assert k.kind == "crank-rocker"
+    th = np.linspace(-math.pi, math.pi, 20001)
+    s = analytic.four_bar(th, 1.0, crank_pivot=(0.0, 0.0), rocker_pivot=m.ground["O2"].as_tuple(), crank=a,
+                          coupler=b, rocker=c, branch=branch)
+    assert bool(np.all(s.assembles))
+    # the transmission angle at C, between C -> B and C -> O2, over the whole turn
+    ux, uy = s.Bx - s.Cx, s.By - s.Cy
+    vx, vy = m.ground["O2"].x - s.Cx, m.ground["O2"].y - s.Cy
+    mu = np.abs(np.arctan2(ux * vy - uy * vx, ux * vx + uy * vy))
+    step = 2 * math.pi / 20000
+    # the sweep samples the extremes within half a step of crank angle; mu is smooth there (its
+    # derivative is zero at an extreme), so the sampled extreme is within O(step^2) of the true one
+    assert float(mu.min()) == pytest.approx(k.transmission_min, abs=1e-6)
+    assert float(mu.max()) == pytest.approx(k.transmission_max, abs=1e-6)
+    i = int(np.argmin(mu))
+    assert math.remainder(float(th[i]) - k.transmission_min_at, 2 * math.pi) == pytest.approx(0.0, abs=2 * step)
+    # the rocker's swing ends where crank and coupler are in line: the limit positions
+    rocker = np.unwrap(s.theta3)
+    ends = sorted(lp.rocker_angle for lp in k.limit_positions)
+    lo, hi = float(rocker.min()), float(rocker.max())
+    got = sorted(math.remainder(x - lo, 2 * math.pi) + lo for x in (ends[0], ends[1]))
+    assert got[0] == pytest.approx(lo, abs=1e-6) and got[1] == pytest.approx(hi, abs=1e-6)
+    for lp in k.limit_positions:                         # crank and coupler in line there
+        B = Vec.polar(a, lp.crank_angle)
+        along = (lp.C - B).unit().cross(B.unit())
+        assert abs(along) < 1e-9
+
+
+def test_gallery_four_bar_reads_as_the_notes_would_say():
+    from drafting.scene import load_scene
+    k = classify_four_bar(load_scene("gallery/notes-velocity-example-2.toml").mechanism)
+    assert k.summary() == "Grashof crank-rocker; crank turns fully"
+    assert k.mobility[0] == 1
+    assert 0 < k.transmission_min < k.transmission_max < math.pi
