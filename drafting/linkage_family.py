@@ -102,12 +102,14 @@ def _notes(study) -> tuple[str, ...]:
     k = study.get("classification")
     if k is not None:
         line = k.summary()
-        if k.transmission_min is not None:
-            line += (f"; transmission angle {math.degrees(k.transmission_min):.1f}..."
-                     f"{math.degrees(k.transmission_max):.1f} deg over the turn (40...140 deg is the usual range)")
         mu = _transmission_at_pose(study)
+        if k.transmission_min is not None:
+            lo, hi = math.degrees(k.transmission_min), math.degrees(k.transmission_max)
+            line += f"; transmission angle {lo:.0f}-{hi:.0f} deg"
+            if lo < 40 or hi > 140:
+                line += " (the usual range is 40-140)"
         if mu is not None:
-            line += f", {mu:.1f} deg as drawn"
+            line += f", {mu:.0f} deg as drawn"
         w.append(line[:1].upper() + line[1:] + ".")
     return tuple(w)
 
