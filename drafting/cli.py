@@ -201,6 +201,15 @@ def parser() -> argparse.ArgumentParser:
                        description="Time the default sheet to SVG/PDF/PNG and the analytic sweep over "
                                    "1e3..1e7 crank angles, side by side in one run.")
     b.add_argument("--quick", action="store_true", help="fewer repeats and sizes up to 1e6")
+    w = sub.add_parser("sweep", help="a linkage over one turn of its crank (table or CSV)",
+                       description="Solve the scene's linkage over one turn of the crank, starting at the "
+                                   "scene's crank angle (analytic, vectorised); angles where it cannot be "
+                                   "assembled are gaps. Prints a summary, or writes a CSV in the scene's units.")
+    w.add_argument("scene", type=Path, metavar="SCENE")
+    g = w.add_mutually_exclusive_group()
+    g.add_argument("--steps", type=int, metavar="N", help="number of crank angles over the turn (default 72)")
+    g.add_argument("--every", metavar="ANGLE", help="one crank angle every ANGLE, e.g. 5deg or 0.1rad")
+    w.add_argument("--csv", type=Path, metavar="FILE", help="write the table as CSV (scene units)")
     return p
 
 
@@ -243,6 +252,12 @@ def _main(argv: Sequence[str] | None) -> int:
             return cmd_check(args.scenes)
         if args.command == "bench":
             return cmd_bench(args.quick)
+        if args.command == "sweep":
+            from .sweep_cmd import SweepInputError, cmd_sweep
+            try:
+                return cmd_sweep(args.scene, args.steps, args.every, args.csv)
+            except SweepInputError as e:
+                raise UserError(str(e)) from None
     except UserError as e:
         print(f"drafting: error: {e}", file=sys.stderr)
         return e.code

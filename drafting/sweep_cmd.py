@@ -1,0 +1,184 @@
+"""``drafting sweep SCENE [--steps N | --every 5deg] [--csv FILE]``: a linkage over one turn of its crank.
+
+The crank angles start at the scene's crank angle and cover one turn (N steps, default 72, or every X
+degrees or radians).  With ``--csv`` the table is written in the scene's units, units in the header,
+empty cells where the mechanism cannot be assembled (gaps), atomically (a temporary file beside the
+destination renamed into place).  Without it a short summary is printed.
+
+This module must not import :mod:`drafting.cli` (cli imports it); errors are :class:`SweepInputError`,
+which cli turns into its one-line ``drafting: error: ...`` and exit 2.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import itertools
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+
+from . import faults, limits
+from .scene import SceneError, load_scene
+from .textsafe import printable
+from .units import UnitError, to_si, unit_symbol
+
+DEFAULT_STEPS = 72
+TEMP_PREFIX = ".drafting-tmp-"
+_counter = itertools.count()
+
+
+class SweepInputError(Exception):
+    """Bad input to a sweep: one sentence (the file, the option)."""
+
+
+def crank_angles(start: float, steps: int | None, every: str | None) -> np.ndarray:
+    """One turn of crank angles from ``start`` (rad): ``steps`` equal steps, or one every ``every``
+    (a value with an angle unit; a plain number is in degrees).  Raises SweepInputError."""
+    turn = 2 * math.pi
+    if every is not None:
+        try:
+            step = to_si(every, "angle", "deg")
+        except UnitError as e:
+            raise SweepInputError(f"--every: {e}") from None
+        if not step > 0:
+            raise SweepInputError(f"--every: {printable(every)!r} is not a positive angle")
+        n = math.ceil(turn / step - 1e-9)
+        problem = limits.sweep_problem(n)
+        if problem:
+            raise SweepInputError(f"--every: {printable(every)!r} gives {problem} (use a larger --every or --steps)")
+        return start + step * np.arange(n)
+    n = DEFAULT_STEPS if steps is None else steps
+    problem = limits.sweep_problem(n)
+    if problem:
+        raise SweepInputError(f"--steps: {problem}")
+    return start + turn * np.arange(n) / n
+
+
+def run_sweep(path: Path, steps: int | None = None, every: str | None = None):
+    """(scene, sweep) for the scene file at ``path``.  Raises SweepInputError."""
+    from constructions.errors import ConstructionError
+    from constructions.sweep import sweep
+    try:
+        scene = load_scene(path)
+    except SceneError as e:
+        raise SweepInputError(str(e)) from None
+    if scene.mechanism is None:
+        raise SweepInputError(f"{printable(str(path))}: a sweep needs a linkage scene, not a {scene.kind} scene")
+    thetas = crank_angles(scene.angle, steps, every)
+    try:
+        result = sweep(scene.mechanism, thetas, scene.omega, scene.alpha)
+    except ConstructionError as e:
+        raise SweepInputError(f"{printable(str(path))}: {e}") from None
+    return scene, result
+
+
+def _unit(units, kind: str) -> str:
+    return unit_symbol(units.of(kind))
+
+
+def table(scene, s) -> tuple[list[str], list[list[str]]]:
+    """The CSV header and rows in the scene's units (empty cells at gaps)."""
+    u = scene.units
+    ua, ul, uv, uacc = (_unit(u, k) for k in ("angle", "length", "velocity", "acceleration"))
+    uw, ual = _unit(u, "angular velocity"), _unit(u, "angular acceleration")
+    header = [f"crank angle [{ua}]"]
+    cols: list[np.ndarray] = [np.array([u.convert("angle", float(t)) for t in s.thetas])]
+    for name in s.positions:
+        for label, src, kind, unit in (("", s.positions, "length", ul), ("v", s.velocities, "velocity", uv),
+                                       ("a", s.accelerations, "acceleration", uacc)):
+            if name not in src:
+                continue
+            scale = u.convert(kind, 1.0)        # every unit here is linear in SI
+            for axis, arr in zip("xy", src[name]):
+                header.append(f"{name} {label}{axis} [{unit}]")
+                cols.append(np.asarray(arr) * scale)
+    for number in s.angular:
+        header.append(f"omega_{number} [{uw}]")
+        cols.append(np.asarray(s.angular[number]) * u.convert("angular velocity", 1.0))
+        if number in s.angular_acceleration:
+            header.append(f"alpha_{number} [{ual}]")
+            cols.append(np.asarray(s.angular_acceleration[number]) * u.convert("angular acceleration", 1.0))
+    rows = [["" if not math.isfinite(v) else repr(float(v)) for v in row] for row in zip(*cols)]
+    return header, rows
+
+
+def write_csv(path: Path, header: list[str], rows: list[list[str]]) -> None:
+    """Write atomically: a temporary file beside ``path``, then os.replace.  Raises SweepInputError."""
+    path = Path(path)
+    folder = path.parent if str(path.parent) else Path(".")
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(header)
+    w.writerows(rows)
+    data = buf.getvalue().encode("utf-8")
+    tmp = folder / f"{TEMP_PREFIX}{os.getpid()}-{next(_counter)}-{path.name[:40]}.csv"
+    faults.track(tmp)
+    try:
+        if path.is_dir():
+            raise IsADirectoryError(21, "Is a directory")
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0), 0o666)
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except OSError as e:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise SweepInputError(f"Cannot write {printable(str(path))}: {e.strerror or type(e).__name__}.") from None
+    finally:
+        faults.untrack(tmp)
+
+
+def _fmt(v: float) -> str:
+    return f"{v:.6g}" if math.isfinite(v) else "-"
+
+
+def summary(scene, s) -> str:
+    """A short summary: angles swept, how many assembled, the gaps' angular ranges, and each link's
+    omega and alpha extremes (scene units)."""
+    u = scene.units
+    ua = u.symbol("angle")
+    ang = [u.convert("angle", float(t)) for t in s.thetas]
+    n, ok = s.thetas.size, int(np.count_nonzero(s.assembles))
+    step = (ang[1] - ang[0]) if n > 1 else 0.0
+    lines = [scene.title,
+             f"  {n} crank angles from {_fmt(ang[0])} to {_fmt(ang[-1])} {ua} (step {_fmt(step)} {ua}), "
+             f"{s.model}: {ok} assembled"]
+    gaps = s.gaps()
+    if gaps:
+        spans = ", ".join(f"{_fmt(ang[i])}..{_fmt(ang[j - 1])} {ua}" for i, j in gaps)
+        lines.append(f"  cannot be assembled (gaps, {n - ok} angles): {spans}")
+    uw, ual = u.symbol("angular velocity"), u.symbol("angular acceleration")
+    rows = [("link", f"omega min [{uw}]", f"omega max [{uw}]", f"alpha min [{ual}]", f"alpha max [{ual}]")]
+    for k, w in s.angular.items():
+        a = s.angular_acceleration.get(k)
+
+        def ext(x, kind):
+            x = np.asarray(x)[np.isfinite(x)] if x is not None else np.array([])
+            if x.size == 0:
+                return "-", "-"
+            return _fmt(u.convert(kind, float(x.min()))), _fmt(u.convert(kind, float(x.max())))
+        rows.append((str(k),) + ext(w, "angular velocity") + ext(a, "angular acceleration"))
+    widths = [max(len(r[i]) for r in rows) for i in range(5)]
+    for k, r in enumerate(rows):
+        lines.append("  " + "  ".join(c.rjust(wd) if k and i else c.ljust(wd)
+                                      for i, (c, wd) in enumerate(zip(r, widths))).rstrip())
+    return "\n".join(lines)
+
+
+def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path | None) -> int:
+    """The command: write the CSV (and say so) or print the summary.  Raises SweepInputError."""
+    scene, s = run_sweep(path, steps, every)
+    if csv_path is not None:
+        header, rows = table(scene, s)
+        write_csv(csv_path, header, rows)
+        gaps = s.thetas.size - int(np.count_nonzero(s.assembles))
+        print(f"{scene.title}\n  {s.thetas.size} crank angles ({s.model}), {gaps} not assembled; "
+              f"wrote {printable(str(csv_path))}")
+    else:
+        print(summary(scene, s))
+    return 0

@@ -1,0 +1,157 @@
+"""Sweeps over one turn of the crank (constructions.sweep, ``drafting sweep``): equal to the one-pose
+analytic solution, gaps exactly where the mechanism cannot be assembled, continuation on the scene's
+branch, and the CSV in the scene's units."""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from constructions.check import analytic_solution
+from constructions.linkage import locate
+from constructions.sweep import sweep
+from drafting import cli
+from drafting.scene import load_scene
+
+GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+FOUR_BAR = GALLERY / "notes-velocity-example-2.toml"
+QUICK_RETURN = GALLERY / "quick-return-slotted-lever.toml"
+
+
+def _turn(scene, n):
+    return scene.angle + 2 * math.pi * np.arange(n) / n
+
+
+def _agree(s, i, a, rel=1e-9):
+    for kind in ("positions", "velocities", "accelerations"):
+        ref = getattr(a, kind)
+        scale = max(v.norm() for v in ref.values()) or 1.0
+        for name, v in ref.items():
+            x, y = getattr(s, kind)[name]
+            assert math.hypot(x[i] - v.x, y[i] - v.y) <= rel * scale, (kind, name, i)
+    for kind in ("angular", "angular_acceleration"):
+        ref = getattr(a, kind)
+        scale = max(abs(w) for w in ref.values()) or 1.0
+        for k, w in ref.items():
+            assert abs(getattr(s, kind)[k][i] - w) <= rel * scale, (kind, k, i)
+
+
+def test_four_bar_sweep_equals_analytic_solution():
+    sc = load_scene(FOUR_BAR)
+    th = _turn(sc, 72)
+    s = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    assert s.model == "four-bar" and s.assembles.all() and s.thetas.shape == (72,)
+    for i in (0, 11, 30, 53, 71):
+        _agree(s, i, analytic_solution(sc.mechanism, th[i], sc.omega, sc.alpha))
+
+
+def test_four_bar_that_cannot_assemble_has_gaps_exactly_there(tmp_path):
+    text = FOUR_BAR.read_text().replace("length = 10\n", "length = 28\n", 1)
+    path = tmp_path / "part-turn.toml"
+    path.write_text(text)
+    sc = load_scene(path)
+    th = _turn(sc, 72)
+    s = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    expected = np.array([analytic_solution(sc.mechanism, t, sc.omega, sc.alpha) is not None for t in th])
+    assert 0 < expected.sum() < 72
+    assert np.array_equal(s.assembles, expected)
+    bad = ~expected
+    for name in ("B", "C"):
+        for arr in s.positions[name] + s.velocities[name] + s.accelerations[name]:
+            assert np.isnan(arr[bad]).all() and np.isfinite(arr[expected]).all()
+    assert np.isnan(s.angular[3][bad]).all() and np.isfinite(s.angular[3][expected]).all()
+    assert np.all(s.positions["O2"][0] == 30e-3)                 # the frame stays where it is
+    for i in np.flatnonzero(expected)[::5]:
+        _agree(s, i, analytic_solution(sc.mechanism, th[i], sc.omega, sc.alpha))
+    # gap ranges: consecutive runs of the failing angles
+    assert sum(j - i for i, j in s.gaps()) == int(bad.sum())
+
+
+def test_quick_return_stays_on_its_branch_over_a_turn():
+    sc = load_scene(QUICK_RETURN)
+    n = 180
+    th = _turn(sc, n)
+    s = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    assert s.model == "constraint equations" and s.assembles.all()
+    dt = (2 * math.pi / n) / abs(sc.omega)          # time per step
+    for name, (x, y) in s.positions.items():
+        vx, vy = s.velocities[name]
+        vmax = float(np.max(np.hypot(vx, vy)))
+        step = np.hypot(np.diff(np.append(x, x[0])), np.diff(np.append(y, y[0])))
+        assert step.max() <= 2.0 * vmax * dt + 1e-12, name
+    for i in (0, 37, 90, 151):
+        a = analytic_solution(sc.mechanism, th[i], sc.omega, sc.alpha, guess=locate(sc.mechanism, th[i]).positions)
+        _agree(s, i, a)
+
+
+def _run(capsys, *argv):
+    code = cli.main(["sweep", *map(str, argv)])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_csv_has_units_and_parses_back(tmp_path, capsys):
+    dest = tmp_path / "qr.csv"
+    code, out, err = _run(capsys, QUICK_RETURN, "--steps", 12, "--csv", dest)
+    assert code == 0 and err == "" and str(dest) in out
+    rows = list(csv.reader(dest.open(newline="", encoding="utf-8")))
+    header, body = rows[0], rows[1:]
+    assert len(body) == 12
+    assert header[0] == "crank angle [deg]"
+    assert "Q vx [mm/s]" in header and "Q ax [m/s^2]" in header and "omega_3 [rad/s]" in header
+    assert "alpha_4 [rad/s^2]" in header
+    assert all(len(r) == len(header) for r in body)
+    assert float(body[0][0]) == pytest.approx(30.0)
+    assert float(body[1][0]) == pytest.approx(60.0)
+    assert float(body[0][header.index("omega_1 [rad/s]")]) == pytest.approx(10.0)
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".drafting-tmp-")]
+
+
+def test_csv_gaps_are_empty_cells(tmp_path, capsys):
+    scene = tmp_path / "part.toml"
+    scene.write_text(FOUR_BAR.read_text().replace("length = 10\n", "length = 28\n", 1))
+    dest = tmp_path / "part.csv"
+    code, _, _ = _run(capsys, scene, "--csv", dest)
+    assert code == 0
+    rows = list(csv.DictReader(dest.open(newline="", encoding="utf-8")))
+    assert len(rows) == 72
+    gaps = [r for r in rows if r["C x [mm]"] == ""]
+    assert gaps and all(r["omega_3 [rad/s]"] == "" and r["O2 x [mm]"] == "30.0" for r in gaps)
+
+
+def test_every_5deg_gives_72_rows(tmp_path, capsys):
+    dest = tmp_path / "fb.csv"
+    code, _, _ = _run(capsys, FOUR_BAR, "--every", "5deg", "--csv", dest)
+    assert code == 0
+    rows = list(csv.reader(dest.open(newline="", encoding="utf-8")))
+    assert len(rows) == 73
+    assert [float(r[0]) for r in rows[1:3]] == pytest.approx([45.0, 50.0])
+
+
+def test_summary_without_csv(capsys):
+    code, out, _ = _run(capsys, FOUR_BAR, "--steps", 36)
+    assert code == 0
+    assert "36 crank angles" in out and "36 assembled" in out and "omega min" in out
+
+
+@pytest.mark.parametrize("args, word", [
+    (["--every", "5mm"], "--every"),
+    (["--every", "0deg"], "--every"),
+    (["--every", "banana"], "--every"),
+    (["--steps", "0"], "--steps"),
+    (["--steps", "10000001"], "--steps"),
+])
+def test_bad_options_are_one_line_exit_2(capsys, args, word):
+    code, out, err = _run(capsys, FOUR_BAR, *args)
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and err.startswith("drafting: error: ") and word in err
+    assert "Traceback" not in err
+
+
+def test_bad_scene_is_one_line_exit_2(tmp_path, capsys):
+    code, _, err = _run(capsys, tmp_path / "missing.toml")
+    assert code == 2 and err.count("\n") == 1 and err.startswith("drafting: error: ")
