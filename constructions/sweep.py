@@ -70,12 +70,6 @@ class Sweep:
         return out
 
 
-def _ro(a) -> np.ndarray:
-    a = np.array(a, dtype=np.float64)
-    a.flags.writeable = False
-    return a
-
-
 def _plain(m: Mechanism):
     """(crank step, dyad, fixed points) for a plain four-bar / slider-crank, else None (the same topology
     test as :func:`constructions.check.analytic_solution`)."""
@@ -109,7 +103,10 @@ def _closed_form(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts
     n = th.size
     O1 = m.ground[crank.pivot]
     b, j = crank.tip, d.joint
-    zeros, full = np.zeros(n), (lambda v: np.full(n, float(v)))
+    zeros = np.broadcast_to(0.0, (n,))
+
+    def full(v):
+        return np.broadcast_to(float(v), (n,))
     pos: dict[str, XY] = {g: (full(p.x), full(p.y)) for g, p in m.ground.items()}
     vel: dict[str, XY] = {g: (zeros, zeros) for g in m.ground}
     acc: dict[str, XY] = {g: (zeros, zeros) for g in m.ground}
@@ -154,32 +151,35 @@ def _closed_form(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts
 
 
 def _finish(th, pos, vel, acc, ang, alp, ok, model, moving, fixed_links) -> Sweep:
-    """Copy into read-only arrays, NaN for every moving quantity where the mechanism does not assemble."""
-    bad = ~ok
+    """Read-only arrays, NaN for every moving quantity where the mechanism does not assemble.  A solver's
+    read-only array of the right shape is shared, not copied, when it needs no NaN."""
+    bad = ~np.asarray(ok, dtype=bool)
+    gaps = bool(bad.any())
     n = th.size
 
+    def own(a, masked: bool) -> np.ndarray:
+        a = np.asarray(a, dtype=np.float64)
+        if not (masked and gaps):
+            if a.shape == (n,) and not a.flags.writeable:
+                return a
+            if a.size == 1 or a.strides == (0,):      # a constant (the frame): a read-only view, no memory
+                return np.broadcast_to(a.reshape(-1)[:1], (n,))
+        a = np.array(np.broadcast_to(a, (n,)), dtype=np.float64)
+        if masked:
+            a[bad] = np.nan
+        a.flags.writeable = False
+        return a
+
     def vec(src):
-        out = {}
-        for name, (x, y) in src.items():
-            x, y = np.array(np.broadcast_to(x, (n,)), float), np.array(np.broadcast_to(y, (n,)), float)
-            if name in moving:
-                x[bad] = np.nan
-                y[bad] = np.nan
-            out[name] = (_ro(x), _ro(y))
-        return MappingProxyType(out)
+        return MappingProxyType({name: (own(x, name in moving), own(y, name in moving))
+                                 for name, (x, y) in src.items()})
 
     def sca(src):
-        out = {}
-        for k in sorted(src):
-            w = np.array(np.broadcast_to(src[k], (n,)), float)
-            if k not in fixed_links:
-                w[bad] = np.nan
-            out[k] = _ro(w)
-        return MappingProxyType(out)
+        return MappingProxyType({k: own(src[k], k not in fixed_links) for k in sorted(src)})
 
-    ok = np.array(ok, dtype=bool)
+    ok = ~bad
     ok.flags.writeable = False
-    return Sweep(_ro(th), vec(pos), vec(vel), vec(acc), sca(ang), sca(alp), ok, model)
+    return Sweep(own(th, False), vec(pos), vec(vel), vec(acc), sca(ang), sca(alp), ok, model)
 
 
 def _constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float) -> Sweep:
@@ -233,7 +233,7 @@ def _constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float) -> Sw
     for g in m.ground:
         vel[g] = acc[g] = (np.zeros(n), np.zeros(n))
     return _finish(th, pos, vel, acc, scalars("angular"), scalars("angular_acceleration"), ok,
-                   "constraint equations", set(names) - set(m.ground), set())
+                   "constraint equations", set(names) - set(m.ground), set())   # every body is NaN at a gap
 
 
 def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0) -> Sweep:

@@ -49,6 +49,17 @@ def test_four_bar_sweep_equals_analytic_solution():
         _agree(s, i, analytic_solution(sc.mechanism, th[i], sc.omega, sc.alpha))
 
 
+@pytest.mark.parametrize("name, model", [("notes-velocity-example-1", "slider-crank"),
+                                         ("notes-acceleration-example-4", "dyad chain")])
+def test_other_vectorised_sweeps_equal_analytic_solution(name, model):
+    sc = load_scene(GALLERY / f"{name}.toml")
+    th = _turn(sc, 36)
+    s = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    assert s.model == model and s.assembles.all()
+    for i in (0, 7, 20, 35):
+        _agree(s, i, analytic_solution(sc.mechanism, th[i], sc.omega, sc.alpha))
+
+
 def test_four_bar_that_cannot_assemble_has_gaps_exactly_there(tmp_path):
     text = FOUR_BAR.read_text().replace("length = 10\n", "length = 28\n", 1)
     path = tmp_path / "part-turn.toml"
