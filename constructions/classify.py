@@ -137,8 +137,10 @@ def classify_four_bar(m: Mechanism) -> FourBarClass | None:
                 continue
             # the crossing on the scene's assembly side of the line O1 -> O2
             C = hit.points[0] if (hit.contact is Contact.TANGENT or sign > 0) else hit.points[1]
+            # extended: B on O1C; folded, C = (a - b) u along the crank's direction u: for b > a the crank
+            # points away from C, for a > b towards it
             along = (C - O1).angle()
-            limits.append(LimitPosition(extended, along if extended else (along if b > a else along + math.pi),
-                                        (C - O2).angle(), C))
+            crank_angle = along if extended or a > b else along + math.pi
+            limits.append(LimitPosition(extended, crank_angle, (C - O2).angle(), C))
     return FourBarClass((crank.pivot, crank.tip, step.joint, o2), (g, a, b, c), closes, grashof, kind, turns,
                         t_min, t_max, at_min, at_max, tuple(limits), mobility(m))
