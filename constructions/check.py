@@ -107,6 +107,35 @@ def compare(measured: Sequence[Measured], analytic: Mapping[str, Vec | float] | 
     return out
 
 
+def closed_form_parts(m: Mechanism):
+    """(crank step, dyad, points fixed to its links) when ``m`` is a plain four-bar or slider-crank -- one
+    dyad hung from the crank tip and the frame, no other slider, points only on those links -- so the
+    closed forms of :mod:`constructions.analytic` apply; else None.  Topology only."""
+    plan = assembly_plan(m)
+    crank = plan[0]
+    assert isinstance(crank, CrankTip)
+    dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines))]
+    fixed = [s for s in plan if isinstance(s, FixedToLink)]
+    if len(dyads) != 1:
+        return None
+    d, b = dyads[0], crank.tip
+    if isinstance(d, TwoCircles):
+        arms = {d.first: d.link_a, d.second: d.link_b}
+        ground = [c for c in arms if c in m.ground]
+        if not (b in arms and len(ground) == 1 and not m.slides):
+            return None
+        solved = {crank.link.number} | {k.number for k in arms.values()}
+    elif isinstance(d, CircleAndGuide):
+        if not (d.centre == b and d.slide.on is None and len(m.slides) == 1):
+            return None
+        solved = {crank.link.number, d.link.number}
+    else:
+        return None
+    if not all(f.point.link in solved for f in fixed):
+        return None
+    return crank, d, fixed
+
+
 def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0.0, *,
                       accelerations: bool = True, guess: Mapping[str, Vec] | None = None) -> AnalyticSolution | None:
     """The vector-loop solution of ``m`` at ``angle`` (crank turning at ``omega`` with angular
@@ -120,28 +149,8 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
     ``guess``, e.g. the construction's pose, then the linear velocity and acceleration systems); without
     a guess they raise :class:`NotModelled`.  With ``accelerations`` False the acceleration fields are
     left None."""
-    plan = assembly_plan(m)
-    crank = plan[0]
-    assert isinstance(crank, CrankTip)
-    dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines))]
-    fixed = [s for s in plan if isinstance(s, FixedToLink)]
-    b = crank.tip
-    # Is it a plain four-bar or slider-crank?  (Topology only; the closed forms below then apply.)
-    plain = False
-    if len(dyads) == 1:
-        d = dyads[0]
-        if isinstance(d, TwoCircles):
-            arms = {d.first: d.link_a, d.second: d.link_b}
-            ground = [c for c in arms if c in m.ground]
-            plain = b in arms and len(ground) == 1 and not m.slides
-        elif isinstance(d, CircleAndGuide):
-            plain = d.centre == b and d.slide.on is None and len(m.slides) == 1
-        else:
-            plain = False
-        if plain:
-            solved = {crank.link.number} | {k.number for k in (arms.values() if isinstance(d, TwoCircles)
-                                                               else (d.link,))}
-            plain = all(f.point.link in solved for f in fixed)
+    parts = closed_form_parts(m)
+    plain = parts is not None
     if not plain:
         try:
             st = chain_solution(m, angle, omega, alpha)
@@ -158,7 +167,8 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
                                 dict(at.angular),
                                 {n: Vec(*a) for n, a in at.accelerations.items()} if accelerations else None,
                                 dict(at.angular_acceleration) if accelerations else None)
-    d = dyads[0]
+    crank, d, fixed = parts
+    b = crank.tip
     O1 = m.ground[crank.pivot]
     j = d.joint
     zero = Vec(0.0, 0.0)

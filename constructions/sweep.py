@@ -25,10 +25,10 @@ from typing import Mapping
 import numpy as np
 
 from . import analytic
+from .check import closed_form_parts
 from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, ConstructionError, DegenerateInput, IndeterminatePosition
-from .linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, SlotThrough, TwoCircles, TwoLines,
-                      assembly_plan, locate)
+from .linkage import CircleAndGuide, Mechanism, TwoCircles, locate
 from .vector_loops import chain_solution
 
 XY = tuple[np.ndarray, np.ndarray]
@@ -68,34 +68,6 @@ class Sweep:
             else:
                 i += 1
         return out
-
-
-def _plain(m: Mechanism):
-    """(crank step, dyad, fixed points) for a plain four-bar / slider-crank, else None (the same topology
-    test as :func:`constructions.check.analytic_solution`)."""
-    plan = assembly_plan(m)
-    crank = plan[0]
-    assert isinstance(crank, CrankTip)
-    dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines))]
-    fixed = [s for s in plan if isinstance(s, FixedToLink)]
-    if len(dyads) != 1:
-        return None
-    d, b = dyads[0], crank.tip
-    if isinstance(d, TwoCircles):
-        arms = {d.first: d.link_a, d.second: d.link_b}
-        ground = [c for c in arms if c in m.ground]
-        if not (b in arms and len(ground) == 1 and not m.slides):
-            return None
-        solved = {crank.link.number} | {k.number for k in arms.values()}
-    elif isinstance(d, CircleAndGuide):
-        if not (d.centre == b and d.slide.on is None and len(m.slides) == 1):
-            return None
-        solved = {crank.link.number, d.link.number}
-    else:
-        return None
-    if not all(f.point.link in solved for f in fixed):
-        return None
-    return crank, d, fixed
 
 
 def _closed_form(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts) -> Sweep:
@@ -242,7 +214,7 @@ def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0) -> Sweep:
     solvers models (e.g. not one degree of freedom)."""
     th = np.array(thetas, dtype=np.float64).reshape(-1)
     omega, alpha = float(omega), float(alpha)
-    parts = _plain(m)
+    parts = closed_form_parts(m)
     if parts is not None:
         return _closed_form(m, th, omega, alpha, parts)
     try:
