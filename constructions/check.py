@@ -8,16 +8,16 @@ It reads only the mechanism's dimensions, never the construction.  :func:`compar
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Mapping, Sequence
 
-from . import analytic
+import numpy as np
+
+from .closed_forms import closed_form_parts, closed_form_state
 from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
-from .linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, SlotThrough, TwoCircles, TwoLines,
-                      assembly_plan)
+from .linkage import Mechanism, SlotThrough, TwoLines, assembly_plan
 from .quantities import Measured
 from .vector_loops import chain_solution
 
@@ -107,35 +107,6 @@ def compare(measured: Sequence[Measured], analytic: Mapping[str, Vec | float] | 
     return out
 
 
-def closed_form_parts(m: Mechanism):
-    """(crank step, dyad, points fixed to its links) when ``m`` is a plain four-bar or slider-crank -- one
-    dyad hung from the crank tip and the frame, no other slider, points only on those links -- so the
-    closed forms of :mod:`constructions.analytic` apply; else None.  Topology only."""
-    plan = assembly_plan(m)
-    crank = plan[0]
-    assert isinstance(crank, CrankTip)
-    dyads = [s for s in plan if isinstance(s, (TwoCircles, CircleAndGuide, SlotThrough, TwoLines))]
-    fixed = [s for s in plan if isinstance(s, FixedToLink)]
-    if len(dyads) != 1:
-        return None
-    d, b = dyads[0], crank.tip
-    if isinstance(d, TwoCircles):
-        arms = {d.first: d.link_a, d.second: d.link_b}
-        ground = [c for c in arms if c in m.ground]
-        if not (b in arms and len(ground) == 1 and not m.slides):
-            return None
-        solved = {crank.link.number} | {k.number for k in arms.values()}
-    elif isinstance(d, CircleAndGuide):
-        if not (d.centre == b and d.slide.on is None and len(m.slides) == 1):
-            return None
-        solved = {crank.link.number, d.link.number}
-    else:
-        return None
-    if not all(f.point.link in solved for f in fixed):
-        return None
-    return crank, d, fixed
-
-
 def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0.0, *,
                       accelerations: bool = True, guess: Mapping[str, Vec] | None = None) -> AnalyticSolution | None:
     """The vector-loop solution of ``m`` at ``angle`` (crank turning at ``omega`` with angular
@@ -150,8 +121,7 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
     a guess they raise :class:`NotModelled`.  With ``accelerations`` False the acceleration fields are
     left None."""
     parts = closed_form_parts(m)
-    plain = parts is not None
-    if not plain:
+    if parts is None:
         try:
             st = chain_solution(m, angle, omega, alpha)
         except DegenerateInput as e:
@@ -167,58 +137,18 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
                                 dict(at.angular),
                                 {n: Vec(*a) for n, a in at.accelerations.items()} if accelerations else None,
                                 dict(at.angular_acceleration) if accelerations else None)
-    crank, d, fixed = parts
-    b = crank.tip
-    O1 = m.ground[crank.pivot]
-    j = d.joint
-    zero = Vec(0.0, 0.0)
-    pos: dict[str, Vec] = dict(m.ground)
-    vel: dict[str, Vec] = {g: zero for g in m.ground}
-    acc: dict[str, Vec] = {g: zero for g in m.ground}
-    ang: dict[int, float] = {crank.link.number: omega}
-    alp: dict[int, float] = {crank.link.number: alpha}
-    theta: dict[int, tuple[str, float]] = {crank.link.number: (crank.pivot, angle)}
-    if isinstance(d, TwoCircles):
-        arms = {d.first: d.link_a, d.second: d.link_b}
-        o2 = next(c for c in arms if c in m.ground)
-        coupler, rocker = arms[b], arms[o2]
-        sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
-        s = analytic.four_bar(angle, omega, alpha, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
-                              crank=crank.link.length, coupler=coupler.length, rocker=rocker.length,
-                              branch=sign)
-        model = "four-bar"
-        ang[rocker.number] = float(s.omega3)
-        alp[rocker.number] = float(s.alpha3)
-        theta[rocker.number] = (o2, float(s.theta3))
-    else:
-        coupler = d.link
-        s = analytic.slider_crank(angle, omega, alpha, crank_pivot=O1.as_tuple(), crank=crank.link.length,
-                                  coupler=coupler.length, guide_point=d.slide.through.as_tuple(),
-                                  guide_angle=d.slide.angle, branch=d.branch.sign)
-        model = "slider-crank"
-        ang[d.slide.number] = 0.0
-        alp[d.slide.number] = 0.0
-    if not bool(s.assembles):
+    st = closed_form_state(m, np.array([angle], dtype=np.float64), omega, alpha, parts)
+    if not bool(st.assembles[0]):
         return None
-    pos[b], pos[j] = Vec(float(s.Bx), float(s.By)), Vec(float(s.Cx), float(s.Cy))
-    vel[b], vel[j] = Vec(float(s.VBx), float(s.VBy)), Vec(float(s.VCx), float(s.VCy))
-    acc[b], acc[j] = Vec(float(s.ABx), float(s.ABy)), Vec(float(s.ACx), float(s.ACy))
-    ang[coupler.number] = float(s.omega2)
-    alp[coupler.number] = float(s.alpha2)
-    theta[coupler.number] = (b, float(s.theta2))
-    for f in fixed:
-        a = f.point
-        start, th = theta[a.link]
-        # angle of the direction from a.base to the link's other joint
-        direction = th if a.base == start else th + math.pi
-        base = pos[a.base]
-        p = analytic.coupler_point(base.x, base.y, vel[a.base].x, vel[a.base].y, direction, ang[a.link],
-                                   distance=a.distance, angle=a.angle, ABx=acc[a.base].x, ABy=acc[a.base].y,
-                                   alpha2=alp[a.link])
-        pos[a.name] = Vec(float(p.Dx), float(p.Dy))
-        vel[a.name] = Vec(float(p.VDx), float(p.VDy))
-        acc[a.name] = Vec(float(p.ADx), float(p.ADy))
-    return AnalyticSolution(model, pos, vel, ang, acc if accelerations else None, alp if accelerations else None)
+
+    def vec(xy) -> Vec:
+        return Vec(float(xy[0][0]), float(xy[1][0]))
+    pos = {n: vec(p) for n, p in st.positions.items()}
+    vel = {n: vec(v) for n, v in st.velocities.items()}
+    acc = {n: vec(a) for n, a in st.accelerations.items()}
+    ang = {n: float(np.reshape(w, -1)[0]) for n, w in st.angular.items()}
+    alp = {n: float(np.reshape(w, -1)[0]) for n, w in st.angular_acceleration.items()}
+    return AnalyticSolution(st.model, pos, vel, ang, acc if accelerations else None, alp if accelerations else None)
 
 
 def _constraint_solution(m, angle, omega, alpha, guess, accelerations) -> AnalyticSolution | None:

@@ -24,11 +24,10 @@ from typing import Mapping
 
 import numpy as np
 
-from . import analytic
-from .check import closed_form_parts
+from .closed_forms import closed_form_parts, closed_form_state
 from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, ConstructionError, DegenerateInput, IndeterminatePosition
-from .linkage import CircleAndGuide, Mechanism, TwoCircles, locate
+from .linkage import Mechanism, locate
 from .vector_loops import chain_solution
 
 XY = tuple[np.ndarray, np.ndarray]
@@ -71,55 +70,10 @@ class Sweep:
 
 
 def _closed_form(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts) -> Sweep:
-    crank, d, fixed = parts
-    n = th.size
-    O1 = m.ground[crank.pivot]
-    b, j = crank.tip, d.joint
-    zeros = np.broadcast_to(0.0, (n,))
-
-    def full(v):
-        return np.broadcast_to(float(v), (n,))
-    pos: dict[str, XY] = {g: (full(p.x), full(p.y)) for g, p in m.ground.items()}
-    vel: dict[str, XY] = {g: (zeros, zeros) for g in m.ground}
-    acc: dict[str, XY] = {g: (zeros, zeros) for g in m.ground}
-    ang: dict[int, np.ndarray] = {crank.link.number: full(omega)}
-    alp: dict[int, np.ndarray] = {crank.link.number: full(alpha)}
-    theta: dict[int, tuple[str, np.ndarray]] = {crank.link.number: (crank.pivot, th)}
-    if isinstance(d, TwoCircles):
-        arms = {d.first: d.link_a, d.second: d.link_b}
-        o2 = next(c for c in arms if c in m.ground)
-        coupler, rocker = arms[b], arms[o2]
-        sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
-        s = analytic.four_bar(th, omega, alpha, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
-                              crank=crank.link.length, coupler=coupler.length, rocker=rocker.length, branch=sign)
-        model = "four-bar"
-        ang[rocker.number], alp[rocker.number] = s.omega3, s.alpha3
-        theta[rocker.number] = (o2, s.theta3)
-    else:
-        coupler = d.link
-        s = analytic.slider_crank(th, omega, alpha, crank_pivot=O1.as_tuple(), crank=crank.link.length,
-                                  coupler=coupler.length, guide_point=d.slide.through.as_tuple(),
-                                  guide_angle=d.slide.angle, branch=d.branch.sign)
-        model = "slider-crank"
-        ang[d.slide.number], alp[d.slide.number] = zeros, zeros
-    pos[b], pos[j] = (s.Bx, s.By), (s.Cx, s.Cy)
-    vel[b], vel[j] = (s.VBx, s.VBy), (s.VCx, s.VCy)
-    acc[b], acc[j] = (s.ABx, s.ABy), (s.ACx, s.ACy)
-    ang[coupler.number], alp[coupler.number] = s.omega2, s.alpha2
-    theta[coupler.number] = (b, s.theta2)
-    for f in fixed:
-        a = f.point
-        start, t = theta[a.link]
-        direction = t if a.base == start else t + np.pi
-        bx, by = pos[a.base]
-        p = analytic.coupler_point(bx, by, vel[a.base][0], vel[a.base][1], direction, ang[a.link],
-                                   distance=a.distance, angle=a.angle, ABx=acc[a.base][0], ABy=acc[a.base][1],
-                                   alpha2=alp[a.link])
-        pos[a.name], vel[a.name], acc[a.name] = (p.Dx, p.Dy), (p.VDx, p.VDy), (p.ADx, p.ADy)
-    ok = np.asarray(s.assembles, dtype=bool).reshape(n)
-    moving = set(pos) - set(m.ground)
-    fixed_links = {crank.link.number} | ({d.slide.number} if isinstance(d, CircleAndGuide) else set())
-    return _finish(th, pos, vel, acc, ang, alp, ok, model, moving, fixed_links)
+    c = closed_form_state(m, th, omega, alpha, parts)
+    return _finish(th, dict(c.positions), dict(c.velocities), dict(c.accelerations), dict(c.angular),
+                   dict(c.angular_acceleration), c.assembles, c.model, set(c.positions) - set(m.ground),
+                   set(c.fixed_links))
 
 
 def _finish(th, pos, vel, acc, ang, alp, ok, model, moving, fixed_links) -> Sweep:
