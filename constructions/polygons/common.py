@@ -1,5 +1,5 @@
 """What every vector polygon shares: the pole and image labels, the thresholds that name a singular
-position, the words for a sense of rotation, the 1-2-5 scale series, and the naming of singular
+position, the words for a sense of rotation, and the naming of singular
 positions (toggle, change point, limit position, dead centre) from the mechanism and its pose.
 """
 
@@ -25,34 +25,9 @@ DEAD_CENTRE_SINE = 1e-9
 ROUNDING = 4.0 * 2.2e-16
 """Relative rounding of one crossing of well-conditioned trial lines; it grows as 1/sine^2."""
 
-SCALE_SERIES = (1.0, 2.0, 5.0)
-
-
 def rounding_estimate(condition: float) -> float:
     """Rough relative error of values read off a crossing at sine ``condition``."""
     return ROUNDING / max(condition, 1e-300) ** 2
-
-
-def vector_scale(known: float, extent: float, *, known_mm: tuple[float, float] = (50.0, 100.0),
-                 max_extent_mm: float = 110.0) -> float:
-    """The 1-2-5 scale (units per paper mm) for a vector polygon.
-
-    The finest scale at which the known vector is at most ``known_mm[1]`` long and the whole polygon
-    (``extent``, its larger bounding-box side) fits in ``max_extent_mm``.  The 1-2-5 series steps by up
-    to 2.5x, so with a well-proportioned polygon the known vector comes out 40..100 mm long (50..100
-    unless its magnitude is 2.0..2.5 times a power of ten); a student's ruler reads 1-2-5 scales without
-    arithmetic.  The drawing normally chooses the scale from the room it has; this is for a caller that
-    fixes it.
-    """
-    if not (known > 0 and math.isfinite(known) and math.isfinite(extent)):
-        raise DegenerateInput("the known vector must be finite and non-zero to choose a scale")
-    need = max(known / known_mm[1], extent / max_extent_mm)
-    decade = 10.0 ** math.floor(math.log10(need))
-    for m in SCALE_SERIES + (10.0,):
-        s = m * decade
-        if s >= need * (1 - 1e-12):
-            return s
-    raise AssertionError("unreachable")
 
 
 def image_name(joint: str, prime: str = "") -> str:
