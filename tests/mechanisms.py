@@ -1,5 +1,6 @@
-"""Mechanisms the tests share: slotted links, ternary links and a joint carried along two lines, built
-once so that every check of them (construction, constraint equations) looks at the same mechanism."""
+"""Mechanisms the tests share -- the notes' toggle linkage and compound six-bars, slotted links, ternary
+links, a joint carried along two lines -- built once, so that every check of them (construction, dyad
+chain, constraint equations) looks at the same mechanism."""
 
 from __future__ import annotations
 
@@ -7,6 +8,8 @@ import math
 
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide
+
+MM = 1e-3
 
 
 def quick_return(offset=0.0, branch=1, block=True, ram=True):
@@ -68,3 +71,37 @@ def slot_and_guide(pin=False):
                      (Link(1, ("O1", "B"), 0.03), Link(2, ("B", "C"), 0.1), Link(3, ("O2", "C"), 0.08)),
                      (Slide(5, "J", Vec(0, 0), 0.0, on=3), Slide(6, "J", Vec(0.07, 0.0), math.pi / 2)), (), 1,
                      {"C": Branch(1, ("B", "O2"))})
+
+
+def toggle_linkage(c_branch: int = -1, d_branch: int = 1) -> Mechanism:
+    """The notes' toggle linkage (as in tests/test_compound.py): four-bar O1-B-C-O2 driving slider D."""
+    return Mechanism(
+        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 40 * MM)},
+        links=(Link(1, ("O1", "B"), 20 * MM), Link(2, ("B", "C"), 50 * MM), Link(3, ("O2", "C"), 30 * MM),
+               Link(4, ("C", "D"), 60 * MM)),
+        slides=(Slide(5, "D", Vec(0, 0), 0.0),), attached=(), crank=1,
+        branches={"C": Branch(c_branch, ("B", "O2")), "D": Branch(d_branch, ("C",))})
+
+
+def six_bar(e_branch: int = -1) -> Mechanism:
+    """Stephenson-like six-bar: four-bar O1-B-C-O2 whose coupler is the ternary link BCD (three binary
+    links in a rigid triangle: D is an RRR dyad on two MOVING joints), then the dyad D-E-O3 in series;
+    point P on DE.  Every dyad closes at every crank angle (crank-rocker, Grashof)."""
+    return Mechanism(
+        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 0), "O3": Vec(50 * MM, 40 * MM)},
+        links=(Link(1, ("O1", "B"), 15 * MM), Link(2, ("B", "C"), 55 * MM), Link(3, ("O2", "C"), 40 * MM),
+               Link(4, ("B", "D"), 40 * MM), Link(5, ("C", "D"), 30 * MM),
+               Link(6, ("D", "E"), 30 * MM), Link(7, ("O3", "E"), 30 * MM)),
+        slides=(), attached=(Attached("P", 6, "D", 20 * MM, math.radians(30)),
+                             Attached("Q", 7, "E", 12 * MM, math.radians(-90))), crank=1,
+        branches={"C": Branch(1, ("B", "O2")), "D": Branch(1, ("B", "C")), "E": Branch(e_branch, ("D", "O3"))})
+
+
+def watt_chain() -> Mechanism:
+    """Two RRR dyads in series sharing joint C (a compound hinge): C from B and O2, E from C and O3."""
+    return Mechanism(
+        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 0), "O3": Vec(110 * MM, 40 * MM)},
+        links=(Link(1, ("O1", "B"), 15 * MM), Link(2, ("B", "C"), 55 * MM), Link(3, ("O2", "C"), 40 * MM),
+               Link(4, ("C", "E"), 50 * MM), Link(5, ("O3", "E"), 35 * MM)),
+        slides=(), attached=(Attached("P", 2, "B", 30 * MM, math.radians(20)),), crank=1,
+        branches={"C": Branch(1, ("B", "O2")), "E": Branch(1, ("C", "O3"))})

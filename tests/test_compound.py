@@ -10,19 +10,9 @@ import pytest
 
 from constructions.check import analytic_solution, analytic_values, compare
 from constructions.geometry import Vec
-from constructions.linkage import Branch, Link, Mechanism, Slide, locate
+from constructions.linkage import locate
 from constructions.polygons.velocity import velocity_polygon
-
-MM = 1e-3
-
-
-def toggle_linkage() -> Mechanism:
-    return Mechanism(
-        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 40 * MM)},
-        links=(Link(1, ("O1", "B"), 20 * MM), Link(2, ("B", "C"), 50 * MM), Link(3, ("O2", "C"), 30 * MM),
-               Link(4, ("C", "D"), 60 * MM)),
-        slides=(Slide(5, "D", Vec(0, 0), 0.0),), attached=(), crank=1,
-        branches={"C": Branch(-1, ("B", "O2")), "D": Branch(1, ("C",))})
+from mechanisms import toggle_linkage
 
 
 @pytest.mark.parametrize("angle_deg", [0.0, 60.0, 135.0, 300.0])

@@ -30,49 +30,14 @@ from constructions.errors import CannotAssemble, DegenerateInput, IndeterminateP
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan, locate
 from constructions.vector_loops import chain_solution
-from mechanisms import (quick_return, rocker_with_slot, slanted_slot, ternary_posed_by_other_points,
-                        watt_six_bar)
+from mechanisms import (quick_return, rocker_with_slot, six_bar, slanted_slot, ternary_posed_by_other_points,
+                        toggle_linkage, watt_chain, watt_six_bar)
 
-MM = 1e-3
 EPS = float(np.finfo(np.float64).eps)
 
 
 # -- mechanisms -------------------------------------------------------------------------------------
-# the slot and ternary mechanisms come from tests/mechanisms.py (shared with test_sliding_and_ternary.py);
-# the compound ones as tests/test_vector_loops.py builds them
-
-def toggle_linkage(c_branch: int = -1, d_branch: int = 1) -> Mechanism:
-    """The notes' toggle linkage: four-bar O1-B-C-O2 driving slider D."""
-    return Mechanism(
-        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 40 * MM)},
-        links=(Link(1, ("O1", "B"), 20 * MM), Link(2, ("B", "C"), 50 * MM), Link(3, ("O2", "C"), 30 * MM),
-               Link(4, ("C", "D"), 60 * MM)),
-        slides=(Slide(5, "D", Vec(0, 0), 0.0),), attached=(), crank=1,
-        branches={"C": Branch(c_branch, ("B", "O2")), "D": Branch(d_branch, ("C",))})
-
-
-def six_bar(e_branch: int = -1) -> Mechanism:
-    """Stephenson-like six-bar of binary links: the coupler is the rigid triangle BCD of three binary
-    links, then the dyad D-E-O3; points P on DE and Q on O3E."""
-    return Mechanism(
-        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 0), "O3": Vec(50 * MM, 40 * MM)},
-        links=(Link(1, ("O1", "B"), 15 * MM), Link(2, ("B", "C"), 55 * MM), Link(3, ("O2", "C"), 40 * MM),
-               Link(4, ("B", "D"), 40 * MM), Link(5, ("C", "D"), 30 * MM),
-               Link(6, ("D", "E"), 30 * MM), Link(7, ("O3", "E"), 30 * MM)),
-        slides=(), attached=(Attached("P", 6, "D", 20 * MM, math.radians(30)),
-                             Attached("Q", 7, "E", 12 * MM, math.radians(-90))), crank=1,
-        branches={"C": Branch(1, ("B", "O2")), "D": Branch(1, ("B", "C")), "E": Branch(e_branch, ("D", "O3"))})
-
-
-def watt_chain() -> Mechanism:
-    """Two RRR dyads in series sharing joint C (a compound hinge): C from B and O2, E from C and O3."""
-    return Mechanism(
-        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 0), "O3": Vec(110 * MM, 40 * MM)},
-        links=(Link(1, ("O1", "B"), 15 * MM), Link(2, ("B", "C"), 55 * MM), Link(3, ("O2", "C"), 40 * MM),
-               Link(4, ("C", "E"), 50 * MM), Link(5, ("O3", "E"), 35 * MM)),
-        slides=(), attached=(Attached("P", 2, "B", 30 * MM, math.radians(20)),), crank=1,
-        branches={"C": Branch(1, ("B", "O2")), "E": Branch(1, ("C", "O3"))})
-
+# the mechanisms come from tests/mechanisms.py, shared with the construction's and dyad chain's tests
 
 TRIAD_ANGLE = math.radians(60)
 
