@@ -19,7 +19,7 @@ joints included).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Mapping
 
 from .errors import CannotAssemble, DegenerateInput
@@ -433,7 +433,7 @@ class Pose:
     positions: Mapping[str, Vec]
     construction: Construction
     conditions: Mapping[str, float]
-    lines: Mapping[str, Line] = None  # type: ignore[assignment]
+    lines: Mapping[str, Line] = field(default_factory=dict)
 
     def __getitem__(self, name: str) -> Vec:
         return self.positions[name]

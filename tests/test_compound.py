@@ -9,7 +9,6 @@ import math
 import pytest
 
 from constructions.check import analytic_solution, analytic_values, compare
-from constructions.geometry import Vec
 from constructions.linkage import locate
 from constructions.polygons.velocity import velocity_polygon
 from mechanisms import toggle_linkage

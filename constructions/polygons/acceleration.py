@@ -18,7 +18,7 @@ component and j', and angular accelerations those sides divided by the link leng
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Mapping
 
 from ..errors import DegenerateInput
@@ -61,8 +61,8 @@ class AccelerationAnalysis:
     scale: float | None
     warnings: tuple[str, ...]
     alpha: float = 0.0
-    coriolis: Mapping[str, Vec] = None      # type: ignore[assignment]  name (A_A3A^c) -> 2 omega x V_rel
-    sliding: Mapping[str, Vec] = None       # type: ignore[assignment]  name (A_A3A^s) -> along the slot
+    coriolis: Mapping[str, Vec] = field(default_factory=dict)   # name (A_A3A^c) -> 2 omega x V_rel
+    sliding: Mapping[str, Vec] = field(default_factory=dict)    # name (A_A3A^s) -> along the slot
 
     @property
     def worst_condition(self) -> float:
@@ -88,7 +88,7 @@ class AccelerationAnalysis:
                if n not in m.ground]
         for comps, sup in ((self.normal, "n"), (self.tangential, "t")):
             out += [Measured(component_name(j, p, sup, m), "acceleration", a, c) for (j, p), a in comps.items()]
-        for comps in (self.coriolis or {}, self.sliding or {}):
+        for comps in (self.coriolis, self.sliding):
             out += [Measured(name, "acceleration", a, c) for name, a in comps.items()]
         skip = {m.crank} | {s.number for s in m.slides}
         out += [Measured(f"alpha_{n}", "angular acceleration", al, c) for n, al in sorted(self.angular.items())

@@ -9,7 +9,7 @@ import math
 
 from ..errors import DegenerateInput, IndeterminatePosition
 from ..geometry import Contact, Line, Vec, intersect_lines
-from ..linkage import CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, describe_angle
+from ..linkage import CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, TwoLines, describe_angle
 
 SINGULAR_SINE = 1e-4
 """Trial lines crossing at a sine below this mark a singular position (toggle, limit, change point).
@@ -60,9 +60,9 @@ def singular_kind(m: Mechanism, step, pose: Pose) -> tuple[str, str]:
     if isinstance(step, TwoCircles):
         kind = "change point" if change_point(m, pose) else "toggle"
         return kind, f"transmission angle {transmission_angle(pose, step):.3g} deg"
-    if not hasattr(step, "centre"):                 # two lines (PRP): their crossing
+    if isinstance(step, TwoLines):                  # PRP: the two lines the joint slides on
         return "limit position", f"the two lines {j} slides on are parallel"
-    line = pose.lines.get(j) if pose.lines else None
+    line = pose.lines.get(j)
     centre = step.centre
     r = p[j] - p[centre]
     if line is not None and r.norm() > 0:
@@ -81,7 +81,7 @@ def singular_position(m: Mechanism, step, pose: Pose, condition: float, polygon:
         a, b = step.link_a, step.link_b
         reason = (f"{kind}: links {a.number} and {b.number} are in line at {j} ({angle}), so the trial lines "
                   f"for {j} are parallel (sine {condition:.1e}) and the {polygon} cannot close")
-    elif not hasattr(step, "link"):
+    elif isinstance(step, TwoLines):
         reason = (f"limit position (lock): {angle}, so the trial lines for {j} are parallel (sine "
                   f"{condition:.1e}) and the {polygon} cannot close")
     else:
