@@ -28,7 +28,9 @@ AGREEMENT = 1e-9
 SAFETY = 64.0
 """Headroom over the rounding estimate when the tolerance widens near a singular position."""
 
-_ORDER = {"velocity": 2, "angular velocity": 2, "acceleration": 3, "angular acceleration": 3}
+_ORDER = {"velocity": 2, "angular velocity": 2, "acceleration": 3, "angular acceleration": 3, "force": 3,
+          "torque": 3}
+"""Forces are read off polygons built on the accelerations (D'Alembert), so they inherit their order."""
 
 
 def agreement(kind: str, condition: float) -> float:

@@ -1,12 +1,17 @@
-"""The linkage family: planar linkages at one pose -- position, velocity polygon, acceleration polygon
--- each checked against the vector-loop solution.  Registered in :mod:`drafting.families`."""
+"""The linkage family: planar linkages at one pose -- position, velocity polygon, acceleration polygon,
+static and D'Alembert force polygons -- each checked against an independent analytic solution (vector
+loops; the global equilibrium system and virtual work for forces).  Registered in
+:mod:`drafting.families`."""
 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 from constructions.classify import classify_four_bar
+from constructions.forces.effects import NO_EFFECTS
+from constructions.forces.polygon import force_analysis
 from constructions.check import NotModelled, analytic_solution, analytic_values
 from constructions.linkage import assembly_plan, locate
 from constructions.polygons.acceleration import acceleration_polygon
@@ -47,31 +52,63 @@ def _acceleration(study):
     return acceleration_polygon(s.mechanism, study.get("velocity"), s.alpha)
 
 
+def _effects(study):
+    return getattr(study.scene, "effects", None) or NO_EFFECTS
+
+
+def _forces(study):
+    """Static or D'Alembert force polygons: the accelerations only when some body has mass, the velocities
+    only when friction needs the sliding direction -- what the scene declares and nothing else."""
+    s, e = study.scene, _effects(study)
+    velocity = study.get("velocity") if e.friction else None
+    acceleration = study.get("acceleration") if e.inertial else None
+    return force_analysis(s.mechanism, study.get("position"), e, velocity=velocity, acceleration=acceleration)
+
+
+def _force_check(study):
+    """The global equilibrium system of all links and the input torque by virtual work (power balance)."""
+    from constructions.forces.equilibrium import equilibrium, virtual_work_torque
+    s, e = study.scene, _effects(study)
+    guess = study.get("position").positions
+    eq = equilibrium(s.mechanism, s.angle, s.omega, s.alpha, e, guess=guess)
+    vw = virtual_work_torque(s.mechanism, s.angle, s.omega, s.alpha, e, friction=eq.friction or None, guess=guess)
+    return eq, vw
+
+
 def _analytic(study):
     """The vector-loop solution, None where it does not assemble, or the NotModelled reason."""
     s = study.scene
     try:
         return analytic_solution(s.mechanism, s.angle, s.omega, s.alpha,
-                                 accelerations=study.asked("acceleration"),
+                                 accelerations=study.computed("acceleration") is not None,
                                  guess=study.get("position").positions)
     except NotModelled as e:
         return e
+
+
+VIRTUAL_WORK = " (virtual work)"
 
 
 def _measured(study) -> list:
     m = study.scene.mechanism
     out = []
     for name in ("velocity", "acceleration"):
-        r = study.result(name)
+        r = study.computed(name)
         if r is not None:
             out += r.measured(m)
+    f = study.result("forces")
+    if f is not None:
+        got = f.measured(m)
+        out += got
+        t = next(x for x in got if x.kind == "torque")
+        out.append(replace(t, name=t.name + VIRTUAL_WORK))
     return out
 
 
 def _scales(study) -> dict[str, float]:
     out: dict[str, float] = {}
-    for name in ("velocity", "acceleration"):
-        r = study.result(name)
+    for name in ("velocity", "acceleration", "forces"):
+        r = study.computed(name)
         if r is not None:
             out.update(r.scales())
     return out
@@ -83,15 +120,21 @@ def _solution(study):
 
 
 def _analytic_values(study):
-    if not study.asked("velocity"):
-        return None
-    return analytic_values(study.scene.mechanism, _solution(study))
+    out: dict = {}
+    if study.computed("velocity") is not None:
+        out.update(analytic_values(study.scene.mechanism, _solution(study)) or {})
+    if study.asked("forces"):
+        eq, vw = study.get("force check")
+        out.update(eq.values(study.scene.mechanism))
+        from constructions.forces.bodies import torque_name
+        out[torque_name(study.scene.mechanism) + VIRTUAL_WORK] = vw
+    return out or None
 
 
 def _construction(study) -> Construction:
     c = study.get("position").construction
-    for name in ("velocity", "acceleration"):
-        r = study.result(name)
+    for name in ("velocity", "acceleration", "forces"):
+        r = study.computed(name)
         if r is not None:
             c = c + r.construction
     return c
@@ -116,11 +159,11 @@ def _notes(study) -> tuple[str, ...]:
 
 def _warnings(study) -> tuple[str, ...]:
     w: list[str] = []
-    for name in ("velocity", "acceleration"):
-        r = study.result(name)
+    for name in ("velocity", "acceleration", "forces"):
+        r = study.computed(name)
         if r is not None:
             w += [x for x in r.warnings if x not in w]
-    if study.asked("velocity"):
+    if study.computed("velocity") is not None:
         a = study.get("analytic")
         if isinstance(a, NotModelled):
             w.append(f"No analytic check: {a}.")
@@ -130,10 +173,14 @@ def _warnings(study) -> tuple[str, ...]:
 
 
 def _model(study) -> str | None:
-    if not study.asked("velocity"):
-        return None
-    a = _solution(study)
-    return a.model if a is not None else None
+    names = []
+    if study.computed("velocity") is not None:
+        a = _solution(study)
+        if a is not None:
+            names.append(a.model)
+    if study.asked("forces"):
+        names.append("equilibrium of all links and virtual work")
+    return "; ".join(names) or None
 
 
 def _json(study) -> dict[str, Any]:
@@ -156,13 +203,13 @@ def _json(study) -> dict[str, Any]:
             "limit_positions": [{"extended": lp.extended, "crank_angle_deg": deg(lp.crank_angle) % 360,
                                  "rocker_angle_deg": deg(lp.rocker_angle) % 360} for lp in k.limit_positions]}
     out["position"] = {n: [u.convert("length", p.x), u.convert("length", p.y)] for n, p in pose.positions.items()}
-    v = study.result("velocity")
+    v = study.computed("velocity")
     if v is not None:
         out["velocity"] = {f"V_{n}": u.vector_json(p, "velocity") for n, p in v.velocities.items() if n not in m.ground}
         out["relative_velocity"] = {f"V_{j}{p}": u.vector_json(w, "velocity") for (j, p), w in v.relative.items()}
         out["angular_velocity"] = {f"omega_{n}": u.rate_json(w, "angular velocity")
                                    for n, w in sorted(v.angular.items())}
-    a = study.result("acceleration")
+    a = study.computed("acceleration")
     if a is not None:
         from constructions.polygons.acceleration import component_name
         out["acceleration"] = {f"A_{n}": u.vector_json(p, "acceleration") for n, p in a.accelerations.items()
@@ -172,6 +219,13 @@ def _json(study) -> dict[str, Any]:
             for comps, sup in ((a.normal, "n"), (a.tangential, "t")) for (j, p), x in comps.items()}
         out["angular_acceleration"] = {f"alpha_{n}": u.rate_json(al, "angular acceleration")
                                        for n, al in sorted(a.angular.items())}
+    f = study.result("forces")
+    if f is not None:
+        rows = {x.name: x.value for x in f.measured(m)}
+        out["forces"] = {
+            "dynamic": f.inertial,
+            "forces": {n: u.vector_json(v, "force") for n, v in rows.items() if not isinstance(v, float)},
+            "driving_torque": {n: u.rate_json(v, "torque") for n, v in rows.items() if isinstance(v, float)}}
     return out
 
 
@@ -183,8 +237,11 @@ LINKAGE = register(Family(
         "velocity": Analysis("velocity", ("position",), _velocity),
         "acceleration": Analysis("acceleration", ("velocity",), _acceleration),
         "analytic": Analysis("analytic", ("position",), _analytic, label="analytic check"),
+        "forces": Analysis("forces", ("position",), _forces, label="force polygons"),
+        "force check": Analysis("force check", ("position",), _force_check,
+                                label="equilibrium system and virtual work"),
     },
-    askable=("position", "velocity", "acceleration"),
+    askable=("position", "velocity", "acceleration", "forces"),
     measured=_measured,
     analytic=_analytic_values,
     construction=_construction,
@@ -196,5 +253,5 @@ LINKAGE = register(Family(
     sections=SECTIONS,
     read=read_linkage,
     default_analyses=("velocity",),
-    planned=("forces", "static forces", "dynamic forces", "sweep"),
+    planned=("sweep",),
 ))

@@ -202,19 +202,24 @@ def _entity_text(construction: Construction, fmt: SheetFormatter):
     return text
 
 
-_SUMMARY_ORDER = ("length", "velocity", "acceleration", "angular velocity", "angular acceleration")
+_SUMMARY_ORDER = ("length", "velocity", "acceleration", "angular velocity", "angular acceleration", "force",
+                  "torque")
 
 
 def _units_summary(units: Units, construction: Construction, panels: Sequence[Panel]) -> str:
     """The units the title block names: length, velocity, angular velocity, and acceleration (with
     angular acceleration) when the sheet has them."""
-    present = {"length", "velocity", "angular velocity"}
+    present = {"length"}
     present |= {p.quantity for p in panels if isinstance(p, VectorPanel)}
     for s in construction.steps:
         for _, v in s.values:
             present.add(v.kind)
+    if "velocity" in present:
+        present.add("angular velocity")
     if "acceleration" in present:
         present.add("angular acceleration")
+    if "force" in present:
+        present.add("torque")
     kinds = []
     for k in _SUMMARY_ORDER:
         if k in present:

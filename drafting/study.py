@@ -60,6 +60,13 @@ class Study:
             self.ran.append(label)
         return result
 
+    def computed(self, name: str) -> Any:
+        """The result of ``name`` if it has been computed so far -- asked for, or needed by an analysis
+        that decided at run time (a force analysis asks for accelerations only when bodies have mass)."""
+        if self.asked(name):
+            return self.get(name)
+        return self._results.get(name)
+
     def result(self, name: str) -> Any:
         """The result of ``name`` if the scene calls for it, else None (nothing is computed)."""
         return self.get(name) if self.asked(name) else None

@@ -313,8 +313,12 @@ def _answer(d: _Drawing, key: str, named: list[tuple[str, Vec, Vec]], extra: str
     vals = dict(values or {})
     parts = []
     arrows = []
+    drawn: set[tuple] = set()
     for i, (name, tail, tip) in enumerate(named):
-        arrows.append(Arrow(f"{key}: result {name}", Role.RESULT, dg, tail, tip, name))
+        side = (tail.as_tuple(), tip.as_tuple())
+        if side not in drawn:                 # a two-force member's two forces are one side of the polygon
+            arrows.append(Arrow(f"{key}: result {name}", Role.RESULT, dg, tail, tip, name))
+            drawn.add(side)
         vals[f"f{i}"] = _v((tip - tail).norm())
         parts.append(f"{name} = $f{i}")
     d.steps.append((f"Measure {', '.join(parts)}{extra}.", tuple(arrows), None, vals, StepKind.ANSWER))
@@ -361,7 +365,7 @@ def _rrr(d: _Drawing, step: TwoCircles) -> None:
             conc = _cross(at, r, pos[j], along)
             third = conc - pos[l_outer]
             if third.norm() > 1e-12 * d.m.size:
-                fb = Diagram("free body", _body_label(d.m, loaded))
+                fb = Diagram("free-body", _body_label(d.m, loaded))
                 d.steps.append((
                     f"Link {loaded} is a three-force member: the line of its load and the line of the force "
                     f"from link {free} (along {f_outer}{j}) meet at I_{loaded}, so {l_name} passes through "
@@ -516,7 +520,7 @@ def _crank(d: _Drawing, crank: CrankTip) -> None:
     r, mo = resultant(known, cpl, pos[o])
     torque = -mo
     key = f"link {n}"
-    fb = Diagram("free body", _body_label(m, n))
+    fb = Diagram("free-body", _body_label(m, n))
     if len(known) >= 2:
         dg = Diagram("force", key)
         pts = [ORIGIN]
@@ -570,7 +574,7 @@ def _free_bodies(d: _Drawing) -> list[tuple]:
     order = [k.number for k in m.links] + sorted(blocks)
     for body in order:
         forces = d.forces.get(body, [])
-        dg = Diagram("free body", _body_label(m, body))
+        dg = Diagram("free-body", _body_label(m, body))
         ents: list = []
         if body in blocks:
             sl = blocks[body]
