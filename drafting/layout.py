@@ -552,6 +552,8 @@ def viewport_header(rect: Rect, heading: str, paper_per_unit: float | None, unit
         hs = LABEL
         head = plain(heading, hs)
         hext = measure(head)
+        if hext.width > rect.w - 2:
+            raise LayoutError(f"the {name} viewport is too narrow for its heading")
     x0 = rect.x + 1.5
     ht = text_at(x0, rect.y + HEADER_GAP - hext.top, head, style="heading", region=region,
                  name=f"heading {name}")

@@ -377,7 +377,7 @@ def _rrr(d: _Drawing, step: TwoCircles) -> None:
                     None, {}, StepKind.CONSTRUCTION))
                 n_free_on_loaded = force_name(free, loaded)
                 c = _close(d, key, what, [(x.label, x.vector) for x in d.known(loaded)],
-                           (l_name, third, f"\u2225 {l_outer}I_{loaded}"),
+                           (l_name, third, f"\u2225 {l_outer}I"),
                            (n_free_on_loaded, along, f"\u2225 {f_outer}{j}"),
                            f"Force triangle of link {loaded}.")
                 f_loaded, f_on_loaded = c.last, c.first
@@ -543,6 +543,7 @@ def _crank(d: _Drawing, crank: CrankTip) -> None:
     ents = []
     if r.norm() > 0 and h > 1e-9 * m.size:
         line_pt = pos[o] + r.perp() * (-(mo - cpl) / r.dot(r))          # foot of the perpendicular from O
+        ents.append(TrialLine(f"fbd {_body_label(m, n)}: resultant line", Role.TRIAL, fb, line_pt, r, None))
         ents.append(Dimension(f"fbd {_body_label(m, n)}: h", Role.DIMENSION, fb, pos[o], line_pt, 0.0, "h"))
     sense = "CCW" if torque > 0 else "CW" if torque < 0 else ""
     if r.norm() > 0 and h <= 1e-9 * m.size and cpl == 0.0:
@@ -562,9 +563,9 @@ def _crank(d: _Drawing, crank: CrankTip) -> None:
 
 # -- free-body diagrams and the record ---------------------------------------------------------------
 
-FBD_LONGEST = 0.45
-"""The longest force arrow on a free-body diagram, as a fraction of the mechanism's size (arrows are not to
-scale on a free body; their magnitudes are written on the force polygons)."""
+FBD_LONGEST = 0.6
+"""The longest force arrow on a free-body diagram, as a fraction of the body's size (arrows are not to scale
+on a free body; their magnitudes are written on the force polygons)."""
 
 
 def _free_bodies(d: _Drawing) -> list[tuple]:
@@ -586,11 +587,14 @@ def _free_bodies(d: _Drawing) -> list[tuple]:
             else:
                 ents.append(Plate(f"fbd {dg.name}: body", Role.GIVEN, dg, tuple(pts), body))
         big = max((x.vector.norm() for x in forces), default=0.0)
+        pts = [pos[p] for p in (m.points_of(body) if body not in blocks else ())]
+        extent = max((p.distance_to(q) for p in pts for q in pts), default=0.0)
+        size = max(extent, 0.25 * m.size)
         for i, x in enumerate(forces):
             mag = x.vector.norm()
             if mag == 0.0 or big == 0.0:
                 continue
-            length = m.size * FBD_LONGEST * max(0.35, mag / big)
+            length = size * FBD_LONGEST * max(0.35, mag / big)
             role = Role.LOAD if x.kind in ("load", "weight", "inertia", "spring") else Role.RESULT
             tail = x.at - x.vector.unit() * length
             ents.append(Arrow(f"fbd {dg.name}: {x.label} {i}", role, dg, tail, x.at, x.label))

@@ -1,0 +1,68 @@
+"""The force gallery scenes through the whole pipeline: the notes' static sample, the bell crank, and that
+a scene runs only the analyses its effects call for."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from drafting.scene import load_scene, parse_scene
+from drafting.study import Study
+
+GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+
+
+def study(name: str) -> Study:
+    return Study(load_scene(GALLERY / name)).run()
+
+
+def values(s: Study) -> dict:
+    return {c.name: c for c in s.comparisons}
+
+
+def test_static_sample_scene_reproduces_the_notes_and_agrees_three_ways():
+    s = study("notes-static-force-sample.toml")
+    v = values(s)
+    assert v["T_2"].graphical == pytest.approx(-1.12, rel=0.02)            # notes: 1.12 N m
+    assert v["F_32"].graphical.norm() == pytest.approx(42.0, rel=0.02)     # notes: F_21 = 42.0 N
+    assert all(c.agrees for c in s.comparisons)
+    assert v["T_2 (virtual work)"].analytic == pytest.approx(v["T_2"].graphical, rel=1e-12)
+    assert "acceleration" not in s.ran and "velocity" not in s.ran
+
+
+def test_bell_crank_is_solved_by_concurrency():
+    s = study("bell-crank-three-force.toml")
+    assert all(c.agrees for c in s.comparisons)
+    words = " ".join(st.words for st in s.construction.steps)
+    assert "three-force member" in words and "two-force member" in words
+
+
+def _with(extra: str) -> Study:
+    text = (GALLERY / "notes-static-force-sample.toml").read_text() + extra
+    return Study(parse_scene(text, GALLERY / "variant.toml")).run()
+
+
+def test_a_mass_adds_the_acceleration_analysis_and_exactly_its_inertia_force():
+    plain = _with("")
+    heavy = _with('\n[[mass]]\nlink = 4\nmass = "0.5 kg"\n')
+    assert "acceleration" not in plain.ran
+    assert "acceleration" in heavy.ran and "velocity" in heavy.ran
+    assert heavy.to_json()["forces"]["dynamic"] is True
+    a = heavy.computed("acceleration").accelerations["C"]
+    # the piston's inertia force -m a_C lies along the guide: it changes the rod's axial load only
+    t0, t1 = values(plain)["T_2"].graphical, values(heavy)["T_2"].graphical
+    f0, f1 = values(plain)["F_14"].graphical, values(heavy)["F_14"].graphical
+    p_eff = 40.0 + 0.5 * a.x            # along -x: P plus the x-part of -m a_C
+    assert t1 / t0 == pytest.approx(p_eff / 40.0, rel=1e-9)
+    assert f1.y / f0.y == pytest.approx(p_eff / 40.0, rel=1e-9)
+    assert all(c.agrees for c in heavy.comparisons)
+
+
+def test_gravity_changes_only_the_weight_terms():
+    g = '\n[gravity]\ng = "9.81 m/s^2"\n'
+    m = '\n[[mass]]\nlink = 4\nmass = "2 kg"\n'
+    without, with_g = _with(m), _with(m + g)
+    d = values(with_g)["F_14"].graphical - values(without)["F_14"].graphical
+    assert d.y == pytest.approx(2.0 * 9.81, rel=1e-9) and abs(d.x) < 1e-9     # the weight, square to the guide
+    assert values(with_g)["T_2"].graphical == pytest.approx(values(without)["T_2"].graphical, rel=1e-12)
