@@ -86,7 +86,8 @@ def test_three_force_member_by_concurrency():
     from constructions.linkage import Attached
     m = four_bar((0, 0), (0.12, 0.01), 0.04, 0.13, 0.09, 1, (Attached("E", 2, "B", 0.08, -0.4),))
     fa = solve(m, 1.2, Effects(loads=(Load("P", 2, "E", Vec(10.0, -30.0)),)))
-    lines = [e for e in fa.construction.entities() if isinstance(e, TrialLine) and e.diagram.kind == "free-body"]
+    lines = [e for e in fa.construction.entities() if isinstance(e, TrialLine) and e.diagram.kind == "free-body"
+             and e.diagram.name == "link 2"]
     meet = next(e for e in fa.construction.entities() if isinstance(e, Point) and e.label == "I_2")
     assert len(lines) == 3
     for ln in lines:          # the load's line, the two-force line and the third force all pass through I

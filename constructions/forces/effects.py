@@ -73,7 +73,7 @@ class Effects:
     masses: tuple[Mass, ...] = ()
     springs: tuple[Spring, ...] = ()
     gravity: Vec | None = None
-    friction: dict[int, float] = field(default_factory=dict)
+    friction: dict[int | str, float] = field(default_factory=dict)
     fixed: dict[str, Vec] = field(default_factory=dict)
 
     @property
