@@ -70,7 +70,7 @@ BAD = [
     ('C = "ahead of B"', 'C = "left of B->O1"', "assembly", "relative to the joints"),
     ('[assembly]\nC = "ahead of B"', '', "assembly", "choose one"),
     ('joint = "C"', 'joint = "E"', "slider[1].joint", "on no link"),
-    ('analyses = ["velocity"]', 'analyses = ["forces"]', "ask.analyses", "not available yet"),
+    ('analyses = ["velocity"]', 'analyses = ["sweep"]', "ask.analyses", "not available yet"),
     ('paper = "A4"', 'paper = "Letter"', "drawing.paper", "not a paper size"),
 ]
 
@@ -135,7 +135,8 @@ def test_velocity_scene_builds_nothing_else(capsys):
     assert code == 0
     data = json.loads(out)
     assert data["analyses"] == ["classification", "position", "velocity", "analytic check"]
-    assert "acceleration" not in data and "angular_acceleration" not in data and "force" not in out
+    assert "acceleration" not in data and "angular_acceleration" not in data and "forces" not in data
+    assert not any("force" in a for a in data["analyses"])
     assert data["velocity"]["V_C"]["magnitude"] == pytest.approx(568.536, abs=1e-3)
     assert data["angular_velocity"]["omega_2"]["sense"] == "cw"
     assert data["check"]["agrees"] is True
@@ -272,9 +273,13 @@ def test_every_gallery_scene_renders(scene, tmp_path, capsys):
         assert f"{i}/{len(pages)}" in page and s.drawing_number in page
         assert (root.get("width"), root.get("height")) == size
         text += " " + page
-    labels = ["Space diagram", "Velocity polygon", "Results", "Ov"]
-    if "acceleration" in s.analyses:
+    labels = ["Space diagram", "Results"]
+    if "velocity" in s.analyses or "acceleration" in s.analyses or s.effects.inertial:
+        labels += ["Velocity polygon", "Ov"]
+    if "acceleration" in s.analyses or s.effects.inertial:
         labels += ["Acceleration polygon", "Oa"]
+    if "forces" in s.analyses:
+        labels += ["Force polygon", "Free-body diagram", "Of"]
     for label in labels:
         assert label in text, label
 
