@@ -9,9 +9,10 @@ The limits (README, "Scene files" / "Limits") and why they are what they are:
   planned scene kinds need a few more.  The raw text is scanned *before* the TOML reader runs, because
   the reader recurses on nested arrays and inline tables (a few hundred levels exhaust Python's stack)
   and takes quadratic time on long dotted keys.
-- :data:`MAX_COUNTS` (50 fixed pivots, links, sliders, points) and :data:`MAX_ENTRIES` (100 for any
-  other table or array).  A sheet is unreadable long before; layout time grows with the number of
-  labelled points (50 points: ~1.5 s, 200 points: ~11 s).
+- :data:`MAX_COUNTS` (50 fixed pivots, links, sliders, points; 50 loads, couples, masses, springs,
+  friction tables) and :data:`MAX_ENTRIES` (100 for any other table or array).  A sheet is unreadable
+  long before; layout time grows with the number of labelled points (50 points: ~1.5 s, 200 points:
+  ~11 s), so the centres of gravity a scene adds count with its points (:data:`MAX_COUNTS` ["point"]).
 - :data:`MAX_STRING` (200 characters) for every string and key: a title longer than that cannot be
   lettered in the title block anyway.
 - :data:`MAX_NUMBER_TOKEN` (100 characters) for a number in the text: longer integers would make the
@@ -36,7 +37,11 @@ from typing import Any, Iterable
 
 MAX_FILE_BYTES = 256 * 1024
 MAX_DEPTH = 10
-MAX_COUNTS = {"frame": 50, "link": 50, "slider": 50, "point": 50}
+MAX_COUNTS = {"frame": 50, "link": 50, "slider": 50, "point": 50,
+              "load": 50, "couple": 50, "mass": 50, "spring": 50, "friction": 50}
+COUNTED = {"frame": "fixed pivots", "link": "links", "slider": "sliders", "point": "points", "load": "loads",
+           "couple": "couples", "mass": "masses", "spring": "springs", "friction": "friction tables"}
+"""What each counted section holds, as a refusal names it."""
 MAX_ENTRIES = 100
 MAX_STRING = 200
 MAX_NUMBER_TOKEN = 100
@@ -53,6 +58,7 @@ MAGNITUDES: dict[str, tuple[float, float]] = {
     "torque": (1e-12, 1e12),
     "mass": (1e-12, 1e12),
     "moment of inertia": (1e-15, 1e12),
+    "stiffness": (1e-12, 1e15),
     "angle": (0.0, 2 * math.pi * 1e4),
 }
 LENGTH_RATIO = 1e6
@@ -197,7 +203,7 @@ def check_data(data: dict[str, Any]) -> None:
     for name, limit in MAX_COUNTS.items():
         v = data.get(name)
         if isinstance(v, (dict, list)) and len(v) > limit:
-            what = {"frame": "fixed pivots", "link": "links", "slider": "sliders", "point": "points"}[name]
+            what = COUNTED[name]
             raise LimitError(name, f"{len(v):,} {what}; a scene may have at most {limit}")
     todo: list[tuple[str, Any, int]] = [("", data, 0)]
     while todo:

@@ -12,6 +12,7 @@ from constructions.errors import DegenerateInput
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan
 
+from .effects_scene import SECTIONS as EFFECT_SECTIONS, read_effects
 from .textsafe import cut, printable
 from .unitset import Units
 
@@ -19,11 +20,13 @@ from .unitset import Units
 def printable_value(v) -> str:
     return cut(printable(repr(v)), 40)
 
-SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"})
+SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"}) | EFFECT_SECTIONS
 
 
 def read_linkage(r, units: Units) -> dict:
-    """The linkage sections of a scene: [frame], [[link]], [[point]], [[slider]], [input], [assembly]."""
+    """The linkage sections of a scene: [frame], [[link]], [[point]], [[slider]], [input], [assembly], and
+    the effects it declares ([gravity], [[load]], [[couple]], [[mass]], [[spring]], [[friction]]:
+    :mod:`drafting.effects_scene`), whose centres of gravity may add points to the mechanism."""
     frame = r.named_table("frame")
     if not frame:
         raise r.fail("frame", "is missing: name the fixed pivots, e.g. O1 = [0, 0]")
@@ -165,7 +168,8 @@ def read_linkage(r, units: Units) -> dict:
         text = str(e)
         key = "assembly" if "branch" in text or "assemblies" in text else "link"
         raise r.fail(key, str(e)) from None
-    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha}
+    m, effects = read_effects(r, units, m)
+    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "effects": effects}
 
 
 def _branch(r, key: str, value: Any) -> Branch:

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from constructions.forces.effects import NO_EFFECTS, Effects
 from constructions.geometry import Vec
 from constructions.linkage import Mechanism
 
@@ -47,8 +48,9 @@ class SceneError(Exception):
 class Scene:
     """A read scene: the shared sections (drawing, units, what it asks) and its family's own state.
 
-    A linkage fills ``mechanism`` and the input (``angle``, ``omega``, ``alpha``); another family puts its
-    model in ``model``."""
+    A linkage fills ``mechanism``, the input (``angle``, ``omega``, ``alpha``) and the ``effects`` it
+    declares (loads, masses, gravity, springs, friction; none unless the scene gives them); another
+    family puts its model in ``model``."""
 
     path: Path
     title: str
@@ -64,6 +66,7 @@ class Scene:
     omega: float = 0.0    # crank angular velocity, rad/s CCW positive
     alpha: float = 0.0    # crank angular acceleration, rad/s^2 CCW positive
     model: Any = None
+    effects: Effects = NO_EFFECTS
 
 
 def load_scene(path: Path | str) -> Scene:

@@ -30,6 +30,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "torque": ("N m", "[mass] * [length] ** 2 / [time] ** 2"),
     "mass": ("kg", "[mass]"),
     "moment of inertia": ("kg m^2", "[mass] * [length] ** 2"),
+    "stiffness": ("N/m", "[mass] / [time] ** 2"),
 }
 
 DEFAULT_UNITS: dict[str, str] = {
@@ -43,11 +44,13 @@ DEFAULT_UNITS: dict[str, str] = {
     "torque": "N m",
     "mass": "kg",
     "moment of inertia": "kg m^2",
+    "stiffness": "N/mm",
 }
 
 _EXAMPLES = {"length": "50 mm", "velocity": "500 mm/s", "angular velocity": "10 rad/s", "angle": "70 deg",
              "acceleration": "2000 mm/s^2", "angular acceleration": "5 rad/s^2", "force": "100 N",
-             "torque": "20 N m", "mass": "2.5 kg", "moment of inertia": "0.01 kg m^2"}
+             "torque": "20 N m", "mass": "2.5 kg", "moment of inertia": "0.01 kg m^2",
+             "stiffness": "2 N/mm"}
 
 # names pint does not know that people write
 _ALIASES = {"rev": "revolution", "revs": "revolution", "\u00b0": "degree", "sec": "second"}

@@ -20,6 +20,11 @@ KEYS: dict[str, str] = {
     "angular_velocity": "angular velocity",
     "angular_acceleration": "angular acceleration",
     "angle": "angle",
+    "force": "force",
+    "torque": "torque",
+    "mass": "mass",
+    "moment_of_inertia": "moment of inertia",
+    "stiffness": "stiffness",
 }
 
 
@@ -37,6 +42,11 @@ class Units:
     angular_velocity: str = _default("angular velocity", "rad/s")
     angular_acceleration: str = _default("angular acceleration", "rad/s^2")
     angle: str = _default("angle", "deg")
+    force: str = _default("force", "N")
+    torque: str = _default("torque", "N m")
+    mass: str = _default("mass", "kg")
+    moment_of_inertia: str = _default("moment of inertia", "kg m^2")
+    stiffness: str = _default("stiffness", "N/mm")
 
     def of(self, kind: str) -> str:
         """The unit of quantity ``kind`` ("length", "angular velocity", ...)."""
