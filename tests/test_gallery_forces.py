@@ -66,3 +66,17 @@ def test_gravity_changes_only_the_weight_terms():
     d = values(with_g)["F_14"].graphical - values(without)["F_14"].graphical
     assert d.y == pytest.approx(2.0 * 9.81, rel=1e-9) and abs(d.x) < 1e-9     # the weight, square to the guide
     assert values(with_g)["T_2"].graphical == pytest.approx(values(without)["T_2"].graphical, rel=1e-12)
+
+
+def test_notes_dynamic_example_2_within_drawing_accuracy():
+    s = study("notes-dynamic-example-2.toml")
+    v = values(s)
+    assert all(c.agrees for c in s.comparisons)
+    lbf, inch = 4.4482216152605, 0.0254
+    assert v["T_1"].graphical / (lbf * inch) == pytest.approx(2.54, rel=0.02)        # CCW
+    f01 = v["F_01"].graphical * (1 / lbf)
+    assert (f01.x, f01.y) == (pytest.approx(-1.28, rel=0.02), pytest.approx(-0.224, rel=0.03))
+    assert v["F_03"].graphical.norm() / lbf == pytest.approx(0.396, rel=0.02)          # the guide: F_N = F_Cy
+    # the notes print v_C = -14.85 in/s; with their own omega_2 = -2.1 rad/s it is -22.74 in/s
+    assert v["V_C"].graphical.x / inch == pytest.approx(-22.74, rel=1e-3)
+    assert v["omega_2"].graphical == pytest.approx(-2.1, rel=1e-3)
