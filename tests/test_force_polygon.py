@@ -154,8 +154,9 @@ def test_no_masses_no_accelerations_and_gravity_adds_exactly_the_weights():
     assert b.torque == pytest.approx(a.torque, rel=1e-12)
 
 
-def test_friction_leans_the_guide_reaction_against_the_sliding():
-    m, theta = compressor(60.0)
+@pytest.mark.parametrize("angle_deg", [60.0, -45.0, 200.0])      # the block bears up, down, down
+def test_friction_leans_the_guide_reaction_against_the_sliding(angle_deg):
+    m, theta = compressor(angle_deg)
     mu = 0.2
     rough = Effects(loads=GAS.loads, friction={4: mu})
     fa = solve(m, theta, rough, omega=10.0)

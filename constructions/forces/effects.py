@@ -61,6 +61,15 @@ class Spring:
     stiffness: float
     free_length: float
 
+    def pull(self, a: Vec, b: Vec) -> Vec:
+        """The spring's force on end ``a`` when its ends stand at ``a`` and ``b``: the tension k (L - L0)
+        towards ``b`` (end b feels the opposite); none when the ends coincide (no line to act along)."""
+        d = b - a
+        length = d.norm()
+        if length == 0.0:
+            return Vec(0.0, 0.0)
+        return d * (self.stiffness * (length - self.free_length) / length)
+
 
 @dataclass(frozen=True)
 class Effects:

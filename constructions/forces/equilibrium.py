@@ -156,9 +156,7 @@ def applied(m: Mechanism, effects: Effects, kin: AnalyticSolution) -> list[tuple
             else:
                 on(e.body, e.at)
                 ends.append(kin.positions[e.at])
-        d = ends[1] - ends[0]
-        tension = s.stiffness * (d.norm() - s.free_length)
-        pull = d.unit() * tension                              # on end a, towards b
+        pull = s.pull(ends[0], ends[1])                        # on end a, towards b
         for e, f in ((s.a, pull), (s.b, -pull)):
             if e.body is not None:
                 out.append((e.body, e.at, f, 0.0))

@@ -29,9 +29,9 @@ from dataclasses import dataclass, field
 from typing import Mapping
 
 from ..errors import ConstructionError, IndeterminatePosition
-from ..geometry import Line, Vec
-from ..linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, assembly_plan,
-                       describe_angle)
+from ..geometry import Vec
+from ..linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles,
+                       assembly_plan, describe_angle)
 from ..polygons.common import WARN_SINE, rounding_estimate
 from ..quantities import Measured
 from ..record import (Arrow, Bar, Block, Construction, Diagram, Dimension, Plate, Point, Role, ScaleBar, StepKind,
@@ -137,15 +137,10 @@ def known_forces(m: Mechanism, pose: Pose, effects: Effects, acceleration=None
     for cp in effects.couples:
         couples[cp.body] = couples.get(cp.body, 0.0) + cp.torque
     for s in effects.springs:
-        pa, pb = pos[s.a.at], pos[s.b.at]
-        d = pb - pa
-        length = d.norm()
-        tension = s.stiffness * (length - s.free_length)
-        u = d * (1.0 / length) if length > 0 else ORIGIN
-        for end, other_dir in ((s.a, u), (s.b, -u)):
+        pull = s.pull(pos[s.a.at], pos[s.b.at])
+        for end, f in ((s.a, pull), (s.b, -pull)):
             if end.body is not None:
-                forces.setdefault(end.body, []).append(
-                    Force(s.name, end.body, pos[end.at], other_dir * tension, "spring"))
+                forces.setdefault(end.body, []).append(Force(s.name, end.body, pos[end.at], f, "spring"))
     for ms in effects.masses:
         g_at = pos[ms.centre]
         if effects.gravity is not None:
@@ -176,7 +171,6 @@ class _Drawing:
         self.frame = frame_number(m)
         self.carry = carriers(m)
         self.forces, self.couples = known_forces(m, pose, effects, acceleration)
-        self.loads = {b: list(v) for b, v in self.forces.items()}          # the scene's own, for the sheet
         self.pins: dict[Pin, Vec] = {}
         self.contacts: dict[object, tuple[Vec, float]] = {}
         self.cond: dict[str, float] = {}
@@ -234,8 +228,9 @@ def force_analysis(m: Mechanism, pose: Pose, effects: Effects, *, velocity=None,
         elif isinstance(step, CircleAndGuide):
             _rrp(d, step)
         else:
-            kind = type(step).__name__
-            raise ForcesNotDrawn(f"the force polygons of a {'slot turned through a joint (RPR)' if kind == 'SlotThrough' else 'joint carried along two lines (PRP)'} dyad at {step.joint} are not drawn yet")
+            dyad = "a slot turned through a joint (RPR)" if isinstance(step, SlotThrough) else \
+                "a joint carried along two lines (PRP)"
+            raise ForcesNotDrawn(f"the force polygons of {dyad} at {step.joint} are not drawn yet")
     crank = plan[0]
     assert isinstance(crank, CrankTip)
     _crank(d, crank)
@@ -350,7 +345,7 @@ def _rrr(d: _Drawing, step: TwoCircles) -> None:
     a, b, j = step.link_a.number, step.link_b.number, step.joint
     first, second = step.first, step.second
     by_a, by_b = _outer_carrier(d, first), _outer_carrier(d, second)
-    n_a, n_b, n_ab, n_ba = force_name(by_a, a), force_name(by_b, b), force_name(a, b), force_name(b, a)
+    n_a, n_b, n_ab = force_name(by_a, a), force_name(by_b, b), force_name(a, b)
     what, key = f"links {a} and {b}", f"links {a}, {b}"
     la, lb = _loaded(d, a), _loaded(d, b)
     for body, outer, name, loaded in ((a, first, n_a, la), (b, second, n_b, lb)):
@@ -454,19 +449,13 @@ def _rrp(d: _Drawing, step: CircleAndGuide) -> None:
     ka = d.known(a)
     kb = d.known(blk) if blk is not None else []
     knowns = [(f"{n_a}\u1d57", et_a * t_a)] + [(x.label, x.vector) for x in ka] + [(x.label, x.vector) for x in kb]
-    tries = [normal] if not (mu and slide_sign) else [normal - g_dir * (mu * slide_sign),
-                                                        normal + g_dir * (mu * slide_sign)]
-    for i, direction in enumerate(tries):
-        label = "\u22a5 guide" if len(tries) == 1 else f"at the friction angle to the normal"
-        c = _close(d, key, what, knowns, (n_g, direction, label), (f"{n_a}\u207f", en_a, f"\u2225 {first}{j}"),
-                   f"Force polygon of {what}." + (" The guide's reaction leans back from the normal by the "
-                                                   "friction angle \u03c6 = atan \u03bc, against the sliding."
-                                                   if len(tries) > 1 and i == 0 else ""))
-        n_part = c.last.dot(normal)
-        if len(tries) == 1 or (n_part >= 0) == (i == 0):
-            break
-        d.steps.append((f"The normal force came out pulling: the block bears on the other face of its guide, "
-                        f"so the reaction leans the other way; draw again.", (), None, {}, StepKind.CONSTRUCTION))
+    direction, intro = normal, f"Force polygon of {what}."
+    if mu and slide_sign:
+        direction = _friction_lean(d, knowns, normal, g_dir * (mu * slide_sign), en_a, blk)
+        intro += (" The guide's reaction leans back from the normal by the friction angle \u03c6 = atan \u03bc, "
+                  "against the sliding, on the face the block bears on.")
+    c = _close(d, key, what, knowns, (n_g, direction, "\u22a5 guide" if direction is normal else "at \u03c6 to the normal"),
+               (f"{n_a}\u207f", en_a, f"\u2225 {first}{j}"), intro)
     p1 = et_a * t_a
     q = p1 + sum((x.vector for x in ka), ORIGIN)
     n_total = c.last
@@ -497,6 +486,23 @@ def _rrp(d: _Drawing, step: CircleAndGuide) -> None:
         if couple:
             d.couples[guide] = d.couples.get(guide, 0.0) - couple
     d.record_pin(first, by_a, a, f_a)
+
+
+def _friction_lean(d: _Drawing, knowns, normal: Vec, lean: Vec, along_link: Vec, blk: int) -> Vec:
+    """The line of the guide's total reaction N n - mu |N| sign(v) t: leaning by ``-lean`` when the block
+    bears on the face the normal points from (N >= 0), by ``+lean`` on the other face.  The face is the one
+    whose polygon closes with a normal part of that sign (a part within rounding of zero fits either)."""
+    tip = sum((v for _, v in knowns), ORIGIN)
+    floor = 1e-12 * d.scale
+    for direction, face in ((normal - lean, 1.0), (normal + lean, -1.0)):
+        if abs(direction.unit().cross(along_link)) < PARALLEL_SINE:
+            continue
+        x = _cross(tip, direction, ORIGIN, along_link)
+        if (x - tip).dot(normal) * face >= -floor:
+            return direction
+    raise IndeterminatePosition(f"friction lock at block {blk}: with mu the guide's reaction cannot balance "
+                                f"the block on either face of its guide", position=describe_angle(d.pose.angle),
+                                kind="friction lock")
 
 
 def _contact(d: _Drawing, joint: str, blk: int | None, guide: int):
@@ -608,11 +614,12 @@ def _record(d: _Drawing) -> ForceAnalysis:
     title = "D'Alembert force analysis" if d.effects.inertial else "Static force analysis"
     rec = Construction(title)
     loads = []
-    for body, fs in d.loads.items():
-        for i, x in enumerate(fs):
-            if x.kind == "load":
-                tail = x.at - x.vector.unit() * (0.3 * m.size)
-                loads.append(Arrow(f"space: {x.label} {i}", Role.LOAD, Diagram.SPACE, tail, x.at, x.label))
+    for i, ld in enumerate(d.effects.loads):
+        if ld.force.norm() == 0.0:
+            continue
+        at = pos[ld.at]
+        loads.append(Arrow(f"space: {ld.name} {i}", Role.LOAD, Diagram.SPACE, at - ld.force.unit() * (0.3 * m.size),
+                           at, ld.name))
     if loads:
         rec = rec.then("The loads as given, on the space diagram.", *loads, kind=StepKind.GIVEN)
     if d.effects.inertial:
