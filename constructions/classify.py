@@ -63,7 +63,7 @@ class FourBarClass:
         g, a, b, c = self.lengths
         s = f"{self.grashof} {self.kind}" if self.grashof == "Grashof" else f"{self.kind} ({self.grashof})"
         if not self.closes:
-            return f"the links cannot form a four-bar: the longest is not shorter than the other three together"
+            return "the links cannot form a four-bar: the longest is not shorter than the other three together"
         turns = ", ".join(self.turns_fully) if self.turns_fully else "no link"
         return f"{s}; {turns} turns fully"
 

@@ -84,7 +84,7 @@ def draw_chart(e: Chart, rect: Rect, units: AxisUnits = SI_AXES, region: str = "
     y_kind = e.series[0].y_kind if e.series else "number"
     cy = lambda v: units.convert(y_kind, v)                                # noqa: E731
     # legend rows at the top
-    x, y_top = rect.x, rect.y
+    y_top = rect.y
     row_h = measure(plain("Xg", NUM)).height + 1.0
     legend_rows = 0
     cur = rect.right + 1                     # force a new row for the first entry

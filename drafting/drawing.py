@@ -36,7 +36,7 @@ from .paper import Command, Line, Polygon, Polyline, Rect, command_points, trans
 from .transform import Transform
 
 __all__ = ["LabelReq", "Drawing", "DrawContext", "drawer", "panel_drawer", "drawer_for", "drawable",
-           "draw_entities", "model_points", "arrowhead", "Pt"]
+           "arrowhead", "Pt"]
 
 ARROW_LEN = 3.5
 ARROW_HALF = 0.9

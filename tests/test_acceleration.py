@@ -11,7 +11,7 @@ from hypothesis import HealthCheck, assume, given, settings, strategies as st
 from constructions.check import analytic_solution, analytic_values, compare
 from constructions.errors import IndeterminatePosition
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
+from constructions.linkage import Attached, Link, Mechanism, Slide, locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Diagram, Role, StepKind

@@ -29,6 +29,7 @@ from constructions.analytic import coupler_point, four_bar, slider_crank
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide
 from constructions.vector_loops import chain_solution
+from mechanisms import six_bar, toggle_linkage as short_toggle_linkage   # the non-Grashof toggle linkage
 
 FAST = settings(max_examples=100, deadline=None)
 MM = 1e-3
@@ -73,28 +74,6 @@ def toggle_linkage() -> Mechanism:
                Link(4, ("C", "D"), 80 * MM)),
         slides=(Slide(5, "D", Vec(0, 0), 0.0),), attached=(Attached("P", 2, "B", 30 * MM, 0.4),), crank=1,
         branches={"C": Branch(-1, ("B", "O2")), "D": Branch(1, ("C",))})
-
-
-def short_toggle_linkage() -> Mechanism:
-    """The toggle linkage of tests/test_vector_loops.py: non-Grashof, out of reach near 200 deg."""
-    return Mechanism(
-        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 40 * MM)},
-        links=(Link(1, ("O1", "B"), 20 * MM), Link(2, ("B", "C"), 50 * MM), Link(3, ("O2", "C"), 30 * MM),
-               Link(4, ("C", "D"), 60 * MM)),
-        slides=(Slide(5, "D", Vec(0, 0), 0.0),), attached=(), crank=1,
-        branches={"C": Branch(-1, ("B", "O2")), "D": Branch(1, ("C",))})
-
-
-def six_bar() -> Mechanism:
-    """Stephenson six-bar (as in tests/test_vector_loops.py): ternary coupler BCD, dyad D-E-O3."""
-    return Mechanism(
-        ground={"O1": Vec(0, 0), "O2": Vec(60 * MM, 0), "O3": Vec(50 * MM, 40 * MM)},
-        links=(Link(1, ("O1", "B"), 15 * MM), Link(2, ("B", "C"), 55 * MM), Link(3, ("O2", "C"), 40 * MM),
-               Link(4, ("B", "D"), 40 * MM), Link(5, ("C", "D"), 30 * MM),
-               Link(6, ("D", "E"), 30 * MM), Link(7, ("O3", "E"), 30 * MM)),
-        slides=(), attached=(Attached("P", 6, "D", 20 * MM, math.radians(30)),
-                             Attached("Q", 7, "E", 12 * MM, math.radians(-90))), crank=1,
-        branches={"C": Branch(1, ("B", "O2")), "D": Branch(1, ("B", "C")), "E": Branch(-1, ("D", "O3"))})
 
 
 # -- (1) closed forms equal the dyad chain ---------------------------------------------------------------

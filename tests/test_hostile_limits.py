@@ -13,7 +13,7 @@ import pytest
 from drafting import limits
 from drafting.textsafe import printable
 from drafting.cli import builtin_example, main
-from drafting.scene import SceneError, load_scene, parse_scene
+from drafting.scene import parse_scene
 from drafting.units import DEFAULT_UNITS, KINDS, UnitError, check_unit, format_value, from_si, to_si
 
 EXAMPLE = builtin_example().read_text()

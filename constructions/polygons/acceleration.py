@@ -23,7 +23,7 @@ from typing import Mapping
 
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough,
+from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, SlotThrough,
                        TwoLines, assembly_plan, slide_line)
 from ..quantities import Measured
 from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
@@ -308,7 +308,7 @@ class _Polygon(PolygonDrawing):
         2 omega x V_J,JG of a slot in a turning link; on a fixed guide A_J itself lies along it)."""
         m, pos, vel = self.m, self.pose.positions, self.va
         j = step.joint
-        sides, trials, tips = [], [], []
+        trials, tips = [], []
         eq_terms = []
         for sl, jg in ((step.slide_a, step.coincident_a), (step.slide_b, step.coincident_b)):
             if sl.on is None:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from ..errors import DegenerateInput, IndeterminatePosition
+from ..errors import IndeterminatePosition
 from ..geometry import Contact, Line, Vec, intersect_lines
 from ..linkage import CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, TwoLines, describe_angle
 
