@@ -22,7 +22,6 @@ from constructions.geometry import Vec
 from constructions.linkage import Attached, Mechanism, assembly_plan
 
 from . import limits
-from .textsafe import cut, printable
 from .unitset import Units
 
 SECTIONS = frozenset({"gravity", "load", "couple", "mass", "spring", "friction"})
@@ -42,10 +41,6 @@ FRICTION_KEYS = {"slider", "mu"}
 GRAVITY_KEYS = {"g", "angle"}
 
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*")
-
-
-def _shown(v: Any) -> str:
-    return cut(printable(repr(v)), 40)
 
 
 def read_effects(r, units: Units, m: Mechanism) -> tuple[Mechanism, Effects]:
@@ -262,7 +257,7 @@ class _EffectsReader:
         raw = t["shape"]
         shape = SHAPE_NAMES.get(raw.strip().lower()) if isinstance(raw, str) else None
         if shape is None:
-            raise self.fail(f"{k}.shape", f"{_shown(raw)} is not a shape; choose from "
+            raise self.fail(f"{k}.shape", f"{self.r.shown(raw)} is not a shape; choose from "
                                           f"{', '.join(repr(s) for s in inertia_of.SHAPES)}")
         needs = inertia_of.SHAPES[shape]
         for d in DIMENSIONS:
@@ -302,15 +297,7 @@ class _EffectsReader:
             name = self.name(f"{k}.name", t["name"])
             body = self.body(f"{k}.link", t["link"])
             torque = self.quantity(f"{k}.torque", t["torque"], "torque")
-            sense = t.get("sense")
-            if sense is not None:
-                if sense not in ("ccw", "cw"):
-                    raise self.fail(f"{k}.sense", f"{_shown(sense)} must be \"ccw\" or \"cw\"")
-                if torque < 0 and sense == "ccw":
-                    raise self.fail(f"{k}.sense", f"says ccw but torque = {_shown(t['torque'])} turns "
-                                                  f"clockwise; give torque positive with a sense, or signed "
-                                                  f"without one")
-                torque = abs(torque) if sense == "ccw" else -abs(torque)
+            torque = self.r.signed(f"{k}.sense", "torque", torque, t["torque"], t.get("sense"))
             yield Couple(name, body, torque)
 
     def springs(self) -> tuple[tuple[Spring, ...], dict[str, Vec]]:
@@ -369,10 +356,10 @@ class _EffectsReader:
                 raise self.fail(f"{k}.slider", f"block {n} already has its friction ({where[n]})")
             mu = t["mu"]
             if isinstance(mu, bool) or not isinstance(mu, (int, float)):
-                raise self.fail(f"{k}.mu", f"{_shown(mu)} is not a coefficient of friction: write a plain "
+                raise self.fail(f"{k}.mu", f"{self.r.shown(mu)} is not a coefficient of friction: write a plain "
                                            f"number, e.g. mu = 0.15")
             if not math.isfinite(mu) or mu < 0:
-                raise self.fail(f"{k}.mu", f"{_shown(mu)} must be a finite number, not negative, e.g. 0.15")
+                raise self.fail(f"{k}.mu", f"{self.r.shown(mu)} must be a finite number, not negative, e.g. 0.15")
             out[n], where[n] = float(mu), k
         return out
 

@@ -208,6 +208,24 @@ class _Reader:
             raise self.fail(key, f"{v!r} is not a joint name (a letter then letters or digits, e.g. B or O2)")
         return v
 
+    @staticmethod
+    def shown(value: Any) -> str:
+        """A value from the file as an error message quotes it: printable and short."""
+        return cut(printable(repr(value)), 40)
+
+    def signed(self, key: str, what: str, value: float, raw: Any, sense: Any) -> float:
+        """A rate or couple, CCW positive: as given without a ``sense``; with sense = "ccw" or "cw" its
+        magnitude turned that way (a negative value said to turn ccw contradicts itself).  ``key`` is the
+        sense's key, ``raw`` the value as the file wrote it."""
+        if sense is None:
+            return value
+        if sense not in ("ccw", "cw"):
+            raise self.fail(key, f"{self.shown(sense)} must be \"ccw\" or \"cw\"")
+        if value < 0 and sense == "ccw":
+            raise self.fail(key, f"says ccw but {what} = {self.shown(raw)} turns clockwise; give {what} positive "
+                                 f"with a sense, or signed without one")
+        return abs(value) if sense == "ccw" else -abs(value)
+
     def number(self, key: str, value: Any) -> int:
         if isinstance(value, bool) or not isinstance(value, int) or value < 1:
             raise self.fail(key, "must be a link number, a whole number from 1")
