@@ -14,6 +14,7 @@ from constructions.forces.effects import NO_EFFECTS
 from constructions.forces.polygon import force_analysis
 from constructions.check import NotModelled, analytic_solution, analytic_values
 from constructions.linkage import assembly_plan, locate
+from constructions.quantities import Measured
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Construction
@@ -47,9 +48,32 @@ def _velocity(study):
     return velocity_polygon(s.mechanism, study.get("position"), s.omega)
 
 
+def _alpha(study) -> float:
+    """The crank's angular acceleration: the scene's alpha, or (only when the scene gives a torque instead)
+    the analysis "crank alpha"."""
+    return study.scene.alpha if study.scene.torque is None else study.get("crank alpha")
+
+
+def _crank_alpha(study) -> float:
+    """The alpha at which the torque on the crank is the scene's torque, from the equilibrium system of all
+    links (e.g. torque 0 for a body released from rest)."""
+    s = study.scene
+    from constructions.forces.equilibrium import alpha_for_torque
+    return alpha_for_torque(s.mechanism, s.angle, s.omega, _effects(study), s.torque,
+                            guess=study.get("position").positions)
+
+
+def _alpha_by_virtual_work(study) -> float:
+    """The same alpha again by the power balance: the independent check of :func:`_crank_alpha`."""
+    from constructions.forces.equilibrium import alpha_for_torque
+    s = study.scene
+    return alpha_for_torque(s.mechanism, s.angle, s.omega, _effects(study), s.torque,
+                            guess=study.get("position").positions, by="virtual work")
+
+
 def _acceleration(study):
     s = study.scene
-    return acceleration_polygon(s.mechanism, study.get("velocity"), s.alpha)
+    return acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
 
 
 def _effects(study):
@@ -70,8 +94,9 @@ def _force_check(study):
     from constructions.forces.equilibrium import equilibrium, virtual_work_torque
     s, e = study.scene, _effects(study)
     guess = study.get("position").positions
-    eq = equilibrium(s.mechanism, s.angle, s.omega, s.alpha, e, guess=guess)
-    vw = virtual_work_torque(s.mechanism, s.angle, s.omega, s.alpha, e, friction=eq.friction or None, guess=guess)
+    alpha = _alpha(study)
+    eq = equilibrium(s.mechanism, s.angle, s.omega, alpha, e, guess=guess)
+    vw = virtual_work_torque(s.mechanism, s.angle, s.omega, alpha, e, friction=eq.friction or None, guess=guess)
     return eq, vw
 
 
@@ -79,7 +104,7 @@ def _analytic(study):
     """The vector-loop solution, None where it does not assemble, or the NotModelled reason."""
     s = study.scene
     try:
-        return analytic_solution(s.mechanism, s.angle, s.omega, s.alpha,
+        return analytic_solution(s.mechanism, s.angle, s.omega, _alpha(study),
                                  accelerations=study.computed("acceleration") is not None,
                                  guess=study.get("position").positions)
     except NotModelled as e:
@@ -96,6 +121,8 @@ def _measured(study) -> list:
         r = study.computed(name)
         if r is not None:
             out += r.measured(m)
+    if study.scene.torque is not None:
+        out.append(Measured(f"alpha_{m.crank}", "angular acceleration", study.get("crank alpha")))
     f = study.result("forces")
     if f is not None:
         got = f.measured(m)
@@ -123,6 +150,8 @@ def _analytic_values(study):
     out: dict = {}
     if study.computed("velocity") is not None:
         out.update(analytic_values(study.scene.mechanism, _solution(study)) or {})
+    if study.scene.torque is not None:
+        out[f"alpha_{study.scene.mechanism.crank}"] = study.get("alpha check")
     if study.asked("forces"):
         eq, vw = study.get("force check")
         out.update(eq.values(study.scene.mechanism))
@@ -142,6 +171,12 @@ def _construction(study) -> Construction:
 
 def _notes(study) -> tuple[str, ...]:
     w: list[str] = []
+    s = study.scene
+    if s.torque is not None:
+        u, n = s.units, s.mechanism.crank
+        w.append(f"\u03b1_{n} follows from the torque on the crank, T_{n} = {u.format('torque', s.torque)}"
+                 + (", released from rest" if s.omega == 0 else "")
+                 + f": its first column from the equilibrium of all links, its second by virtual work.")
     k = study.get("classification")
     if k is not None:
         line = k.summary()
@@ -235,6 +270,9 @@ LINKAGE = register(Family(
         "classification": Analysis("classification", (), _classification),
         "position": Analysis("position", ("classification",), _position),
         "velocity": Analysis("velocity", ("position",), _velocity),
+        "crank alpha": Analysis("crank alpha", ("position",), _crank_alpha, label="alpha from the torque"),
+        "alpha check": Analysis("alpha check", ("position",), _alpha_by_virtual_work,
+                                label="alpha by virtual work"),
         "acceleration": Analysis("acceleration", ("velocity",), _acceleration),
         "analytic": Analysis("analytic", ("position",), _analytic, label="analytic check"),
         "forces": Analysis("forces", ("position",), _forces, label="force polygons"),

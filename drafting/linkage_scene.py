@@ -121,7 +121,7 @@ def read_linkage(r, units: Units) -> dict:
         if sl.joint not in points and sl.number is None:
             raise r.fail(f"slider[{i}].number", f"joint {sl.joint} is on no link, so it needs a block (a number)")
 
-    inp = r.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha"}, {"link", "angle"})
+    inp = r.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha", "torque"}, {"link", "angle"})
     crank_no = r.number("input.link", inp["link"])
     crank = next((x for x in links if x.number == crank_no), None)
     if crank is None:
@@ -131,7 +131,7 @@ def read_linkage(r, units: Units) -> dict:
     angle = r.quantity("input.angle", inp["angle"], "angle", units)
     sense = inp.get("sense")
     if ("omega" in inp) == ("tip_speed" in inp):
-        raise r.fail("input", "give exactly one of omega (e.g. \"10 rad/s\", \"120 rpm\") or "
+        raise r.fail("input", "give exactly one of omega (e.g. \"10 rad/s\", \"120 rpm\"; 0 at rest) or "
                                  "tip_speed (e.g. \"500 mm/s\")")
     if "omega" in inp:
         omega = r.quantity("input.omega", inp["omega"], "angular velocity", units)
@@ -140,10 +140,17 @@ def read_linkage(r, units: Units) -> dict:
         if speed < 0:
             raise r.fail("input.tip_speed", "is a speed: give it positive and set sense = \"cw\" or \"ccw\"")
         omega = speed / crank.length
-    omega = r.signed("input.sense", "omega", omega, inp.get("omega"), sense)
-    if omega == 0 or not math.isfinite(omega):
-        raise r.fail("input", "the crank must turn: omega or tip_speed must not be zero")
+    if omega != 0:
+        omega = r.signed("input.sense", "omega", omega, inp.get("omega"), sense)
+    elif sense is not None:
+        raise r.fail("input.sense", "a crank at rest (omega = 0) has no sense of rotation")
+    if not math.isfinite(omega):
+        raise r.fail("input", "omega or tip_speed must be a finite number")
+    if "alpha" in inp and "torque" in inp:
+        raise r.fail("input", "give alpha (the crank's angular acceleration) or torque (the torque on the "
+                              "crank, from which alpha follows), not both")
     alpha = r.quantity("input.alpha", inp.get("alpha", 0), "angular acceleration", units)
+    torque = r.quantity("input.torque", inp["torque"], "torque", units) if "torque" in inp else None
 
     assembly = r.named_table("assembly")
     branches = {r.name(f"assembly.{j}", j): _branch(r, f"assembly.{j}", v) for j, v in assembly.items()}
@@ -158,7 +165,11 @@ def read_linkage(r, units: Units) -> dict:
         key = "assembly" if "branch" in text or "assemblies" in text else "link"
         raise r.fail(key, str(e)) from None
     m, effects = read_effects(r, units, m)
-    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "effects": effects}
+    if torque is not None and not effects.inertial:
+        raise r.fail("input.torque", "a torque on the crank sets its angular acceleration only through "
+                                     "masses: give the moving links a [[mass]], or give alpha instead")
+    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "torque": torque,
+            "effects": effects}
 
 
 def _branch(r, key: str, value: Any) -> Branch:

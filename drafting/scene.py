@@ -48,9 +48,9 @@ class SceneError(Exception):
 class Scene:
     """A read scene: the shared sections (drawing, units, what it asks) and its family's own state.
 
-    A linkage fills ``mechanism``, the input (``angle``, ``omega``, ``alpha``) and the ``effects`` it
-    declares (loads, masses, gravity, springs, friction; none unless the scene gives them); another
-    family puts its model in ``model``."""
+    A linkage fills ``mechanism``, the input (``angle``, ``omega``, ``alpha`` or the ``torque`` it follows
+    from) and the ``effects`` it declares (loads, masses, gravity, springs, friction; none unless the scene
+    gives them); another family puts its model in ``model``."""
 
     path: Path
     title: str
@@ -65,6 +65,7 @@ class Scene:
     angle: float = 0.0    # crank angle, rad CCW from +x
     omega: float = 0.0    # crank angular velocity, rad/s CCW positive
     alpha: float = 0.0    # crank angular acceleration, rad/s^2 CCW positive
+    torque: float | None = None   # torque on the crank, N m CCW positive: alpha follows from it (not given)
     model: Any = None
     effects: Effects = NO_EFFECTS
 

@@ -67,6 +67,10 @@ def run_sweep(path: Path, steps: int | None = None, every: str | None = None):
         raise SweepInputError(str(e)) from None
     if scene.mechanism is None:
         raise SweepInputError(f"{printable(str(path))}: a sweep needs a linkage scene, not a {scene.kind} scene")
+    if scene.torque is not None:
+        raise SweepInputError(f"{printable(str(path))}: input.torque: a sweep needs the crank's motion (omega and "
+                              f"alpha); at a given torque the motion over the cycle is a simulation, which "
+                              f"this version does not run")
     thetas = crank_angles(scene.angle, steps, every)
     try:
         result = sweep(scene.mechanism, thetas, scene.omega, scene.alpha)

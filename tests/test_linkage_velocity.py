@@ -484,10 +484,19 @@ def test_change_point_is_named_a_change_point_with_a_coupler_point():
     assert err.value.kind == "change point"
 
 
-def test_a_stopped_crank_is_degenerate_input():
+def test_a_stopped_crank_is_at_rest_and_an_infinite_speed_is_refused():
+    """omega = 0 (released from rest): every velocity exactly zero, nothing drawn, nothing measured -- the
+    names those of the moving polygon; an infinite or NaN speed stays degenerate input."""
     m = slider_crank((0.0, 0.0), 0.05, 0.094, (0.0, 0.0), 0.0, 1)
-    with pytest.raises(DegenerateInput, match="crank speed"):
-        velocity_polygon(m, locate(m, 1.0), 0.0)
+    rest, moving = velocity_polygon(m, locate(m, 1.0), 0.0), velocity_polygon(m, locate(m, 1.0), 3.0)
+    assert rest.at_rest and set(rest.velocities) == set(moving.velocities)
+    assert set(rest.relative) == set(moving.relative) and set(rest.angular) == set(moving.angular)
+    assert all(v == Vec(0.0, 0.0) for v in list(rest.velocities.values()) + list(rest.relative.values()))
+    assert all(w == 0.0 for w in rest.angular.values())
+    assert rest.measured(m) == [] and not list(rest.construction.entities())
+    for bad in (math.inf, math.nan):
+        with pytest.raises(DegenerateInput, match="crank speed"):
+            velocity_polygon(m, locate(m, 1.0), bad)
 
 
 # -- scale invariance ---------------------------------------------------------------------------------

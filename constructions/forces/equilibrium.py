@@ -343,13 +343,20 @@ def virtual_work_torque(m: Mechanism, angle: float, omega: float, alpha: float, 
 
 
 def alpha_for_torque(m: Mechanism, angle: float, omega: float, effects: Effects, torque: float = 0.0, *,
-                     guess: Mapping[str, Vec] | None = None) -> float:
+                     guess: Mapping[str, Vec] | None = None, by: str = "equilibrium") -> float:
     """The crank's angular acceleration at which the driving torque equals ``torque`` (0: the mechanism
-    moves freely, e.g. released from rest).  The torque of :func:`equilibrium` is affine in alpha (the
-    accelerations are), so two evaluations fix it and a third refines the root.  With friction it is
-    affine only while the normal forces keep their directions."""
+    moves freely, e.g. released from rest).  The torque is affine in alpha (the accelerations are), so two
+    evaluations fix it and a third refines the root.  ``by`` chooses whose torque: "equilibrium" (the
+    linear system of all links) or "virtual work" (the power balance), two independent routes to the same
+    alpha.  With friction it is affine only while the normal forces keep their directions."""
     def t(al: float) -> float:
+        if by == "virtual work":
+            eq = equilibrium(m, angle, omega, al, effects, guess=guess) if effects.friction else None
+            return virtual_work_torque(m, angle, omega, al, effects, guess=guess,
+                                       friction=eq.friction if eq is not None else None)
         return equilibrium(m, angle, omega, al, effects, guess=guess).torque
+    if by not in ("equilibrium", "virtual work"):
+        raise ValueError(f"by must be 'equilibrium' or 'virtual work', not {by!r}")
     t0, t1 = t(0.0), t(1.0)
     slope = t1 - t0
     if not effects.inertial or slope == 0.0:

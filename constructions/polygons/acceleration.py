@@ -86,9 +86,11 @@ class AccelerationAnalysis:
         c = self.worst_condition
         out = [Measured(f"A_{n}", "acceleration", a, c) for n, a in self.accelerations.items()
                if n not in m.ground]
+        rest = self.velocity.at_rest          # no normal or Coriolis parts: zero by the data, not measured
         for comps, sup in ((self.normal, "n"), (self.tangential, "t")):
-            out += [Measured(component_name(j, p, sup, m), "acceleration", a, c) for (j, p), a in comps.items()]
-        for comps in (self.coriolis, self.sliding):
+            if not (rest and sup == "n"):
+                out += [Measured(component_name(j, p, sup, m), "acceleration", a, c) for (j, p), a in comps.items()]
+        for comps in ((self.sliding,) if rest else (self.coriolis, self.sliding)):
             out += [Measured(name, "acceleration", a, c) for name, a in comps.items()]
         skip = {m.crank} | {s.number for s in m.slides}
         out += [Measured(f"alpha_{n}", "angular acceleration", al, c) for n, al in sorted(self.angular.items())

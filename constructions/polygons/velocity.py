@@ -49,6 +49,11 @@ class VelocityAnalysis:
     omega: float = 0.0
 
     @property
+    def at_rest(self) -> bool:
+        """omega = 0: nothing moves, nothing is drawn and nothing is measured."""
+        return self.omega == 0.0
+
+    @property
     def worst_condition(self) -> float:
         return min(self.conditions.values(), default=1.0)
 
@@ -60,12 +65,17 @@ class VelocityAnalysis:
 
     def scales(self) -> dict[str, float]:
         """The input's scale of each kind, against which small values are judged: |V_B| and |omega_1|."""
+        if self.at_rest:
+            return {}
         return {"velocity": max(v.norm() for v in self.velocities.values()),
                 "angular velocity": abs(self.omega)}
 
     def measured(self, m: Mechanism) -> list[Measured]:
         """Absolute velocities of the moving joints and points, relative velocities between moving
-        joints, and the angular velocities of the links that are neither the crank nor a slider block."""
+        joints, and the angular velocities of the links that are neither the crank nor a slider block (none
+        at rest: every one is zero by the scene's own data, not by construction)."""
+        if self.at_rest:
+            return []
         c = self.worst_condition
         out = [Measured(f"V_{n}", "velocity", v, c) for n, v in self.velocities.items() if n not in m.ground]
         out += [Measured(f"V_{j}{p}", "velocity", v, c) for (j, p), v in self.relative.items()
@@ -80,13 +90,29 @@ def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, scale: float | N
     """Draw the velocity polygon of ``m`` at ``pose`` with crank angular velocity ``omega`` (rad/s,
     CCW positive).  ``scale`` (SI units per paper mm) fixes the scale; by default the drawing chooses."""
     plan = assembly_plan(m)
-    if omega == 0.0 or not math.isfinite(omega):
-        raise DegenerateInput(f"the crank speed must be finite and non-zero, not {omega!r} rad/s")
+    if not math.isfinite(omega):
+        raise DegenerateInput(f"the crank speed must be finite, not {omega!r} rad/s")
     crank = plan[0]
     assert isinstance(crank, CrankTip)
+    if omega == 0.0:
+        return _rest(m, pose, crank, plan)
     poly = _Polygon(m, pose, crank, omega)
     poly.draw_plan(plan)
     return poly.analysis(scale)
+
+
+def _rest(m: Mechanism, pose: Pose, crank: CrankTip, plan) -> VelocityAnalysis:
+    """The mechanism at rest (omega = 0, e.g. released from rest): every velocity is zero, so the polygon
+    shrinks to its pole.  The names are those of the polygon at 1 rad/s (velocities are linear in omega),
+    the values exactly zero; the accelerations then have no normal and no Coriolis parts."""
+    unit = _Polygon(m, pose, crank, 1.0)
+    unit.draw_plan(plan)
+    n = crank.link.number
+    rec = Construction("Velocity polygon").then(
+        f"The mechanism is at rest (\u03c9_{n} = 0): every velocity is zero and the velocity polygon is its "
+        f"pole O_v alone.", kind=StepKind.GIVEN)
+    return VelocityAnalysis(rec, pose, {k: ORIGIN for k in unit.vel}, {k: ORIGIN for k in unit.rel},
+                            {k: 0.0 for k in unit.ang}, {}, None, (), 0.0)
 
 
 def _v(value: float) -> Value:
