@@ -257,8 +257,10 @@ def from_si(value: float, kind: str, unit: str) -> float:
 
 
 def unit_symbol(unit: str) -> str:
-    """How a unit is printed on a sheet: mm/s stays mm/s, degree becomes deg."""
-    return {"degree": "deg", "radian": "rad"}.get(unit, unit)
+    """How a unit is printed on a sheet: mm/s stays mm/s, degree becomes deg, a product is written with a
+    space as in "N m" (lbf*in -> lbf in; a power ** -> ^)."""
+    unit = {"degree": "deg", "radian": "rad"}.get(unit, unit)
+    return " ".join(unit.replace("**", "^").replace("*", " ").split())
 
 
 def format_value(value: float, kind: str, unit: str, digits: int = 4) -> str:
