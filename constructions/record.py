@@ -28,6 +28,7 @@ class Role(Enum):
     GIVEN = "given"            # what the problem states: links, pivots, guides
     KNOWN = "known"            # a vector known in magnitude and direction, drawn to scale
     TRIAL = "trial"            # a line of known direction through a known point; length unknown
+    AUXILIARY = "auxiliary"    # an auxiliary line of a method (Culmann's line): thin dashed
     RESULT = "result"          # a vector measured off the construction
     IMAGE = "image"            # a velocity/acceleration image of a link
     LABEL = "label"            # a point of the construction named as in the notes (O_v, b, c)
@@ -271,7 +272,8 @@ class Term:
     @property
     def symbol(self) -> str:
         sup = f"^{self.superscript}" if self.superscript else ""
-        return f"{self.quantity}_{self.subscript}{sup}"
+        sub = f"_{self.subscript}" if self.subscript else ""
+        return f"{self.quantity}{sub}{sup}"
 
     @property
     def marks(self) -> str:
@@ -280,7 +282,8 @@ class Term:
 
 @dataclass(frozen=True, slots=True)
 class VectorEquation:
-    """left-hand terms = right-hand terms, e.g. A_C^n + A_C^t = A_B^n + A_B^t + A_CB^n + A_CB^t."""
+    """left-hand terms = right-hand terms, e.g. A_C^n + A_C^t = A_B^n + A_B^t + A_CB^n + A_CB^t; with no
+    right-hand terms the left ones sum to zero (an equilibrium, P + F_32 + F_KL = 0)."""
 
     left: tuple[Term, ...]
     right: tuple[Term, ...]
@@ -297,7 +300,7 @@ class VectorEquation:
     def text(self, marks: bool = True) -> str:
         def side(terms: tuple[Term, ...]) -> str:
             return " + ".join(t.symbol + (f"({t.marks})" if marks else "") for t in terms)
-        return f"{side(self.left)} = {side(self.right)}"
+        return f"{side(self.left)} = {side(self.right) if self.right else '0'}"
 
     def __str__(self) -> str:
         return self.text()

@@ -231,6 +231,8 @@ class EquationItem(Item):
                 if i:
                     tokens.append((plain(" + ", size), None))
                 tokens.append((term_spans(t, size), t))
+            if side_i == 1 and not side:           # an equilibrium: the left-hand terms sum to zero
+                tokens.append((plain("0", size), None))
         # greedy wrap at operators; continuation lines indented
         lines: list[list[tuple[tuple[Span, ...], Term | None]]] = [[]]
         cur_w = 0.0

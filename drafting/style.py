@@ -131,6 +131,7 @@ LINE_STYLES: dict[Role, str] = {
     Role.KNOWN: "vector",          # vectors drawn to scale: thick
     Role.RESULT: "vector",
     Role.TRIAL: "trial",           # thin, continuous, extended past the crossing
+    Role.AUXILIARY: "hidden",      # thin dashed (ISO 128 type 02): Culmann's line
     Role.PATH: "path",             # loci: thin
     Role.IMAGE: "image",
     Role.LABEL: "trial",
@@ -148,6 +149,7 @@ AREA_STYLES: dict[Role, str] = {
     Role.KNOWN: "trial",
     Role.RESULT: "trial",
     Role.TRIAL: "trial",
+    Role.AUXILIARY: "trial",
     Role.PATH: "trial",
     Role.IMAGE: "image",           # velocity / acceleration images: light grey with a thin outline
     Role.LABEL: "trial",
