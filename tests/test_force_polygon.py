@@ -1,6 +1,8 @@
 """The graphical force analysis (free bodies, two- and three-force members, force polygons dyad by dyad)
-against the global equilibrium system and virtual work, the notes' static sample, and the hard cases:
-a dead centre, a polygon that cannot close, effects switched on and off."""
+against the global equilibrium system and virtual work, the notes' static sample, a slotted lever checked
+by hand, random slotted levers (pin or block, slot offset, springs), a slotted link pivoted on a moving
+joint, a joint carried along two lines, and the hard cases: a dead centre, polygons that cannot close,
+friction in slots, effects switched on and off."""
 
 from __future__ import annotations
 
@@ -12,15 +14,17 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 from constructions.check import compare
 from constructions.errors import IndeterminatePosition
 from constructions.forces.bodies import frame_number
-from constructions.forces.effects import Couple, Effects, Load, Mass
+from constructions.forces.bodies import Contact, SlotPin
+from constructions.forces.effects import Couple, Effects, End, Load, Mass, Spring
 from constructions.forces.equilibrium import equilibrium, virtual_work_torque
-from constructions.forces.polygon import force_analysis
+from constructions.forces.polygon import ForcesNotDrawn, force_analysis
 from constructions.geometry import Vec
-from constructions.linkage import Branch, Link, Mechanism, Slide, locate
+from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.record import Arrow, Point, TrialLine
-from test_linkage_velocity import four_bars, slider_cranks
+from constructions.record import Arrow, Dimension, Point, Segment, TrialLine
+from mechanisms import quick_return, rocker_with_slot, slot_and_guide
+from test_linkage_velocity import angles, coords, four_bars, sizes, slider_cranks, speeds, transmission
 
 
 def compressor(angle_deg: float = 45.0) -> tuple[Mechanism, float]:
@@ -97,10 +101,25 @@ def test_three_force_member_by_concurrency():
     assert "three-force member" in words and "Link 3 carries no load" in words
 
 
-def _random_effects(m: Mechanism, draw, with_mass: bool) -> Effects:
+def _random_effects(m: Mechanism, draw, with_mass: bool, springs: bool = False) -> Effects:
     bodies = {k.number: m.points_of(k.number) for k in m.links}
     bodies.update({b: (s.joint,) for b, s in m.blocks().items()})
     numbers = sorted(bodies)
+    spring_list, fixed = [], {}
+    for i in range(draw(st.integers(0, 2)) if springs else 0):
+        # from a point of a body to a fixed anchor or to a point of another body, stretched or compressed
+        b = draw(st.sampled_from(numbers))
+        a = End(b, draw(st.sampled_from(bodies[b])))
+        others = [x for x in numbers if x != b]
+        if others and draw(st.booleans()):
+            o = draw(st.sampled_from(others))
+            far = End(o, draw(st.sampled_from(bodies[o])))
+        else:
+            name = f"K{i} anchor"
+            fixed[name] = Vec(draw(st.floats(-1.5, 1.5)), draw(st.floats(-1.5, 1.5))) * m.size
+            far = End(None, name)
+        spring_list.append(Spring(f"K{i}", a, far, draw(st.floats(10.0, 1000.0)) / m.size,
+                                  draw(st.floats(0.0, 2.0)) * m.size))
     loads = []
     for i in range(draw(st.integers(1, 3))):
         b = draw(st.sampled_from(numbers))
@@ -114,7 +133,8 @@ def _random_effects(m: Mechanism, draw, with_mass: bool) -> Effects:
                             draw(st.floats(0.0, 1.0)) * m.size ** 2)
                        for b in numbers if draw(st.booleans()))
     gravity = Vec(0.0, -9.81) if draw(st.booleans()) else None
-    return Effects(loads=tuple(loads), couples=couples, masses=masses, gravity=gravity)
+    return Effects(loads=tuple(loads), couples=couples, masses=masses, gravity=gravity, springs=tuple(spring_list),
+                   fixed=fixed)
 
 
 @st.composite
@@ -124,17 +144,199 @@ def loaded(draw):
     return m, theta, omega, draw(st.floats(-500.0, 500.0)), effects
 
 
-@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(case=loaded())
-def test_random_loaded_mechanisms_graphical_equals_linear_system_equals_virtual_work(case):
-    m, theta, omega, alpha, effects = case
+def three_ways(m, theta, omega, alpha, effects):
+    """The graphical analysis, checked: every force against the equilibrium system, the torque against virtual
+    work, to 1e-9 of its polygon's scale."""
     fa = solve(m, theta, effects, omega, alpha)
     eq = equilibrium(m, theta, omega, alpha, effects)
     rows = compare(fa.measured(m), eq.values(m), fa.scales())
     bad = [(r.name, r.relative, r.tolerance) for r in rows if not r.agrees]
-    assert not bad
+    assert rows and not bad
     vw = virtual_work_torque(m, theta, omega, alpha, effects)
     assert fa.torque == pytest.approx(vw, rel=1e-9, abs=1e-9 * fa.scales()["torque"])
+    return fa, eq
+
+
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=loaded())
+def test_random_loaded_mechanisms_graphical_equals_linear_system_equals_virtual_work(case):
+    three_ways(*case)
+
+
+# -- slots: the slotted lever (RPR), a slotted link on a moving pivot, a joint on two lines (PRP) -------------
+
+@st.composite
+def slotted_levers(draw):
+    """A crank O1A (link 1) whose pin A -- bare, or carrying a block (link 2) -- runs in the slot of a lever
+    O2P (link 3) pivoted on the frame; the slot on the lever's line or turned from it and offset from O2 (up
+    to 0.8 of O2A at this pose, so the slot's force keeps an arm about O2 of at least 0.6 O2A); a point E on
+    the lever; sometimes a rod PQ (link 4) driving a ram (block 5) on a guide, as in the shaper."""
+    unit = draw(sizes)
+    o1 = Vec(draw(coords), draw(coords))
+    o2 = o1 + Vec.polar(unit * draw(st.floats(1.3, 4.0)), draw(angles))    # O1O2 > O1A: the lever rocks
+    theta = draw(angles)
+    a = o1 + Vec.polar(unit, theta)
+    rho = a.distance_to(o2)
+    offset = 0.0 if draw(st.booleans()) else rho * draw(st.floats(-0.8, 0.8))
+    turn = 0.0 if draw(st.booleans()) else draw(st.floats(-1.0, 1.0))
+    block = draw(st.booleans())
+    lever = unit * draw(st.floats(0.5, 6.0))
+    points = (Attached("E", 3, "O2", lever * draw(st.floats(0.1, 1.5)), draw(angles)),)
+    links = [Link(1, ("O1", "A"), unit), Link(3, ("O2", "P"), lever)]
+    slides = [Slide(2 if block else None, "A", Vec(0.0, 0.0), turn, on=3, offset=offset)]
+    branches = {"A": Branch(draw(st.sampled_from([1, -1])), ("O2",))}
+    m = Mechanism({"O1": o1, "O2": o2}, tuple(links), tuple(slides), points, 1, branches)
+    if draw(st.booleans()):
+        p = locate(m, theta).positions["P"]
+        rod = unit * draw(st.floats(0.5, 4.0))
+        psi = draw(angles)
+        q = p + Vec.polar(rod, psi)
+        g = psi + math.pi / 2 + draw(transmission())    # the ram's guide through Q, >= 3.4 deg off square to PQ
+        branches["Q"] = Branch(1 if (q - p).dot(Vec.polar(1.0, g)) > 0 else -1, ("P",))
+        m = Mechanism(m.ground, (*links, Link(4, ("P", "Q"), rod)), (*slides, Slide(5, "Q", q, g)), points, 1,
+                      branches)
+    return m, theta, draw(speeds)
+
+
+@st.composite
+def loaded_slotted(draw):
+    m, theta, omega = draw(slotted_levers())
+    effects = _random_effects(m, draw, draw(st.booleans()), springs=True)
+    return m, theta, omega, draw(st.floats(-500.0, 500.0)), effects
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=loaded_slotted())
+def test_random_slotted_levers_graphical_equals_linear_system_equals_virtual_work(case):
+    fa, _ = three_ways(*case)
+    assert "link 3" in fa.conditions or "links 3, 2" in fa.conditions
+    words = " ".join(s.words for s in fa.construction.steps)
+    assert "Moments about O2 on link 3" in words and "perpendicular distance" in words
+
+
+def slotted_lever_by_hand(block=False):
+    """O2 = (0, 0), O1 = (0, 0.1); the crank O1A = 50 mm at 0 deg puts A at (0.05, 0.1), so the lever O2P
+    (250 mm, slot along it, no offset) stands along u = (1, 2)/sqrt(5) with O2A = sqrt(0.0125) m."""
+    return Mechanism({"O1": Vec(0.0, 0.1), "O2": Vec(0.0, 0.0)},
+                     (Link(1, ("O1", "A"), 0.05), Link(3, ("O2", "P"), 0.25)),
+                     (Slide(2 if block else None, "A", Vec(0.0, 0.0), 0.0, on=3),), (), 1, {"A": Branch(1, ("O2",))})
+
+
+@pytest.mark.parametrize("block", [False, True])
+def test_slotted_lever_checked_by_hand(block):
+    """Q = 10 N along -x at the lever's tip P = 0.25 u.  Its moment about O2 is 0.25 u_y 10 = 2.5 (2/sqrt 5) N m
+    CCW; the pin's force on the lever acts at A square to the lever, arm O2A = sqrt(0.0125) m, so it is
+    2.5 (2/sqrt 5) / sqrt(0.0125) = 20 N, and the lever pushes the pin with 20 N along n = (-2, 1)/sqrt(5).
+    The frame holds the lever with -Q + 20 n = (10 - 40/sqrt 5, 20/sqrt 5) N.  On the crank the 20 N n at
+    A = O1 + (0.05, 0) has the moment 0.05 x 20 n_y = 1/sqrt(5) N m CCW, so the driver holds it with
+    T_1 = -1/sqrt(5) N m (clockwise).  A block on the pin carries nothing else: the crank pin pushes it
+    with -20 n."""
+    m = slotted_lever_by_hand(block)
+    q = Effects(loads=(Load("Q", 3, "P", Vec(-10.0, 0.0)),))
+    fa, eq = three_ways(m, 0.0, 10.0, 0.0, q)
+    r5 = math.sqrt(5.0)
+    n = Vec(-2.0, 1.0) / r5
+    got = {x.name: x.value for x in fa.measured(m)}
+    on = "F_32" if block else "F_31"                     # the lever on the block, or on the crank's pin
+    assert got[on].distance_to(n * 20.0) < 1e-12
+    assert got["F_03"].distance_to(Vec(10.0 - 40.0 / r5, 20.0 / r5)) < 1e-12
+    assert fa.torque == pytest.approx(-1.0 / r5, rel=1e-12)
+    if block:
+        assert got["F_21"].distance_to(n * 20.0) < 1e-12     # the block on the crank pin: the same push
+    assert fa.conditions["links 3, 2" if block else "link 3"] == pytest.approx(1.0, rel=1e-12)   # arm = O2A
+    fbd = [e for e in fa.construction.entities() if e.diagram.kind == "free-body" and e.diagram.name == "link 3"]
+    h = next(e for e in fbd if isinstance(e, Dimension))
+    assert h.start == Vec(0.0, 0.0) and h.end.distance_to(Vec(0.05, 0.1)) < 1e-15      # O2 to the foot at A
+    assert any(isinstance(e, Segment) and "slot" in e.name for e in fbd)
+    step = next(s for s in fa.construction.steps if "Moments about O2 on link 3" in s.words)
+    assert dict(step.values)["f"].value == pytest.approx(20.0, rel=1e-12)
+    assert dict(step.values)["h"].value == pytest.approx(math.sqrt(0.0125), rel=1e-12)
+
+
+def slot_on_a_moving_pivot():
+    """A four-bar O1-B-C-O2 whose joint C also pivots link 4 (C-D); link 4's slot, 10 mm off C, passes
+    through the point E of the crank: an RPR dyad whose slotted link turns about a moving joint."""
+    return Mechanism({"O1": Vec(0.0, 0.0), "O2": Vec(0.1, 0.0)},
+                     (Link(1, ("O1", "B"), 0.04), Link(2, ("B", "C"), 0.1), Link(3, ("O2", "C"), 0.08),
+                      Link(4, ("C", "D"), 0.12)),
+                     (Slide(None, "E", Vec(0.0, 0.0), 0.0, on=4, offset=0.01),),
+                     (Attached("E", 1, "O1", 0.025, 0.5),), 1, {"C": Branch(1, ("B", "O2")), "E": Branch(1, ("C",))})
+
+
+@st.composite
+def loaded_fixed_slots(draw):
+    """The slotted link on a moving pivot, and the joint carried along two lines (a block or a bare pin in
+    the slot), at a random crank angle, with random effects."""
+    m = draw(st.sampled_from([slot_on_a_moving_pivot(), slot_and_guide(), slot_and_guide(pin=True)]))
+    # the two-lines mechanism where its rocker leans well off the vertical guide (J within 0.2 m of O1)
+    theta = draw(st.floats(0.3, 2.0) if "E" in m.points_of(1) else st.floats(1.8, 5.8))
+    effects = _random_effects(m, draw, draw(st.booleans()), springs=True)
+    return m, theta, draw(speeds), draw(st.floats(-500.0, 500.0)), effects
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(case=loaded_fixed_slots())
+def test_slot_on_a_moving_pivot_and_two_lines_agree_three_ways(case):
+    fa, _ = three_ways(*case)
+    words = " ".join(s.words for s in fa.construction.steps)
+    if "E" in case[0].points_of(1):
+        # the slotted link's bearing force at C is the force of link 2 (C's carrier) on it
+        assert "Moments about C on link 4" in words and "F_24 at C closes" in words
+    else:
+        assert "at J" in words and "\u22a5 guide" in words and "\u22a5 slot of link 3" in words
+
+
+def test_the_slot_force_through_the_pivot_cannot_close():
+    # O1A = 50 mm straight down from O1 = (0, 0.1): A = (0, 0.05) is exactly the slot's offset from O2, so
+    # the slot is square to O2A and the pin's force on it acts along O2A, through the pivot
+    m = Mechanism({"O1": Vec(0.0, 0.1), "O2": Vec(0.0, 0.0)},
+                  (Link(1, ("O1", "A"), 0.05), Link(3, ("O2", "P"), 0.25)),
+                  (Slide(None, "A", Vec(0.0, 0.0), 0.0, on=3, offset=0.05),), (), 1, {"A": Branch(1, ("O2",))})
+    with pytest.raises(IndeterminatePosition) as e:
+        solve(m, -math.pi / 2, Effects(loads=(Load("Q", 3, "P", Vec(-10.0, 0.0)),)))
+    assert "cannot close" in str(e.value) and "passes through O2" in str(e.value)
+
+
+@pytest.mark.parametrize("deg", [20.0, 100.0, 200.0, 300.0])
+@pytest.mark.parametrize("block, offset", [(True, 0.0), (False, 0.0), (True, 0.02), (False, -0.03)])
+def test_friction_in_the_slot_leans_against_the_sliding(deg, block, offset):
+    m = quick_return(offset=offset, block=block)
+    mu = 0.2
+    key = 2 if block else "A"
+    rough = Effects(loads=(Load("P", 5, "Q", Vec(-50.0, 0.0)),), masses=(Mass(3, 1.0, "P", 5e-3),),
+                    friction={key: mu})
+    theta = math.radians(deg)
+    fa = solve(m, theta, rough, omega=10.0, alpha=20.0)
+    eq = equilibrium(m, theta, 10.0, 20.0, rough)
+    rows = compare(fa.measured(m), eq.values(m), fa.scales())
+    assert rows and all(r.agrees for r in rows)
+    (slot, (f, _)), = [(c, v) for c, v in fa.contacts.items() if isinstance(c, (Contact, SlotPin)) and c.guide == 3]
+    pose = locate(m, theta)
+    t = pose.lines["A"].direction
+    va = velocity_polygon(m, pose, 10.0)
+    slip = (va.velocities["A"] - va.velocities["A3"]).dot(t)
+    assert abs(f.dot(t)) == pytest.approx(mu * abs(f.dot(t.perp())), rel=1e-9)
+    assert f.dot(t) * slip < 0                                  # on the pin (or block): against its sliding
+    assert "friction angle" in " ".join(s.words for s in fa.construction.steps)
+
+
+def test_friction_for_a_pin_in_a_slot_is_not_left_out():
+    # the rocker-with-slot mechanism with a bare pin D in the slot, friction keyed by the joint
+    base = rocker_with_slot()
+    m = Mechanism(base.ground, base.links, (Slide(None, "D", Vec(0, 0), 0.0, on=3),), (), 1, base.branches)
+    rough = Effects(loads=(Load("P", 5, "D", Vec(0.0, -30.0)),), friction={"D": 0.25})
+    fa = solve(m, 0.8, rough, omega=10.0)
+    rows = compare(fa.measured(m), equilibrium(m, 0.8, 10.0, 0.0, rough).values(m), fa.scales())
+    assert rows and all(r.agrees for r in rows)
+    smooth = solve(m, 0.8, Effects(loads=rough.loads), omega=10.0)
+    assert fa.torque != pytest.approx(smooth.torque, rel=1e-6)
+
+
+def test_friction_on_a_joint_carried_along_two_lines_is_named():
+    m = slot_and_guide()
+    with pytest.raises(ForcesNotDrawn) as e:
+        solve(m, 0.2, Effects(loads=(Load("P", 6, "J", Vec(0.0, -30.0)),), friction={6: 0.2}), omega=10.0)
+    assert "two lines" in str(e.value) and "block 6" in str(e.value)
 
 
 def test_no_masses_no_accelerations_and_gravity_adds_exactly_the_weights():
