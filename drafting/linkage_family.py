@@ -21,6 +21,7 @@ from constructions.record import Construction
 
 from .families import Analysis, Family, register
 from .linkage_scene import SECTIONS, read_linkage
+from .unitset import direction_deg
 
 
 def _classification(study):
@@ -76,6 +77,11 @@ def _acceleration(study):
     return acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
 
 
+def _instant_centres(study):
+    from constructions.instant_centres import instant_centres
+    return instant_centres(study.scene.mechanism, study.get("position"), study.scene.omega)
+
+
 def _effects(study):
     return getattr(study.scene, "effects", None) or NO_EFFECTS
 
@@ -112,12 +118,13 @@ def _analytic(study):
 
 
 VIRTUAL_WORK = " (virtual work)"
+INSTANT_CENTRES = " (instant centres)"
 
 
 def _measured(study) -> list:
     m = study.scene.mechanism
     out = []
-    for name in ("velocity", "acceleration"):
+    for name in ("velocity", "acceleration", "instant centres"):
         r = study.computed(name)
         if r is not None:
             out += r.measured(m)
@@ -150,6 +157,11 @@ def _analytic_values(study):
     out: dict = {}
     if study.computed("velocity") is not None:
         out.update(analytic_values(study.scene.mechanism, _solution(study)) or {})
+    ic = study.computed("instant centres")
+    if ic is not None:
+        for x in ic.measured(study.scene.mechanism, suffix=""):
+            if x.name in out:
+                out[x.name + INSTANT_CENTRES] = out[x.name]
     if study.scene.torque is not None:
         out[f"alpha_{study.scene.mechanism.crank}"] = study.get("alpha check")
     if study.asked("forces"):
@@ -162,7 +174,7 @@ def _analytic_values(study):
 
 def _construction(study) -> Construction:
     c = study.get("position").construction
-    for name in ("velocity", "acceleration", "forces"):
+    for name in ("velocity", "acceleration", "forces", "instant centres"):
         r = study.computed(name)
         if r is not None:
             c = c + r.construction
@@ -194,7 +206,7 @@ def _notes(study) -> tuple[str, ...]:
 
 def _warnings(study) -> tuple[str, ...]:
     w: list[str] = []
-    for name in ("velocity", "acceleration", "forces"):
+    for name in ("velocity", "acceleration", "forces", "instant centres"):
         r = study.computed(name)
         if r is not None:
             w += [x for x in r.warnings if x not in w]
@@ -254,6 +266,14 @@ def _json(study) -> dict[str, Any]:
             for comps, sup in ((a.normal, "n"), (a.tangential, "t")) for (j, p), x in comps.items()}
         out["angular_acceleration"] = {f"alpha_{n}": u.rate_json(al, "angular acceleration")
                                        for n, al in sorted(a.angular.items())}
+    ic = study.computed("instant centres")
+    if ic is not None:
+        from constructions.instant_centres import centre_name
+        out["instant_centres"] = {
+            centre_name(q): ({"x": u.convert("length", c.at.x), "y": u.convert("length", c.at.y)} if c.finite
+                             else {"at_infinity": True, "direction_deg": direction_deg(c.direction) % 180})
+            for q, c in sorted(ic.centres.items())}
+        out["instant_centres_missing"] = [centre_name(q) for q in ic.missing]
     f = study.result("forces")
     if f is not None:
         rows = {x.name: x.value for x in f.measured(m)}
@@ -276,10 +296,12 @@ LINKAGE = register(Family(
         "acceleration": Analysis("acceleration", ("velocity",), _acceleration),
         "analytic": Analysis("analytic", ("position",), _analytic, label="analytic check"),
         "forces": Analysis("forces", ("position",), _forces, label="force polygons"),
+        "instant centres": Analysis("instant centres", ("velocity",), _instant_centres,
+                                    label="instant centres (Kennedy)"),
         "force check": Analysis("force check", ("position",), _force_check,
                                 label="equilibrium system and virtual work"),
     },
-    askable=("position", "velocity", "acceleration", "forces"),
+    askable=("position", "velocity", "acceleration", "forces", "instant centres"),
     measured=_measured,
     analytic=_analytic_values,
     construction=_construction,

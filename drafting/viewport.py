@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Sequence
 
-from constructions.record import Arrow, Chart, Entity, Role, ScaleBar
+from constructions.record import Arrow, Chart, Entity, Point, Role, ScaleBar
 
 from . import layout as L
 from .chart import CHART_MIN, AxisUnits, draw_chart
@@ -36,6 +36,8 @@ from .transform import Transform
 VIEW_PAD = 7.0          # room around a drawing for its labels
 VECTOR_MIN_W = 90.0     # a vector panel is at least this wide (heading and scale bar side by side)
 SPACE_MIN_MM = 25.0     # the space diagram's larger side is at least this long at a legible scale
+LABEL_GAP_MM = 2.5      # ... and its labelled points this far apart on paper,
+LABEL_ROOM_MAX_MM = 150.0   # as long as that keeps its larger side within this
 POLYGON_MIN_MM = 40.0   # a polygon drawn at a scale the sheet chooses is at least this large
 POLYGON_AIM_MM = 50.0   # ... and aims at a known vector at least this long
 
@@ -79,6 +81,23 @@ class Figure:
     def size(self) -> float:
         """The larger side of the model points' bounding box (model units)."""
         return max(self.extent)
+
+    @property
+    def label_gap(self) -> float:
+        """The least distance between two labelled points at different places (model units; inf when
+        fewer than two)."""
+        pts = {(e.at.x, e.at.y) for e in self.entities if isinstance(e, Point) and e.label}
+        if len(pts) < 2:
+            return math.inf
+        tiny = 1e-9 * max(self.size, 1e-300)
+        best = math.inf
+        pts = sorted(pts)
+        for i, (x, y) in enumerate(pts):
+            for u, v in pts[i + 1:]:
+                d = math.hypot(u - x, v - y)
+                if tiny < d < best:
+                    best = d
+        return best
 
     def drawing(self, k: float) -> Drawing:
         d = self._draws.get(k)
@@ -184,13 +203,23 @@ class SpacePanel(Panel):
         return f"{self.title} {ratio_text(self.ratios[rung])}"
 
     def min_rung(self) -> int:
+        """The first rung at which the diagram is at least SPACE_MIN_MM and its labelled points at least
+        LABEL_GAP_MM apart (a crowd of labels, as in a diagram of instant centres, needs room to be read),
+        the second only as long as the diagram stays within LABEL_ROOM_MAX_MM."""
         size = self.figure.size
         if size <= 0:
             return self.ratios.index((1, 1))
+        gap = self.figure.label_gap
+        first = len(self.ratios) - 1
         for i in range(len(self.ratios)):
             if size * self.k(i) >= SPACE_MIN_MM:
-                return i
-        return len(self.ratios) - 1
+                first = i
+                break
+        i = first
+        while (gap * self.k(i) < LABEL_GAP_MM and i + 1 < len(self.ratios)
+               and size * self.k(i + 1) <= LABEL_ROOM_MAX_MM):
+            i += 1
+        return i
 
     def ppu(self, rung: int) -> float:
         return self.k(rung) / self.per_m                      # paper mm per display length unit
