@@ -36,7 +36,7 @@ from .forces.bodies import Contact, SlotPin, connections, frame_number, moving_b
 from .geometry import Vec
 from .linkage import Mechanism, Pose, slide_line
 from .quantities import Measured
-from .record import Bar, Construction, Diagram, Note, Point, Role, Segment, StepKind, Value
+from .record import Bar, Construction, Diagram, Point, Role, Segment, StepKind, Value
 
 DIAGRAM = Diagram("instant centres")
 CIRCLE = DIAGRAM
@@ -226,7 +226,7 @@ def instant_centres(m: Mechanism, pose: Pose, omega: float) -> InstantCentres:
                            f"bodies are in line); they cross at {centre_name(q)}"
                            + ("" if c.finite else ", at infinity")
                            + (", off the drawing at x = $x, y = $y" if far else "") + ".",
-                           *_kennedy_entities(c, found, fixed_lines.get(q, []), norm, pos, mid, size),
+                           *_kennedy_entities(c, found, norm, mid, size),
                            values={k: Value("length", v if abs(v) > 1e-12 * size else 0.0)
                                    for k, v in (("x", c.at.x), ("y", c.at.y))} if far else None,
                            kind=StepKind.CONSTRUCTION)
@@ -288,7 +288,7 @@ def _centre_entities(c: Centre, norm) -> tuple:
     return ()
 
 
-def _kennedy_entities(c: Centre, found, slot_lines, norm, pos, mid, size) -> tuple:
+def _kennedy_entities(c: Centre, found, norm, mid: Vec, size: float) -> tuple:
     """The found centre (if near) and its two lines, from the centres on them toward it, clipped to the
     region the diagram shows."""
     out = list(_centre_entities(c, norm))

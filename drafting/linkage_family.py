@@ -188,7 +188,7 @@ def _notes(study) -> tuple[str, ...]:
         u, n = s.units, s.mechanism.crank
         w.append(f"\u03b1_{n} follows from the torque on the crank, T_{n} = {u.format('torque', s.torque)}"
                  + (", released from rest" if s.omega == 0 else "")
-                 + f": its first column from the equilibrium of all links, its second by virtual work.")
+                 + ": its first column from the equilibrium of all links, its second by virtual work.")
     k = study.get("classification")
     if k is not None:
         line = k.summary()
