@@ -101,5 +101,5 @@ def test_a_new_family_keeps_its_own_sections(rod_family):
 def test_unknown_and_planned_kinds_are_named():
     with pytest.raises(SceneError, match="'cam' scenes are not available yet"):
         parse_scene('kind = "cam"\n')
-    with pytest.raises(SceneError, match="'spring' is not a scene kind; choose from linkage"):
+    with pytest.raises(SceneError, match="'spring' is not a scene kind; choose from free body, linkage"):
         parse_scene('kind = "spring"\n')
