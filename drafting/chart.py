@@ -46,22 +46,33 @@ def _si_symbol(kind: str) -> str:
 SI_AXES = AxisUnits(_si, _si_symbol)
 
 
-def ticks(lo: float, hi: float, length_mm: float, spacing_mm: float) -> tuple[float, float, float]:
-    """(first, last, step): the axis range widened to multiples of a 1-2-5 step with ticks at least
-    ``spacing_mm`` apart on an axis ``length_mm`` long."""
+DEGREE_STEPS = (1.0, 2.0, 5.0, 10.0, 15.0, 30.0, 45.0, 90.0, 180.0, 360.0)
+"""Tick steps of an axis in degrees: the divisions of a turn a drafter uses, not 1-2-5 (0, 90, 180 ...)."""
+
+
+def _step_at_least(x: float, steps: Sequence[float] | None) -> float:
+    if steps is None or not x <= steps[-1]:
+        return nice_step(x)
+    return next(v for v in steps if v >= x * (1 - 1e-12))
+
+
+def ticks(lo: float, hi: float, length_mm: float, spacing_mm: float,
+          steps: Sequence[float] | None = None) -> tuple[float, float, float]:
+    """(first, last, step): the axis range widened to multiples of a 1-2-5 step (or of one of ``steps``,
+    e.g. DEGREE_STEPS) with ticks at least ``spacing_mm`` apart on an axis ``length_mm`` long."""
     if not (math.isfinite(lo) and math.isfinite(hi)):
         lo, hi = 0.0, 1.0
     if hi - lo <= 1e-12 * max(abs(lo), abs(hi), 1.0):
         pad = abs(lo) * 0.1 or 1.0
         lo, hi = lo - pad, hi + pad
     n = max(1, int(length_mm // spacing_mm))
-    step = nice_step((hi - lo) / n)
+    step = _step_at_least((hi - lo) / n, steps)
     while True:
         first = math.floor(lo / step + 1e-9) * step
         last = math.ceil(hi / step - 1e-9) * step
         if (last - first) / step <= n:
             return first, last, step
-        step = nice_step(step * 1.01)
+        step = _step_at_least(step * 1.01, steps)
 
 
 def _runs(xs: Sequence[float], ys: Sequence[float]) -> list[list[tuple[float, float]]]:
@@ -119,7 +130,8 @@ def draw_chart(e: Chart, rect: Rect, units: AxisUnits = SI_AXES, region: str = "
     x_title = rich(f"{e.x_label} ({x_unit})" if x_unit else e.x_label, NUM)
     plot_top = top + (num_h + 1.5 if title_y else 0.0) + num_h / 2
     plot_bottom = rect.bottom - (TICK + 1.0 + num_h + 1.5 + num_h + 0.5)
-    y0, y1, ys_step = ticks(y_lo, y_hi, max(plot_bottom - plot_top, 1.0), 8.0)
+    y0, y1, ys_step = ticks(y_lo, y_hi, max(plot_bottom - plot_top, 1.0), 8.0,
+                            DEGREE_STEPS if unit_y == "deg" else None)
     y_labels = []
     v = y0
     while v <= y1 + ys_step * 1e-6:
@@ -128,7 +140,8 @@ def draw_chart(e: Chart, rect: Rect, units: AxisUnits = SI_AXES, region: str = "
     left_w = max(measure(plain(t, NUM)).width for _, t in y_labels) + TICK + 1.0
     plot_left = rect.x + left_w
     plot_right = rect.right - 2.0
-    x0, x1, xs_step = ticks(x_lo, x_hi, max(plot_right - plot_left, 1.0), 14.0)
+    x0, x1, xs_step = ticks(x_lo, x_hi, max(plot_right - plot_left, 1.0), 14.0,
+                            DEGREE_STEPS if x_unit == "deg" else None)
     if plot_right - plot_left < 20 or plot_bottom - plot_top < 15:
         from .errors import LayoutError
         raise LayoutError(f"the chart {name!r} needs at least {CHART_MIN[0]:.0f} x {CHART_MIN[1]:.0f} mm")

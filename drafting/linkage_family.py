@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+
+import numpy as np
 from typing import Any
 
 from constructions.classify import classify_four_bar
@@ -80,6 +82,21 @@ def _acceleration(study):
 def _instant_centres(study):
     from constructions.instant_centres import instant_centres
     return instant_centres(study.scene.mechanism, study.get("position"), study.scene.omega)
+
+
+SWEEP_STEPS = 360
+"""A sheet's sweep: one turn of the crank in steps of 1 deg (analytic and vectorised: milliseconds)."""
+
+
+def _sweep(study):
+    """The linkage over one turn of its crank from the drawn angle, and its charts and coupler curves."""
+    from constructions.cycle import cycle_record
+    from constructions.sweep import sweep
+    s = study.scene
+    thetas = s.angle + 2 * math.pi * np.arange(SWEEP_STEPS + 1) / SWEEP_STEPS
+    result = sweep(s.mechanism, thetas, s.omega, _alpha(study))
+    deg = s.units.format
+    return result, cycle_record(s.mechanism, result, study.get("classification"), lambda a: deg("angle", a))
 
 
 def _effects(study):
@@ -178,6 +195,9 @@ def _construction(study) -> Construction:
         r = study.computed(name)
         if r is not None:
             c = c + r.construction
+    sw = study.computed("sweep")
+    if sw is not None:
+        c = c + sw[1]
     return c
 
 
@@ -210,6 +230,13 @@ def _warnings(study) -> tuple[str, ...]:
         r = study.computed(name)
         if r is not None:
             w += [x for x in r.warnings if x not in w]
+    sw = study.computed("sweep")
+    if sw is not None and sw[0].gaps():
+        res, u = sw[0], study.scene.units
+        spans = ", ".join(f"{u.format('angle', float(res.thetas[i]))} to {u.format('angle', float(res.thetas[j - 1]))}"
+                          for i, j in res.gaps())
+        w.append(f"Over the turn the linkage cannot be assembled from {spans}: the charts and paths have gaps "
+                 f"there.")
     if study.computed("velocity") is not None:
         a = study.get("analytic")
         if isinstance(a, NotModelled):
@@ -266,6 +293,13 @@ def _json(study) -> dict[str, Any]:
             for comps, sup in ((a.normal, "n"), (a.tangential, "t")) for (j, p), x in comps.items()}
         out["angular_acceleration"] = {f"alpha_{n}": u.rate_json(al, "angular acceleration")
                                        for n, al in sorted(a.angular.items())}
+    sw = study.computed("sweep")
+    if sw is not None:
+        res = sw[0]
+        out["sweep"] = {"steps": int(res.thetas.size), "model": res.model,
+                        "assembled": int(np.count_nonzero(res.assembles)),
+                        "gaps_deg": [[math.degrees(float(res.thetas[i])), math.degrees(float(res.thetas[j - 1]))]
+                                     for i, j in res.gaps()]}
     ic = study.computed("instant centres")
     if ic is not None:
         from constructions.instant_centres import centre_name
@@ -298,10 +332,11 @@ LINKAGE = register(Family(
         "forces": Analysis("forces", ("position",), _forces, label="force polygons"),
         "instant centres": Analysis("instant centres", ("velocity",), _instant_centres,
                                     label="instant centres (Kennedy)"),
+        "sweep": Analysis("sweep", ("position",), _sweep, label="sweep over the cycle"),
         "force check": Analysis("force check", ("position",), _force_check,
                                 label="equilibrium system and virtual work"),
     },
-    askable=("position", "velocity", "acceleration", "forces", "instant centres"),
+    askable=("position", "velocity", "acceleration", "forces", "instant centres", "sweep"),
     measured=_measured,
     analytic=_analytic_values,
     construction=_construction,
@@ -313,5 +348,4 @@ LINKAGE = register(Family(
     sections=SECTIONS,
     read=read_linkage,
     default_analyses=("velocity",),
-    planned=("sweep",),
 ))

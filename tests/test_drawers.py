@@ -225,10 +225,10 @@ def test_a_chart_in_a_panel_of_its_own():
                                             "cam chart:series 2 run 2"]
     assert runs[0].style != runs[1].style or runs[0].name.split()[2] == runs[1].name.split()[2]
     assert {c.style for c in runs} == {"series 1", "series 2"}
-    # x ticks in degrees at a 1-2-5 step, y in mm
+    # x ticks in degrees at a division of the turn (30, 45, 90 ...), y in mm
     xs = [float(t.plain) for t in cmds if isinstance(t, Text) and t.name == "cam chart:number x"]
     steps = {round(b - a, 9) for a, b in zip(xs, xs[1:])}
-    assert len(steps) == 1 and steps.pop() in (50.0, 100.0, 20.0) and xs[0] <= 0 and xs[-1] >= 360
+    assert len(steps) == 1 and steps.pop() in (30.0, 45.0, 90.0) and xs[0] <= 0 and xs[-1] >= 360
     ys = [float(t.plain) for t in cmds if isinstance(t, Text) and t.name == "cam chart:number y"]
     assert min(ys) <= -20 and max(ys) >= 45
     units = {t.plain for t in cmds if isinstance(t, Text)}

@@ -70,7 +70,7 @@ BAD = [
     ('C = "ahead of B"', 'C = "left of B->O1"', "assembly", "relative to the joints"),
     ('[assembly]\nC = "ahead of B"', '', "assembly", "choose one"),
     ('joint = "C"', 'joint = "E"', "slider[1].joint", "on no link"),
-    ('analyses = ["velocity"]', 'analyses = ["sweep"]', "ask.analyses", "not available yet"),
+    ('analyses = ["velocity"]', 'analyses = ["sweeps"]', "ask.analyses", "not an analysis; choose from"),
     ('paper = "A4"', 'paper = "Letter"', "drawing.paper", "not a paper size"),
 ]
 

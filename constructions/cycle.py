@@ -1,0 +1,138 @@
+"""A linkage over its whole cycle, as a record to draw: charts against the crank angle and the paths of
+the scene's points on the space diagram.
+
+From a :class:`constructions.sweep.Sweep` (analytic, vectorised; NaN where the mechanism cannot be
+assembled) this builds
+
+- the output's motion: the rocker angle of the crank's four-bar, or the slider's travel along its guide;
+- the angular velocity and the angular acceleration of every link but the crank;
+- the transmission angle of the crank's four-bar with the usual 40-140 deg band shaded;
+- the coupler curve of every point the scene fixes to a link ([[point]]), drawn on the space diagram and
+  broken where the mechanism cannot be assembled (a gap is never bridged).
+
+Every chart shares the crank angle as its x axis, counted on from the drawn angle through one turn.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .classify import FourBarClass
+from .geometry import Vec
+from .linkage import Mechanism
+from .record import Chart, Construction, Curve, Diagram, Role, Series, StepKind
+from .sweep import Sweep
+
+BAND = (math.radians(40.0), math.radians(140.0), "40-140 deg")
+"""The usual range of a transmission angle (notes, "Transmission angle")."""
+
+
+def chart_diagram(name: str) -> Diagram:
+    return Diagram("chart", name)
+
+
+def transmission_angles(k: FourBarClass, s: Sweep) -> np.ndarray:
+    """The angle between coupler and rocker at C (rad, 0..pi) at every swept angle (NaN at gaps)."""
+    _, b, c, o2 = k.joints
+    bx, by = (np.asarray(a) for a in s.positions[b])
+    cx, cy = (np.asarray(a) for a in s.positions[c])
+    ox, oy = (np.asarray(a) for a in s.positions[o2]) if o2 in s.positions else (None, None)
+    if ox is None:
+        raise KeyError(o2)
+    ux, uy, vx, vy = bx - cx, by - cy, ox - cx, oy - cy
+    return np.abs(np.arctan2(ux * vy - uy * vx, ux * vx + uy * vy))
+
+
+def _rocker_angle(k: FourBarClass, s: Sweep) -> np.ndarray:
+    _, _, c, o2 = k.joints
+    cx, cy = (np.asarray(a) for a in s.positions[c])
+    ox, oy = (np.asarray(a) for a in s.positions[o2])
+    return np.unwrap(np.arctan2(cy - oy, cx - ox)) if np.all(np.isfinite(cx)) else np.arctan2(cy - oy, cx - ox)
+
+
+def _runs(x: np.ndarray, y: np.ndarray) -> list[tuple[Vec, ...]]:
+    """The stretches of a path between gaps (NaN), each as points."""
+    out: list[tuple[Vec, ...]] = []
+    cur: list[Vec] = []
+    for a, b in zip(x, y):
+        if math.isfinite(a) and math.isfinite(b):
+            cur.append(Vec(float(a), float(b)))
+        elif cur:
+            out.append(tuple(cur))
+            cur = []
+    if cur:
+        out.append(tuple(cur))
+    return out
+
+
+def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Construction:
+    """The charts and coupler curves of the sweep ``s``; ``degrees(rad)`` writes an angle for a caption."""
+    th = tuple(float(t) for t in s.thetas)
+    n = len(th)
+    step = (th[1] - th[0]) if n > 1 else 0.0
+    steps = n - 1 if n > 1 and abs(th[-1] - th[0] - 2 * math.pi) < 1e-9 else n
+    rec = Construction("Over the cycle").then(
+        f"Turn the crank through one turn from {degrees(th[0])} in {steps} steps of {degrees(step)}: at each the "
+        f"positions, velocities and accelerations come from the {s.model} (analytic), on the branch the scene "
+        f"chose.", kind=StepKind.GIVEN)
+
+    def series(label: str, y, kind: str) -> Series:
+        return Series(label, th, tuple(float(v) for v in y), kind)
+
+    # the output's motion
+    blocks = m.blocks()
+    if k is not None and k.joints[2] in s.positions and k.joints[3] in s.positions:
+        rec = rec.then("The rocker's angle O2C against the crank angle: the output's swing.",
+                       Chart("chart rocker angle", Role.GIVEN, chart_diagram("Output angle"), "angle", "crank angle",
+                             (series(f"rocker {k.joints[3]}{k.joints[2]}", _rocker_angle(k, s), "angle"),)),
+                       kind=StepKind.CONSTRUCTION)
+    elif blocks:
+        sl = next(iter(blocks.values()))
+        x, y = (np.asarray(a) for a in s.positions[sl.joint])
+        d = sl.line.direction if sl.on is None else None
+        if d is not None:
+            travel = (x - sl.line.point.x) * d.x + (y - sl.line.point.y) * d.y
+            rec = rec.then("The slider's travel along its guide against the crank angle (from the point the "
+                           "guide is given through).",
+                           Chart("chart slider travel", Role.GIVEN, chart_diagram("Slider travel"), "angle",
+                                 "crank angle", (series(f"block {sl.number} at {sl.joint}", travel, "length"),)),
+                           kind=StepKind.CONSTRUCTION)
+    others = [n_ for n_ in sorted(s.angular) if n_ != m.crank and n_ not in blocks]
+    if others:
+        rec = rec.then("The angular velocities of the links against the crank angle.",
+                       Chart("chart omega", Role.GIVEN, chart_diagram("Angular velocities"), "angle", "crank angle",
+                             tuple(series(f"\u03c9_{n_}", s.angular[n_], "angular velocity") for n_ in others)),
+                       kind=StepKind.CONSTRUCTION)
+        acc = [n_ for n_ in others if n_ in s.angular_acceleration]
+        if acc:
+            rec = rec.then("The angular accelerations of the links against the crank angle.",
+                           Chart("chart alpha", Role.GIVEN, chart_diagram("Angular accelerations"), "angle",
+                                 "crank angle", tuple(series(f"\u03b1_{n_}", s.angular_acceleration[n_],
+                                                             "angular acceleration") for n_ in acc)),
+                           kind=StepKind.CONSTRUCTION)
+    if k is not None and all(j in s.positions for j in k.joints[1:]):
+        mu = transmission_angles(k, s)
+        rec = rec.then("The transmission angle between coupler and rocker against the crank angle, the usual "
+                       "40-140 deg band shaded.",
+                       Chart("chart transmission", Role.GIVEN, chart_diagram("Transmission angle"), "angle",
+                             "crank angle", (series("\u03bc", mu, "angle"),), (BAND,)),
+                       kind=StepKind.CONSTRUCTION)
+    paths = []
+    for a in m.attached:
+        if a.name not in s.positions:
+            continue
+        x, y = (np.asarray(v) for v in s.positions[a.name])
+        for i, run in enumerate(_runs(x, y)):
+            if len(run) >= 2:
+                closed = not s.gaps() and len(run) == n
+                paths.append(Curve(f"path of {a.name} {i + 1}", Role.PATH, Diagram.SPACE, run, closed,
+                                   f"path of {a.name}" if i == 0 else None))
+    if paths:
+        names = sorted({p.name.split()[2] for p in paths})
+        rec = rec.then(f"The coupler curve{'s' if len(names) > 1 else ''} of {', '.join(names)}: the path over the "
+                       f"turn, on the space diagram" + (" (broken where the linkage cannot be assembled)."
+                                                         if s.gaps() else "."),
+                       *paths, kind=StepKind.CONSTRUCTION)
+    return rec
