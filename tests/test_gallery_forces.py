@@ -1,12 +1,14 @@
-"""The force gallery scenes through the whole pipeline: the notes' static sample, the bell crank, and that
-a scene runs only the analyses its effects call for."""
+"""The force gallery scenes through the whole pipeline: the notes' static sample, the bell crank, the notes'
+dynamic Examples 2 and 3, and that a scene runs only the analyses its effects call for."""
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import pytest
 
+from constructions.record import Arrow
 from drafting.scene import load_scene, parse_scene
 from drafting.study import Study
 
@@ -87,3 +89,38 @@ def test_notes_dynamic_example_2_within_drawing_accuracy():
     # the notes print v_C = -14.85 in/s; with their own omega_2 = -2.1 rad/s it is -22.74 in/s
     assert v["V_C"].graphical.x / inch == pytest.approx(-22.74, rel=1e-3)
     assert v["omega_2"].graphical == pytest.approx(-2.1, rel=1e-3)
+
+
+def test_notes_dynamic_example_3_as_derived():
+    """The notes' six-link mechanism with a roller, rebuilt in gallery/forces-derivations.md section 5 (the
+    roller as the pin R of link 2 in a slot of the lever 5 mm below it): the derivation's independent 9x9
+    Newton-Euler solve printed the values below; here the graphical construction -- the slot's force from the
+    moments about O5, the coupler as a three-force member -- the equilibrium system of all links and virtual
+    work must give them, and each other to 1e-9."""
+    s = study("notes-dynamic-example-3.toml")
+    v = values(s)
+    assert all(c.agrees for c in s.comparisons)
+    assert v["T_1 (virtual work)"].analytic == pytest.approx(v["T_1"].graphical, rel=1e-9)
+    for name in ("F_52", "F_05", "F_32", "F_21", "F_01"):
+        assert v[name].graphical.distance_to(v[name].analytic) <= 1e-9 * v[name].graphical.norm()
+    assert v["omega_2"].graphical == pytest.approx(-2.2767, abs=5e-5)
+    assert v["alpha_2"].graphical == pytest.approx(-40.351, abs=5e-4)
+    assert v["alpha_5"].graphical == pytest.approx(-71.872, abs=5e-4)       # CW, not the notes' CCW
+    f45 = -v["F_52"].graphical                                  # the roller (pin R) on the lever: up
+    assert (f45.x, f45.y) == (pytest.approx(0.0, abs=5e-4), pytest.approx(39.713, abs=5e-4))
+    f05 = v["F_05"].graphical
+    assert (f05.x, f05.y) == (pytest.approx(0.0, abs=5e-4), pytest.approx(-19.713, abs=5e-4))
+    f32 = v["F_32"].graphical                                   # link 3 pushes link 2 along 45 deg
+    assert f32.norm() == pytest.approx(63.676, abs=5e-4)
+    assert f32.x == pytest.approx(f32.y, abs=5e-4) and f32.x > 0
+    f12 = -v["F_21"].graphical                                  # the crank on the coupler at A
+    assert (f12.x, f12.y) == (pytest.approx(-44.055, abs=5e-4), pytest.approx(-5.939, abs=5e-4))
+    assert v["F_01"].graphical.distance_to(f12) < 5e-4         # G1 at O1 does not accelerate: F01 = F12
+    assert v["T_1"].graphical == pytest.approx(0.05839, abs=5e-6)   # CCW
+    words = " ".join(st.words for st in s.construction.steps)
+    assert "Moments about O5 on link 5" in words and "three-force member" in words
+    # the lever's forces are all vertical: its polygon's sides are drawn side by side, none on another
+    sides = [e for e in s.construction.entities() if isinstance(e, Arrow) and e.diagram.key == "force: link 5"]
+    assert len(sides) == 3
+    for a, b in itertools.combinations(sides, 2):
+        assert abs((b.tail - a.tail).cross((a.tip - a.tail).unit())) > 1.0      # N apart, square to their line

@@ -216,6 +216,12 @@ def _friction_lean(d: Drawing, knowns, normal: Vec, lean: Vec, along_link: Vec, 
                                 kind="friction lock")
 
 
+DEAD_CENTRE_ARM = 1e-12
+"""Below this arm (relative to the scene size) the crank's resultant passes through its pivot: a dead centre,
+no torque.  Rounding-level only: a larger arm is a small torque the check still expects (an arm of 1e-9 of
+the scene times a bearing force larger than the loads is a torque beyond the 1e-9 agreement)."""
+
+
 def driving_crank(d: Drawing, crank: CrankTip) -> None:
     """The crank: its bearing force closes its polygon; the driving torque is the resultant of the other
     forces times its perpendicular distance from the pivot."""
@@ -254,7 +260,7 @@ def driving_crank(d: Drawing, crank: CrankTip) -> None:
         ents.append(TrialLine(f"fbd {body_label(m, n)}: resultant line", Role.TRIAL, fb, line_pt, r, None))
         ents.append(Dimension(f"fbd {body_label(m, n)}: h", Role.DIMENSION, fb, pos[o], line_pt, 0.0, "h"))
     sense = "CCW" if torque > 0 else "CW" if torque < 0 else ""
-    if r.norm() > 0 and h <= 1e-9 * m.size and cpl == 0.0:
+    if r.norm() > 0 and h <= DEAD_CENTRE_ARM * m.size and cpl == 0.0:
         words = (f"The resultant force on the crank passes through {o} (a dead centre): h = 0, so no torque "
                  f"is needed to hold it: {t_name} = 0.")
         torque = 0.0

@@ -16,10 +16,16 @@ assembly order, so each has at most two unknown magnitudes when its polygon is d
   polygon of the dyad closes on the two directions along the links;
 - a slider block's guide pushes square to the guide (tilted by the friction angle when the scene sets
   mu, against the block's motion along the guide);
+- a slotted link turned about a known point until its slot passes through a known joint (RPR: inverted
+  slider-crank, slotted lever) takes the pin's force square to the slot; its moment about the link's
+  pivot gives its size (force x perpendicular distance) and the bearing force closes the link's polygon;
+- a joint carried along two lines (PRP) takes a force square to each, closing the blocks' polygon;
 - the crank is last: its bearing force closes its polygon and the driving torque is the resultant force
   times its perpendicular distance from the pivot (zero at a dead centre, where that distance is zero).
 
 Each solved pin force is carried to the body at the other side as a known force of its later polygon.
+The dyads are drawn in :mod:`.dyads` on the shared state of :mod:`.board`; this module runs them in order,
+draws the free bodies and records the result.
 """
 
 from __future__ import annotations
