@@ -67,7 +67,8 @@ def _notes(study) -> tuple[str, ...]:
             continue
         t = f.axial(s.name)
         what = s.what[:1].upper() + s.what[1:]
-        out.append(f"{what} ({s.end}{s.at}, {s.name}): {u.format('force', abs(t))} {_state(b, s.name, t)}.")
+        where = f"{s.end}{s.at}, " if s.label else ""          # an unlabelled member is named by its ends
+        out.append(f"{what} ({where}{s.name}): {u.format('force', abs(t))} {_state(b, s.name, t)}.")
     method = {"Culmann": "Culmann's method", "three-force concurrency": "three-force concurrency",
               "moments": "moments", "no load": "no load"}[f.method]
     out.append(f"Solved by {method}; checked against the body's three equations of equilibrium.")

@@ -204,6 +204,22 @@ def test_random_bodies_on_a_pin_and_one_line_agree_with_the_linear_system(body):
     _agrees(body)
 
 
+def test_a_load_along_a_support_line_with_the_other_two_parallel_is_solved_by_ritter():
+    """R lies on F_2's line and F_0, F_1 are parallel: Culmann has no K and L, moments about L do it
+    (found by hypothesis)."""
+    body = RigidBody("body", {"P0": Vec(1.0, 1.0), "P1": Vec(1.0, 0.0)},
+                     (Support("F_0", "member", "P0", "G0"), Support("F_1", "member", "P1", "G1"),
+                      Support("F_2", "member", "P0", "G2")),
+                     (Load("P", 0, "P0", Vec(1.0, 0.0)),),
+                     fixed={"G0": Vec(0.0, 0.0), "G1": Vec(0.0, 0.0), "G2": Vec(0.0, 1.0)})
+    got = free_body_analysis(body)
+    assert got.method == "moments" and "L" in got.points
+    assert (got.forces["F_2"] - Vec(-1.0, 0.0)).norm() <= 1e-15
+    assert got.forces["F_0"].norm() <= 1e-15 and got.forces["F_1"].norm() <= 1e-15
+    ref = equilibrium_solution(body).forces
+    assert all((got.forces[n] - f).norm() <= AGREE for n, f in ref.items())
+
+
 # -- improperly constrained and indeterminate bodies -----------------------------------------------------
 
 def _one_sentence(text: str) -> None:

@@ -27,7 +27,10 @@ The construction, as a drafter draws it:
    meet at I, so the pin force passes through the pin and I; the force triangle closes on those two
    directions.  Where R is (nearly) parallel to the support's line, I runs away: the support's force comes
    from the moments about the pin instead (force x perpendicular distance), as it does when the loads
-   reduce to a couple (no line for R).
+   reduce to a couple (no line for R);
+4. where the loads reduce to a couple, or where no pairing gives Culmann a well-placed K and L (R along one
+   support's line with the other two parallel), *Ritter's method*: two supports' lines meet at L, the
+   moments about L give the third support's force, and the polygon closes along the other two.
 
 Of the three ways to pair the supports in Culmann's method the best-conditioned is drawn (the sines at K,
 at L and of the triangle, and KL not too short), preferring, among those at least half as well
@@ -46,7 +49,7 @@ from ..errors import ConstructionError
 from ..geometry import Vec
 from ..polygons.common import WARN_SINE, rounding_estimate
 from ..quantities import Measured
-from ..record import (Arrow, Bar, Block, Circle, Construction, Diagram, Guide, Pivot, Plate, Point, Role, ScaleBar,
+from ..record import (AngleMark, Arrow, Bar, Block, Circle, Construction, Diagram, Guide, Pivot, Plate, Point, Role, ScaleBar,
                       Segment, StepKind, Term, TrialLine, Value, VectorEquation)
 from ..tolerance import DECISION, scene_size
 from .effects import Couple, Load
@@ -65,6 +68,8 @@ written beside it and drawn to scale on the force polygon)."""
 
 ROLLER_RADIUS = 0.04
 """A roller's radius on the space diagram, as a fraction of the body's size."""
+COUPLE_RADIUS = 0.15
+"""The arc of a couple on the space diagram (about the body's centre), as a fraction of the body's size."""
 
 Formatter = Callable[[str, float], str]
 
@@ -356,9 +361,14 @@ class _Drawing:
                               at, ld.name))
             values[f"p{i}"], values[f"a{i}"] = _v(ld.force.norm()), Value("angle", ld.force.angle() % (2 * math.pi))
             loads.append(f"{ld.name} = $p{i} at $a{i} at {ld.at}")
+        centre = _centre(b)
         for i, cp in enumerate(b.couples):
             values[f"c{i}"] = Value("torque", abs(cp.torque))
             loads.append(f"the couple {cp.name} = $c{i} {'CCW' if cp.torque > 0 else 'CW'}")
+            if cp.torque:                      # an arc about the body's centre, its arrow turning the couple's way
+                turn = math.copysign(1.5 * math.pi, cp.torque)
+                ents.append(AngleMark(f"couple {cp.name}", Role.LOAD, SPACE, centre, COUPLE_RADIUS * self.size,
+                                      math.pi / 4 + i * 0.5, math.pi / 4 + i * 0.5 + turn, cp.name))
         held = _listed([f"{s.what} ({s.name})" for s in b.supports])
         self.then(f"Space diagram: the {b.name} ({', '.join(pts)}) held by {held}; "
                   + (f"{', '.join(loads)}." if loads else "no load."), *ents, values=values, kind=StepKind.GIVEN)
@@ -410,6 +420,10 @@ class _Drawing:
                           "h": Value("length", abs(mo_ref) / self.R.norm())})
 
     # -- the force polygon ------------------------------------------------------------------------------
+    def r_term(self) -> tuple[Term, ...]:
+        """R in an equation, when the loads have a resultant force (a couple alone has none)."""
+        return (_term("R", True, True),) if self.knowns and self.R.norm() > 0 else ()
+
     def lay_off(self, equation: VectorEquation, then_along: Vec | None = None) -> None:
         """The known forces head to tail from the pole (and R when there are several).  The one least
         parallel to ``then_along`` (the line drawn next through their end) goes last, so that line does not
@@ -464,16 +478,13 @@ class _Drawing:
         self.then(f"Measure {', '.join(parts)}.", *arrows, values=values, kind=StepKind.ANSWER)
 
     # -- the methods ------------------------------------------------------------------------------------
-    def culmann(self) -> None:
+    def culmann(self, pairing: tuple) -> None:
+        """Culmann's method with ``pairing`` (a, b, c, K, L): R x a = K, b x c = L."""
         b = self.b
         sup = list(b.supports)
         lines = [b.line(s) for s in sup]
-        p_r, u_r = self.R_line
-        choice = _culmann_pairing(b, lines, p_r, u_r)
-        if choice is None:
-            raise ImproperlyConstrained(f"the {b.name} cannot be solved by Culmann's method: no pairing of its "
-                                        f"supports gives two points K and L")
-        ia, ib, ic, K, L = choice
+        u_r = self.R_line[1]
+        ia, ib, ic, K, L = pairing
         a, bb, cc = sup[ia], sup[ib], sup[ic]
         ua, ub, uc = lines[ia][1], lines[ib][1], lines[ic][1]
         self.points.update({"K": K, "L": L})
@@ -534,8 +545,7 @@ class _Drawing:
         self.then(f"{why}Moments about the pin {pin.at}: {other.name} \u00d7 its arm $h balances the moment of the "
                   f"loads about {pin.at} ($m), so {other.name} = $f.",
                   values={"h": Value("length", abs(arm)), "m": Value("torque", abs(mo)), "f": _v(f_b.norm())})
-        eq = VectorEquation((_term("R", True, True), _term(other.name, True, True), _term(pin.name, False, False)),
-                            ())
+        eq = VectorEquation(self.r_term() + (_term(other.name, True, True), _term(pin.name, False, False)), ())
         if self.knowns:
             self.lay_off(eq, ub)
         else:
@@ -546,45 +556,43 @@ class _Drawing:
         end = self.tip + f_b
         self.answer([(other.name, self.tip, end), (pin.name, end, ORIGIN)])
 
-    def moments_about_L(self) -> None:
-        """Three lines and loads that reduce to a couple: the support off L (where the other two lines
-        meet) takes the couple, by the moments about L; the other two balance it, resolved along their
-        lines."""
+    def ritter(self, why: str) -> None:
+        """Moments about L (Ritter's method), where the other two supports' lines meet: the third support's
+        force times its arm balances the moment of the loads about L; the polygon then closes along the
+        other two.  For loads that reduce to a couple, and where Culmann's K or L runs away (R along a
+        support's line with the other two parallel)."""
         b = self.b
         sup = list(b.supports)
         lines = [b.line(s) for s in sup]
-        best = None
-        for ia in range(3):
-            ib, ic = [k for k in range(3) if k != ia]
-            s = _sine(lines[ib][1], lines[ic][1])
-            if s < PARALLEL_SINE:
-                continue
-            L = _cross(*lines[ib], *lines[ic])
-            arm = (lines[ia][0] - L).cross(lines[ia][1])
-            cond = min(s, abs(arm) / self.size)
-            if best is None or cond > best[0]:
-                best = (cond, ia, ib, ic, L, arm)
-        _, ia, ib, ic, L, arm = best          # check_supports leaves at least one such pairing
+        _, ia, ib, ic, L, arm = _ritter_pairing(b, lines)
         a, bb, cc = sup[ia], sup[ib], sup[ic]
         _, mo = resultant(self.knowns, self.couple, L)
         f_a = lines[ia][1] * (-mo / arm)
         self.points["L"] = L
-        self.conds.append(_sine(lines[ib][1], lines[ic][1]))
+        self.conds += [_sine(lines[ib][1], lines[ic][1]), min(1.0, abs(arm) / self.size)]
         self.method = "moments"
-        self.then(f"The loads reduce to a couple (no resultant force). The lines of {bb.name} and {cc.name} meet "
-                  f"at L; moments about L: {a.name} \u00d7 its arm $h balances the couple $m, so {a.name} = $f.",
+        self.then(f"{why}The lines of {bb.name} and {cc.name} meet at L; moments about L: {a.name} \u00d7 its arm $h "
+                  f"balances the moment of the loads about L ($m), so {a.name} = $f.",
                   Point("L", Role.LABEL, SPACE, L, "L"),
                   values={"h": Value("length", abs(arm)), "m": Value("torque", abs(mo)), "f": _v(f_a.norm())})
-        self.tip = f_a
-        self.then(f"From the pole O_f lay off {a.name} at the force scale 1 mm = $s.",
-                  Point("pole", Role.LABEL, FORCE, ORIGIN, "O_f"),
-                  ScaleBar("force scale", Role.SCALE_BAR, FORCE, "force", None),
-                  Arrow(f"polygon result {a.name}", Role.RESULT, FORCE, ORIGIN, f_a, a.name),
-                  values={"s": Value("scale", None, "force")})
+        eq = VectorEquation(self.r_term() + (_term(a.name, True, True), _term(bb.name, False, True),
+                                             _term(cc.name, False, True)), ())
+        if self.knowns:
+            self.lay_off(eq, lines[ib][1])
+        else:
+            self.tip = ORIGIN
+            self.then("Pole O_f; force scale 1 mm = $s.", Point("pole", Role.LABEL, FORCE, ORIGIN, "O_f"),
+                      ScaleBar("force scale", Role.SCALE_BAR, FORCE, "force", None),
+                      values={"s": Value("scale", None, "force")}, equation=eq)
+        start = self.tip
+        end = start + f_a
+        self.then(f"Lay off {a.name} from {'the end' if self.knowns else 'O_f'}.",
+                  Arrow(f"polygon result {a.name}", Role.RESULT, FORCE, start, end, a.name))
+        self.tip = end
         y = self.close("bc", (bb.name, lines[ib][1], self.along(bb)), (cc.name, lines[ic][1], self.along(cc)),
-                       f_a, "its end", "y")
+                       end, "its end", "y")
         self.forces[a.name] = f_a
-        self.answer([(bb.name, f_a, y), (cc.name, y, ORIGIN)])
+        self.answer([(bb.name, end, y), (cc.name, y, ORIGIN)])
 
     def unloaded(self) -> None:
         self.method = "no load"
@@ -637,9 +645,9 @@ def _listed(items: list[str]) -> str:
 
 
 def _culmann_pairing(body: RigidBody, lines, p_r: Vec, u_r: Vec):
-    """The pairing (a; b, c) to draw: K = R's line x a, L = b x c; the best conditioned (sines at K, at L,
-    of the triangle, |KL| over the body's size), and among those at least half as well conditioned the
-    one with K and L nearest the body.  None when no pairing gives both points."""
+    """The pairing to draw as (condition, a, b, c, K, L): K = R's line x a, L = b x c; the best conditioned
+    (sines at K, at L, of the triangle, |KL| over the body's size), and among those at least half as well
+    conditioned the one with K and L nearest the body.  None when no pairing gives both points."""
     size = body.size
     pts = list(body.points.values()) + list(body.fixed.values())
     cands = []
@@ -663,13 +671,31 @@ def _culmann_pairing(body: RigidBody, lines, p_r: Vec, u_r: Vec):
         return None
     best = max(c[0] for c in cands)
     pick = min((c for c in cands if c[0] >= 0.5 * best), key=lambda c: (c[1], c[2]))
-    return pick[2:]
+    return (pick[0],) + pick[2:]
+
+
+def _ritter_pairing(body: RigidBody, lines):
+    """(condition, a, b, c, L, arm) for moments about L = b x c: the pairing with the best of the sine at L
+    and a's arm about L over the body's size (check_supports leaves at least one with both non-zero)."""
+    best = None
+    for ia in range(3):
+        ib, ic = [k for k in range(3) if k != ia]
+        s = _sine(lines[ib][1], lines[ic][1])
+        if s < PARALLEL_SINE:
+            continue
+        L = _cross(*lines[ib], *lines[ic])
+        arm = (lines[ia][0] - L).cross(lines[ia][1])
+        cond = min(s, abs(arm) / body.size)
+        if best is None or cond > best[0]:
+            best = (cond, ia, ib, ic, L, arm)
+    return best
 
 
 def free_body_analysis(body: RigidBody, fmt: Formatter | None = None) -> FreeBodyAnalysis:
     """Solve ``body`` graphically: the supports are checked (:func:`check_supports`), then Culmann's method
     (three supports of known line), three-force concurrency (a pin and one support of known line), or
-    moments where the loads reduce to a couple; ``fmt(kind, value)`` writes values in error messages."""
+    moments (about the pin, or about L by Ritter's method) where the loads reduce to a couple or Culmann's
+    points run away; ``fmt(kind, value)`` writes values in error messages."""
     fmt = fmt or _si
     check_supports(body, fmt)
     d = _Drawing(body, fmt)
@@ -686,9 +712,14 @@ def free_body_analysis(body: RigidBody, fmt: Formatter | None = None) -> FreeBod
         else:
             d.concurrency(pins[0], other)
     elif d.R_line is None:
-        d.moments_about_L()
+        d.ritter("The loads reduce to a couple (no resultant force). ")
     else:
-        d.culmann()
+        lines = [body.line(s) for s in body.supports]
+        culmann = _culmann_pairing(body, lines, *d.R_line)
+        if culmann is None or culmann[0] < WARN_SINE and _ritter_pairing(body, lines)[0] > culmann[0]:
+            d.ritter("R's line meets the supports' lines too far away (or not at all) for Culmann's K and L. ")
+        else:
+            d.culmann(culmann[1:])
     d.senses()
     return d.record()
 
