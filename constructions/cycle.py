@@ -76,7 +76,9 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
     rec = Construction("Over the cycle").then(
         f"Turn the crank through one turn from {degrees(th[0])} in {steps} steps of {degrees(step)}: at each the "
         f"positions, velocities and accelerations come from the {s.model} (analytic), on the branch the scene "
-        f"chose.", kind=StepKind.GIVEN)
+        f"chose" + (f"; at {', '.join(degrees(a) for a in s.change_points)} all its links lie in line (a change "
+                    f"point) and it keeps to that branch, the way on whose velocities run on smoothly"
+                    if s.change_points else "") + ".", kind=StepKind.GIVEN)
 
     def series(label: str, y, kind: str) -> Series:
         return Series(label, th, tuple(float(v) for v in y), kind)

@@ -18,6 +18,7 @@ never a clamped or borrowed value.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Mapping
@@ -51,6 +52,9 @@ class Sweep:
     angular_acceleration: Mapping[int, np.ndarray]
     assembles: np.ndarray
     model: str
+    change_points: tuple[float, ...] = ()
+    """Crank angles (rad) where the linkage passed a change point (all links in line, the two assemblies
+    meeting) and stayed on its branch: the continuation whose velocities run on smoothly."""
 
     def gaps(self) -> list[tuple[int, int]]:
         """Index ranges [start, stop) of consecutive angles that do not assemble."""
@@ -74,6 +78,79 @@ def _closed_form(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts
     return _finish(th, dict(c.positions), dict(c.velocities), dict(c.accelerations), dict(c.angular),
                    dict(c.angular_acceleration), c.assembles, c.model, set(c.positions) - set(m.ground),
                    set(c.fixed_links))
+
+
+CHANGE_STEP = 1e-5
+"""Half the angle (rad) about a change point over which the velocities of the two ways on are compared."""
+
+
+def _through_change_points(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts, own: Sweep) -> Sweep:
+    """A change-point four-bar (s + l = p + q) keeps its branch through the positions where all its links
+    lie in line.  There the two assemblies meet and a fixed assembly sign (the scene's "left of B->O2")
+    would jump to the other one -- a parallelogram would turn into an antiparallelogram.  At each such
+    crank angle (the crank along the frame line) the continuation is the assembly whose joint velocities,
+    just past it, are nearest those just before it; the sweep follows it, and says where it did."""
+    from dataclasses import replace as _replace
+    from .classify import classify_four_bar
+    from .linkage import Branch
+    k = classify_four_bar(m)
+    if k is None or k.grashof != "change point" or th.size == 0:
+        return own
+    o1, _, c, o2 = k.joints
+    if o1 not in m.ground or o2 not in m.ground or c not in m.branches:
+        return own
+    b = m.branches[c]
+    flipped = _replace(m, branches={**m.branches, c: Branch(-b.sign, b.reference)})
+    other = _closed_form(flipped, th, omega, alpha, closed_form_parts(flipped))
+    frame = m.ground[o2] - m.ground[o1]
+    phi = math.atan2(frame.y, frame.x)
+    lo, hi = float(th.min()), float(th.max())
+    forward = th.size < 2 or th[-1] >= th[0]
+    crossings = sorted(a for j in range(math.floor((lo - phi) / math.pi) - 1, math.ceil((hi - phi) / math.pi) + 2)
+                       for a in [phi + j * math.pi] if lo < a < hi)
+    if not forward:
+        crossings.reverse()
+    which = 0                                            # the assembly followed now: 0 the scene's own
+    use = np.zeros(th.size, dtype=bool)
+    passed = []
+    step = CHANGE_STEP if forward else -CHANGE_STEP
+    for a in crossings:
+        before = sweep_at(m if which == 0 else flipped, a - step, omega, alpha)
+        after = [sweep_at(x, a + step, omega, alpha) for x in (m, flipped)]
+        if before is None or any(x is None for x in after):
+            continue
+        jump = [sum((x[n] - before[n]).norm() for n in before) for x in after]
+        which = 0 if jump[0] <= jump[1] else 1
+        passed.append(a)
+        beyond = th > a if forward else th < a
+        use[beyond] = which == 1
+    if not use.any():
+        return _replace(own, change_points=tuple(passed))
+
+    def vectors(kind):
+        mine, theirs = getattr(own, kind), getattr(other, kind)
+        return {n: tuple(np.where(use, t, o) for o, t in zip(mine[n], theirs[n])) for n in mine}
+
+    def scalars(kind):
+        mine, theirs = getattr(own, kind), getattr(other, kind)
+        return {n: np.where(use, theirs[n], mine[n]) for n in mine}
+    pos, vel, acc = vectors("positions"), vectors("velocities"), vectors("accelerations")
+    ang, alp = scalars("angular"), scalars("angular_acceleration")
+    ok = np.where(use, other.assembles, own.assembles)
+    moving = set(own.positions) - set(m.ground)
+    out = _finish(th, pos, vel, acc, ang, alp, ok, own.model, moving, {m.crank})
+    return _replace(out, change_points=tuple(passed))
+
+
+def sweep_at(m: Mechanism, theta: float, omega: float, alpha: float):
+    """The joint velocities of the plain four-bar ``m`` at one crank angle (None where it does not
+    assemble)."""
+    from .geometry import Vec
+    st = closed_form_state(m, np.array([theta]), omega, alpha, closed_form_parts(m))
+    if not bool(np.asarray(st.assembles).reshape(-1)[0]):
+        return None
+    return {n: Vec(float(np.asarray(x).reshape(-1)[0]), float(np.asarray(y).reshape(-1)[0]))
+            for n, (x, y) in st.velocities.items() if n not in m.ground}
 
 
 def _finish(th, pos, vel, acc, ang, alp, ok, model, moving, fixed_links) -> Sweep:
@@ -170,7 +247,7 @@ def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0) -> Sweep:
     omega, alpha = float(omega), float(alpha)
     parts = closed_form_parts(m)
     if parts is not None:
-        return _closed_form(m, th, omega, alpha, parts)
+        return _through_change_points(m, th, omega, alpha, parts, _closed_form(m, th, omega, alpha, parts))
     try:
         st = chain_solution(m, th, omega, alpha)
     except DegenerateInput:

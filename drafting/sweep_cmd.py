@@ -156,6 +156,9 @@ def summary(scene, s) -> str:
     if gaps:
         spans = ", ".join(f"{_fmt(ang[i])}..{_fmt(ang[j - 1])} {ua}" for i, j in gaps)
         lines.append(f"  cannot be assembled (gaps, {n - ok} angles): {spans}")
+    if s.change_points:
+        at = ", ".join(f"{_fmt(u.convert('angle', a))} {ua}" for a in s.change_points)
+        lines.append(f"  passes a change point (all links in line) at {at} and stays on its branch")
     uw, ual = u.symbol("angular velocity"), u.symbol("angular acceleration")
     rows = [("link", f"omega min [{uw}]", f"omega max [{uw}]", f"alpha min [{ual}]", f"alpha max [{ual}]")]
     for k, w in s.angular.items():

@@ -166,3 +166,72 @@ def test_bad_options_are_one_line_exit_2(capsys, args, word):
 def test_bad_scene_is_one_line_exit_2(tmp_path, capsys):
     code, _, err = _run(capsys, tmp_path / "missing.toml")
     assert code == 2 and err.count("\n") == 1 and err.startswith("drafting: error: ")
+
+
+# -- a change point: the branch kept where the two assemblies meet ----------------------------------------
+
+PARALLELOGRAM = '''
+[drawing]
+title = "Parallelogram four-bar"
+number = "T-P"
+[units]
+length = "mm"
+[frame]
+O1 = [0, 0]
+O2 = [100, 0]
+[[link]]
+number = 2
+joints = ["O1", "B"]
+length = 40
+[[link]]
+number = 3
+joints = ["B", "C"]
+length = 100
+[[link]]
+number = 4
+joints = ["O2", "C"]
+length = 40
+[input]
+link = 2
+angle = "30 deg"
+omega = "10 rad/s"
+[assembly]
+C = "left of B->O2"
+[ask]
+analyses = ["sweep"]
+'''
+
+
+def test_a_parallelogram_stays_a_parallelogram_through_its_change_points(tmp_path, capsys):
+    """Where crank, coupler and rocker lie along the frame the two assemblies meet; a fixed assembly sign
+    would turn the parallelogram into an antiparallelogram there (what a closed form with one sign does).
+    The sweep keeps C = B + O1O2 over the whole turn, and says where it passed the change points."""
+    from drafting.scene import parse_scene
+    sc = parse_scene(PARALLELOGRAM, tmp_path / "p.toml")
+    assert load_classification(sc).grashof == "change point"
+    th = sc.angle + 2 * math.pi * np.arange(7201) / 7200
+    s = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    (bx, by), (cx, cy) = s.positions["B"], s.positions["C"]
+    assert s.assembles.all()
+    assert np.nanmax(np.hypot(cx - bx - 0.1, cy - by)) < 1e-12          # C = B + (100 mm, 0) throughout
+    assert np.degrees(s.change_points) == pytest.approx([180.0, 360.0])
+    w3 = np.asarray(s.angular[3])
+    assert np.nanmax(np.abs(w3)) < 1e-9                                  # the coupler only translates
+    # on the antiparallelogram branch the same holds for that branch: it stays crossed
+    crossed = parse_scene(PARALLELOGRAM.replace('"left of B->O2"', '"right of B->O2"'), tmp_path / "a.toml")
+    s2 = sweep(crossed.mechanism, th, crossed.omega)
+    (bx, by), (cx, cy) = s2.positions["B"], s2.positions["C"]
+    assert np.count_nonzero(np.hypot(cx - bx - 0.1, cy - by) > 1e-6) > 0.99 * th.size   # never parallel
+    vx, vy = s2.velocities["C"]
+    jumps = np.hypot(np.diff(vx), np.diff(vy))
+    assert np.nanmax(jumps) < 0.01 * np.nanmax(np.hypot(vx, vy))         # velocities run on smoothly
+    path = tmp_path / "p.toml"
+    path.write_text(PARALLELOGRAM)
+    assert cli.main(["sweep", str(path), "--steps", "72"]) == 0
+    out = capsys.readouterr().out
+    assert "passes a change point (all links in line) at 180 deg, 360 deg and stays on its branch" in out
+
+
+def load_classification(scene):
+    from constructions.classify import classify_four_bar
+    return classify_four_bar(scene.mechanism)
