@@ -185,11 +185,13 @@ def _finish(th, pos, vel, acc, ang, alp, ok, model, moving, fixed_links) -> Swee
     return Sweep(own(th, False), vec(pos), vec(vel), vec(acc), sca(ang), sca(alp), ok, model)
 
 
-def _constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float) -> Sweep:
+def _constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float, progress=None) -> Sweep:
     n = th.size
     states: list = [None] * n
     guess = None
     for i, t in enumerate(th):
+        if progress is not None and i % 256 == 0:
+            progress(i, n)
         t = float(t)
         if guess is None:                      # first angle, or after a gap: the scene's branch
             try:
@@ -239,10 +241,11 @@ def _constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float) -> Sw
                    "constraint equations", set(names) - set(m.ground), set())   # every body is NaN at a gap
 
 
-def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0) -> Sweep:
+def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0, *, progress=None) -> Sweep:
     """Solve ``m`` at every crank angle of ``thetas`` (rad) with the crank turning at ``omega`` (rad/s)
-    and angular acceleration ``alpha`` (rad/s^2).  Raises DegenerateInput for a mechanism none of the
-    solvers models (e.g. not one degree of freedom)."""
+    and angular acceleration ``alpha`` (rad/s^2).  ``progress(done, total)``, if given, hears how far the
+    angle-by-angle solver has come (the vectorised ones finish in one stroke).  Raises DegenerateInput for
+    a mechanism none of the solvers models (e.g. not one degree of freedom)."""
     th = np.array(thetas, dtype=np.float64).reshape(-1)
     omega, alpha = float(omega), float(alpha)
     parts = closed_form_parts(m)
@@ -251,7 +254,7 @@ def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0) -> Sweep:
     try:
         st = chain_solution(m, th, omega, alpha)
     except DegenerateInput:
-        return _constraints(m, th, omega, alpha)
+        return _constraints(m, th, omega, alpha, progress)
     ok = np.asarray(st.assembles, dtype=bool).reshape(-1)
     fixed_links = {m.crank} | {s.number for s in m.slides if s.number is not None and s.on is None}
     return _finish(th, dict(st.positions), dict(st.velocities), dict(st.accelerations), dict(st.angular),

@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from . import faults, limits
+from .progress import Progress
 from .scene import SceneError, load_scene
 from .textsafe import printable
 from .units import UnitError, to_si, unit_symbol
@@ -72,10 +73,13 @@ def run_sweep(path: Path, steps: int | None = None, every: str | None = None):
                               f"alpha); at a given torque the motion over the cycle is a simulation, which "
                               f"this version does not run")
     thetas = crank_angles(scene.angle, steps, every)
+    bar = Progress(thetas.size, "sweep")
     try:
-        result = sweep(scene.mechanism, thetas, scene.omega, scene.alpha)
+        result = sweep(scene.mechanism, thetas, scene.omega, scene.alpha, progress=lambda i, n: bar.update(i))
     except ConstructionError as e:
         raise SweepInputError(f"{printable(str(path))}: {e}") from None
+    finally:
+        bar.finish()
     return scene, result
 
 
@@ -83,8 +87,8 @@ def _unit(units, kind: str) -> str:
     return unit_symbol(units.of(kind))
 
 
-def table(scene, s) -> tuple[list[str], list[list[str]]]:
-    """The CSV header and rows in the scene's units (empty cells at gaps)."""
+def table(scene, s) -> tuple[list[str], np.ndarray]:
+    """The CSV header and the values (one row per crank angle) in the scene's units (NaN at gaps)."""
     u = scene.units
     ua, ul, uv, uacc = (_unit(u, k) for k in ("angle", "length", "velocity", "acceleration"))
     uw, ual = _unit(u, "angular velocity"), _unit(u, "angular acceleration")
@@ -105,18 +109,29 @@ def table(scene, s) -> tuple[list[str], list[list[str]]]:
         if number in s.angular_acceleration:
             header.append(f"alpha_{number} [{ual}]")
             cols.append(np.asarray(s.angular_acceleration[number]) * u.convert("angular acceleration", 1.0))
-    rows = [["" if not math.isfinite(v) else repr(float(v)) for v in row] for row in zip(*cols)]
-    return header, rows
+    return header, np.column_stack(cols) if cols else np.empty((0, 0))
 
 
-def write_csv(path: Path, header: list[str], rows: list[list[str]]) -> None:
-    """Write atomically: a temporary file beside ``path``, then os.replace.  Raises SweepInputError."""
+def rows_of(values: np.ndarray):
+    """The CSV rows of a table's values: shortest round-trip decimals, empty cells at gaps."""
+    for row in values:
+        yield ["" if not math.isfinite(v) else repr(float(v)) for v in row]
+
+
+def write_csv(path: Path, header: list[str], values: np.ndarray) -> None:
+    """Write atomically: a temporary file beside ``path``, then os.replace, with a progress bar on a
+    terminal for long tables.  Raises SweepInputError."""
     path = Path(path)
     folder = path.parent if str(path.parent) else Path(".")
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(header)
-    w.writerows(rows)
+    bar = Progress(len(values), "csv")
+    for i, row in enumerate(rows_of(values)):
+        w.writerow(row)
+        if i % 4096 == 0:
+            bar.update(i)
+    bar.finish()
     data = buf.getvalue().encode("utf-8")
     tmp = folder / f"{TEMP_PREFIX}{os.getpid()}-{next(_counter)}-{path.name[:40]}.csv"
     faults.track(tmp)
@@ -181,8 +196,8 @@ def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path |
     """The command: write the CSV (and say so) or print the summary.  Raises SweepInputError."""
     scene, s = run_sweep(path, steps, every)
     if csv_path is not None:
-        header, rows = table(scene, s)
-        write_csv(csv_path, header, rows)
+        header, values = table(scene, s)
+        write_csv(csv_path, header, values)
         gaps = s.thetas.size - int(np.count_nonzero(s.assembles))
         print(f"{scene.title}\n  {s.thetas.size} crank angles ({s.model}), {gaps} not assembled; "
               f"wrote {printable(str(csv_path))}")

@@ -107,6 +107,11 @@ class _SafeWriter:
             self._inner.write(safe.encode(enc, "backslashreplace").decode(enc, "replace"))
         return len(text)
 
+    @property
+    def unescaped(self):
+        """The stream underneath, for our own control characters (a progress bar's carriage return)."""
+        return self._inner
+
     def __getattr__(self, name):
         return getattr(self._inner, name)
 

@@ -235,3 +235,16 @@ def test_a_parallelogram_stays_a_parallelogram_through_its_change_points(tmp_pat
 def load_classification(scene):
     from constructions.classify import classify_four_bar
     return classify_four_bar(scene.mechanism)
+
+
+def test_a_long_sweep_shows_progress_on_a_terminal_only(tmp_path, capsys, monkeypatch):
+    """The bar goes to stderr when it is a terminal (faked here) and the job is long; piped, nothing."""
+    from drafting import progress
+    assert cli.main(["sweep", str(QUICK_RETURN), "--steps", "300", "--csv", str(tmp_path / "a.csv")]) == 0
+    assert "%" not in capsys.readouterr().err                           # not a terminal: no bar
+    monkeypatch.setattr(progress, "LONG", 100)
+    monkeypatch.setattr(progress, "_is_terminal", lambda stream: True)
+    assert cli.main(["sweep", str(QUICK_RETURN), "--steps", "300", "--csv", str(tmp_path / "b.csv")]) == 0
+    err = capsys.readouterr().err
+    assert "\rsweep [" in err and "\rcsv [" in err and "100.0 %" in err and err.endswith("\n")
+    assert (tmp_path / "a.csv").read_text() == (tmp_path / "b.csv").read_text()
