@@ -87,7 +87,7 @@ def known_forces(m: Mechanism, pose: Pose, effects: Effects, acceleration=None
         al = acceleration.angular.get(ms.body, 0.0)
         f_i = a_g * (-ms.mass)
         c_i = -ms.inertia * al
-        if f_i.norm() > 0:
+        if f_i.dot(f_i) > 0:                            # (a subnormal force squares to 0: none)
             # one force on the offset line: d x F_I = C_I, d square to F_I, h = |C_I| / |F_I|
             d = f_i.perp() * (-c_i / f_i.dot(f_i))
             forces.setdefault(ms.body, []).append(Force(f"F_I{ms.body}", ms.body, g_at + d, f_i, "inertia"))
@@ -157,7 +157,7 @@ def resultant_line(forces, couples: float, about: Vec) -> tuple[Vec, Vec] | None
     """The single force equivalent to ``forces`` and ``couples`` as (a point of its line, the force), or
     None when they reduce to a couple or to nothing."""
     r, mo = resultant(forces, couples, about)
-    if r.norm() == 0.0:
+    if r.dot(r) == 0.0:                                 # nothing, a couple, or a subnormal force
         return None
     return about + r.perp() * (-mo / r.dot(r)), r
 

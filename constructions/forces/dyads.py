@@ -255,7 +255,7 @@ def driving_crank(d: Drawing, crank: CrankTip) -> None:
                         (), None, {"f": force_value(r.norm())}, StepKind.ANSWER))
     h = abs(mo - cpl) / r.norm() if r.norm() > 0 else 0.0
     ents = []
-    if r.norm() > 0 and h > 1e-9 * m.size:
+    if r.dot(r) > 0 and h > 1e-9 * m.size:               # (a subnormal force squares to 0)
         line_pt = pos[o] + r.perp() * (-(mo - cpl) / r.dot(r))          # foot of the perpendicular from O
         ents.append(TrialLine(f"fbd {body_label(m, n)}: resultant line", Role.TRIAL, fb, line_pt, r, None))
         ents.append(Dimension(f"fbd {body_label(m, n)}: h", Role.DIMENSION, fb, pos[o], line_pt, 0.0, "h"))
