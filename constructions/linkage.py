@@ -582,7 +582,11 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
                 ent.append(Block(f"block {step.slide.number}", Role.GIVEN, Diagram.SPACE, pos[step.joint],
                                  line.direction, step.slide.number))
             far = max(pts, key=lambda x: pos[x].distance_to(pos[step.centre]))
-            ent.append(Segment(f"slot {step.joint}", Role.PATH, Diagram.SPACE, pos[step.centre], pos[far]))
+            ends = [line.parameter(pos[x]) for x in (step.centre, far, step.joint)]
+            if step.slide.offset == 0:                       # the slot along the link: centre to far end
+                ends = ends[:2] + [min(max(ends[2], min(ends[:2])), max(ends[:2]))]
+            ent.append(Segment(f"slot {step.joint}", Role.PATH, Diagram.SPACE, line.at(min(ends)),
+                               line.at(max(ends))))       # on the slot's own line (offset from the link)
             rec = rec.then(
                 f"Turn link {step.link.number} ({step.link.label}) about {step.centre} until its slot passes "
                 f"through {step.joint}" + (f" ($e from {step.centre})" if step.slide.offset else "")
@@ -629,8 +633,9 @@ def _slot_through(m: Mechanism, step: SlotThrough, pos: dict[str, Vec], tol: Tol
                   fmt: Formatter) -> dict[str, Vec]:
     """Turn the slotted link about its known point until the slot passes through the joint.
 
-    With r = J - P (P the link's known point) and the slot at signed offset e from P (P lies e to the right
-    of the slot line, square to it), the slot's direction d satisfies cross(d, r) = e and J lies at
+    With r = J - P (P the link's known point) and the slot at signed offset e from P (the slot line passes
+    e to the right of P, square to it: :meth:`Slide.slot_line`), the slot's direction d satisfies
+    cross(d, r) = -e and J lies at
     s = d.r = +/- sqrt(|r|^2 - e^2) along it: s > 0 (J ahead of P's foot) for branch +1."""
     s = step.slide
     J, P = pos[step.joint], pos[step.centre]

@@ -98,8 +98,7 @@ def results_text(study: Study) -> str:
         widest = max(c.tolerance for c in study.comparisons)
         agree = "agree to 1e-9 relative" if widest <= 1e-9 else \
             f"agree within tolerances widened near the singular position (up to {widest:.0e} relative)"
-        how = model if model == "constraint equations" else f"{model} vector loop"
-        lines.append(f"  graphical vs analytic ({how}): "
+        lines.append(f"  graphical vs analytic ({model}): "
                      + (agree if not bad else f"{len(bad)} DISAGREE beyond their tolerance"))
     for n in study.notes:
         lines.append(f"  note: {n}")

@@ -138,7 +138,7 @@ class _EffectsReader:
                           "; it is the magnitude (turn it with angle = \"... deg\", the direction of gravity)")
         if "angle" not in t:
             return Vec(0.0, -g)
-        return _polar(g, self.quantity("gravity.angle", t["angle"], "angle"))
+        return polar(g, self.quantity("gravity.angle", t["angle"], "angle"))
 
     def masses(self) -> tuple[Mechanism, tuple[Mass, ...]]:
         tables = list(self.items("mass", MASS_KEYS, {"link", "mass"}))
@@ -290,7 +290,7 @@ class _EffectsReader:
             if force < 0:
                 raise self.fail(f"{k}.force", "is the magnitude: give it positive and turn angle by 180 deg")
             angle = self.quantity(f"{k}.angle", t["angle"], "angle")
-            yield Load(name, body, at, _polar(force, angle))
+            yield Load(name, body, at, polar(force, angle))
 
     def couples(self):
         for k, t in self.items("couple", COUPLE_KEYS, {"name", "link", "torque"}):
@@ -364,7 +364,7 @@ class _EffectsReader:
         return out
 
 
-def _polar(length: float, angle: float) -> Vec:
+def polar(length: float, angle: float) -> Vec:
     """``length`` at ``angle``, exact along the axes (180 deg gives (-F, 0), not (-F, 4.9e-15))."""
     q = angle / (math.pi / 2)
     if abs(q - round(q)) < 1e-12:

@@ -29,7 +29,7 @@ from constructions.forces.free_body import GUIDE, MEMBER, PIN, ROLLER, RigidBody
 from constructions.geometry import Vec
 
 from . import limits
-from .effects_scene import _polar
+from .effects_scene import polar
 from .unitset import Units
 
 SUPPORT_SECTIONS = (MEMBER, PIN, ROLLER, GUIDE)
@@ -154,7 +154,7 @@ class _FreeBodyReader:
             if force < 0:
                 raise self.fail(f"{k}.force", "is the magnitude: give it positive and turn angle by 180 deg")
             angle = self.r.quantity(f"{k}.angle", t["angle"], "angle", self.units)
-            yield Load(name, 0, at, _polar(force, angle))
+            yield Load(name, 0, at, polar(force, angle))
 
     def couples(self):
         for k, t in self.items("couple", COUPLE_KEYS, {"name", "torque"}):
@@ -188,7 +188,7 @@ class _FreeBodyReader:
                 else:
                     key = "normal" if kind == ROLLER else "angle"
                     angle = self.r.quantity(f"{k}.{key}", t[key], "angle", self.units)
-                    direction = _polar(1.0, angle)
+                    direction = polar(1.0, angle)
                     out.append(Support(name, kind, at, direction=direction if kind == ROLLER else direction.perp(),
                                        label=label))
                 keys.append(k)

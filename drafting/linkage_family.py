@@ -251,7 +251,7 @@ def _model(study) -> str | None:
     if study.computed("velocity") is not None:
         a = _solution(study)
         if a is not None:
-            names.append(a.model)
+            names.append(a.model if a.model == "constraint equations" else f"{a.model} vector loop")
     if study.asked("forces"):
         names.append("equilibrium of all links and virtual work")
     return "; ".join(names) or None

@@ -273,7 +273,7 @@ def test_example_4_within_drawing_accuracy():
     assert vel.velocities["D"].x < 0 and abs(vel.velocities["D"].y) < 1e-12
     # a well-conditioned linkage: trial lines 78 deg apart at C and 35 deg at D
     assert acc.conditions["C"] > 0.97 and acc.conditions["D"] > 0.56
-    assert study.model == "dyad chain"
+    assert study.model == "dyad chain vector loop"
     assert_checked(study)
 
 

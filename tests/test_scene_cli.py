@@ -191,7 +191,7 @@ def test_notes_example_3_toggle_linkage():
     v = study.velocity
     assert v.velocities["D"].x == pytest.approx(-4.0, rel=0.02) and abs(v.velocities["D"].y) < 1e-12
     assert v.angular[2] > 0 and v.angular[3] > 0 and v.angular[4] < 0
-    assert study.model == "dyad chain" and not study.disagreements()
+    assert study.model == "dyad chain vector loop" and not study.disagreements()
 
 
 def test_notes_example_4_velocity_image():

@@ -1,4 +1,7 @@
-"""Static and D'Alembert force analysis of linkages: the effects a scene declares (:mod:`.effects`), the
-bodies and the joints that carry forces between them (:mod:`.bodies`), the graphical construction --
-free bodies, two- and three-force members, force polygons dyad by dyad (:mod:`.polygon`) -- and the
-independent checks: the global equilibrium system and virtual work (:mod:`.equilibrium`)."""
+"""Static and D'Alembert force analysis: the effects a scene declares (:mod:`.effects`, :mod:`.inertia`),
+the bodies and the joints that carry forces between them (:mod:`.bodies`), the graphical construction --
+the drawing state shared by every polygon (:mod:`.board`), the dyads and the crank (:mod:`.dyads`: two-
+and three-force members, force polygons, slots, guides) run from the output back to the crank with free
+bodies and records (:mod:`.polygon`) -- a single rigid body on supports by Culmann's method
+(:mod:`.free_body`), and the independent checks: the global equilibrium system and virtual work
+(:mod:`.equilibrium`), the body's three equations (:mod:`.free_body_check`)."""
