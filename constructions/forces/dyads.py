@@ -261,8 +261,11 @@ def driving_crank(d: Drawing, crank: CrankTip) -> None:
         ents.append(Dimension(f"fbd {body_label(m, n)}: h", Role.DIMENSION, fb, pos[o], line_pt, 0.0, "h"))
     sense = "CCW" if torque > 0 else "CW" if torque < 0 else ""
     if r.norm() > 0 and h <= DEAD_CENTRE_ARM * m.size and cpl == 0.0:
-        words = (f"The resultant force on the crank passes through {o} (a dead centre): h = 0, so no torque "
-                 f"is needed to hold it: {t_name} = 0.")
+        arm = pos[crank.tip] - pos[o]
+        along = abs(arm.cross(r)) <= 1e-9 * arm.norm() * r.norm()
+        words = (f"The resultant force on the crank passes through {o}"
+                 + (" along the crank (a dead centre)" if along else "")
+                 + f": h = 0, so no torque is needed to hold it: {t_name} = 0.")
         torque = 0.0
         vals = {}
     else:
