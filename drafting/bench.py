@@ -70,7 +70,7 @@ def format_render_rows(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def run_benchmarks(quick: bool = False) -> str:
+def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
     repeats = 3 if quick else 7
     sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
     lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; "
@@ -79,4 +79,9 @@ def run_benchmarks(quick: bool = False) -> str:
     lines.append("Analytic sweep, full states -- positions, velocities and accelerations of every joint "
                  "(one core, numpy):")
     lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))
+    if peers:
+        from .bench_peers import format_rows, rows
+        lines.append("")
+        lines.append("The four-bar sweep against its peers (positions checked against this engine first):")
+        lines.append(format_rows(*rows(sizes)))
     return "\n".join(lines)

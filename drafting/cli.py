@@ -4,7 +4,7 @@
     drafting render SCENE...      sheets as SVG, PDF and PNG
     drafting solve SCENE --json   results in the scene's units and the analyses that ran
     drafting check SCENE...       graphical against analytic; exit 1 on disagreement
-    drafting bench                timings of rendering and of the analytic sweep
+    drafting bench [--peers]      timings of rendering and of the analytic sweep (and its peers)
 
 Exit codes: 0 fine, 1 graphical and analytic disagree, 2 bad input (one sentence on stderr).
 """
@@ -161,9 +161,9 @@ def cmd_check(scenes: Sequence[Path]) -> int:
     return status
 
 
-def cmd_bench(quick: bool) -> int:
+def cmd_bench(quick: bool, peers: bool = False) -> int:
     from .bench import run_benchmarks
-    print(run_benchmarks(quick=quick))
+    print(run_benchmarks(quick=quick, peers=peers))
     return 0
 
 
@@ -200,6 +200,9 @@ def parser() -> argparse.ArgumentParser:
                        description="Time the default sheet to SVG/PDF/PNG and the analytic sweep over "
                                    "1e3..1e7 crank angles, side by side in one run.")
     b.add_argument("--quick", action="store_true", help="fewer repeats and sizes up to 1e6")
+    b.add_argument("--peers", action="store_true",
+                   help="also the four-bar sweep against pylinkage, mechanism (pip install .[bench]) and "
+                        "plain numpy")
     w = sub.add_parser("sweep", help="a linkage over one turn of its crank (table or CSV)",
                        description="Solve the scene's linkage over one turn of the crank, starting at the "
                                    "scene's crank angle (analytic, vectorised); angles where it cannot be "
@@ -250,7 +253,7 @@ def _main(argv: Sequence[str] | None) -> int:
         if args.command == "check":
             return cmd_check(args.scenes)
         if args.command == "bench":
-            return cmd_bench(args.quick)
+            return cmd_bench(args.quick, args.peers)
         if args.command == "sweep":
             from .sweep_cmd import SweepInputError, cmd_sweep
             try:
