@@ -28,6 +28,9 @@ def test_static_sample_scene_reproduces_the_notes_and_agrees_three_ways():
     v = values(s)
     assert v["T_2"].graphical == pytest.approx(-1.12, rel=0.02)            # notes: 1.12 N m
     assert v["F_32"].graphical.norm() == pytest.approx(42.0, rel=0.02)     # notes: F_21 = 42.0 N
+    # the crank's bearing force: equal and opposite to the rod's force on the crank (with T, a couple)
+    assert v["F_12"].graphical.norm() == pytest.approx(42.0, rel=0.02)
+    assert (v["F_12"].graphical + v["F_32"].graphical).norm() < 1e-12 * 42.0
     assert all(c.agrees for c in s.comparisons)
     assert v["T_2 (virtual work)"].analytic == pytest.approx(v["T_2"].graphical, rel=1e-12)
     assert "acceleration" not in s.ran and "velocity" not in s.ran
