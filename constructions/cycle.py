@@ -22,7 +22,7 @@ import numpy as np
 from .classify import FourBarClass
 from .geometry import Vec
 from .linkage import Mechanism
-from .record import Chart, Construction, Curve, Diagram, Role, Series, StepKind
+from .record import AngleMark, Chart, Construction, Curve, Diagram, Point, Role, Segment, Series, StepKind, Value
 from .sweep import Sweep
 
 BAND = (math.radians(40.0), math.radians(140.0), "40-140 deg")
@@ -121,6 +121,7 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
                        Chart("chart transmission", Role.GIVEN, chart_diagram("Transmission angle"), "angle",
                              "crank angle", (series("\u03bc", mu, "angle"),), (BAND,)),
                        kind=StepKind.CONSTRUCTION)
+    rec = _limit_positions(rec, m, k, s, degrees)
     paths = []
     for a in m.attached:
         if a.name not in s.positions:
@@ -138,3 +139,33 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
                                                          if s.gaps() else "."),
                        *paths, kind=StepKind.CONSTRUCTION)
     return rec
+
+
+def _limit_positions(rec: Construction, m: Mechanism, k: FourBarClass | None, s: Sweep, degrees) -> Construction:
+    """The rocker's two limit positions on the space diagram (crank and coupler in line, found by
+    construction in :mod:`constructions.classify`), dashed, with the rocker's swing between them."""
+    if k is None or len(k.limit_positions) != 2:
+        return rec
+    o1, _, c, o2 = k.joints
+    O1, O2 = m.ground[o1], m.ground[o2]
+    a = k.lengths[1]
+    ents = []
+    for lp, mark in zip(k.limit_positions, ("'", "''")):
+        b = O1 + Vec.polar(a, lp.crank_angle)
+        how = "extended" if lp.extended else "folded"
+        ents += [Segment(f"limit {how} crank", Role.AUXILIARY, Diagram.SPACE, O1, b),
+                 Segment(f"limit {how} coupler", Role.AUXILIARY, Diagram.SPACE, b, lp.C),
+                 Segment(f"limit {how} rocker", Role.AUXILIARY, Diagram.SPACE, O2, lp.C),
+                 Point(f"limit {how} {c}", Role.LABEL, Diagram.SPACE, lp.C, f"{c}{mark}")]
+    r1, r2 = (lp.rocker_angle for lp in k.limit_positions)
+    cx, cy = (float(np.asarray(v)[0]) for v in s.positions[c])
+    now = math.atan2(cy - O2.y, cx - O2.x)
+    lo, hi = (r1, r2) if (now - r1) % (2 * math.pi) <= (r2 - r1) % (2 * math.pi) else (r2, r1)
+    swing = (hi - lo) % (2 * math.pi)
+    ents.append(AngleMark("rocker swing", Role.DIMENSION, Diagram.SPACE, O2, 0.6 * k.lengths[3], lo, lo + swing,
+                          "$swing"))
+    return rec.then(f"The rocker's limit positions, {c}' and {c}'': crank and coupler in line, extended "
+                    f"({o1}{c}' = crank + coupler) and folded ({o1}{c}'' = coupler \u2212 crank), each where the "
+                    f"circle about {o1} meets the rocker's circle about {o2}; between them the rocker swings "
+                    f"through $swing.", *ents, values={"swing": Value("angle", swing)},
+                    kind=StepKind.CONSTRUCTION)

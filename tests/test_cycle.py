@@ -82,3 +82,23 @@ def test_degree_axes_tick_in_divisions_of_a_turn():
     assert ticks(70.0, 430.0, 200.0, 14.0, DEGREE_STEPS) == (60.0, 450.0, 30.0)
     assert ticks(70.0, 430.0, 100.0, 14.0, DEGREE_STEPS) == (0.0, 450.0, 90.0)
     assert ticks(0.0, 1.0, 100.0, 14.0) == (0.0, 1.0, 0.2)
+
+
+def test_limit_positions_drawn_are_the_ends_of_the_rockers_swing():
+    """The limit positions (crank and coupler in line, by construction) are where the sweep's rocker angle
+    turns back: at their crank angles the sweep puts C there to 1e-9, and the swing drawn is the chart's
+    range."""
+    from constructions.record import AngleMark, Point
+    s = Study(load_scene(CYCLE)).run()
+    k = s.get("classification")
+    res, _ = s.computed("sweep")
+    at = sweep(s.scene.mechanism, np.array([lp.crank_angle for lp in k.limit_positions]), s.scene.omega)
+    for i, lp in enumerate(k.limit_positions):
+        cx, cy = (np.asarray(v)[i] for v in at.positions["C"])
+        assert math.hypot(cx - lp.C.x, cy - lp.C.y) < 1e-9 * s.scene.mechanism.size
+    swing = next(e for e in s.construction.entities(Diagram.SPACE) if isinstance(e, AngleMark) and e.name == "rocker swing")
+    chart = next(e for e in s.construction.entities() if isinstance(e, Chart) and e.diagram.name == "Output angle")
+    y = np.array(chart.series[0].y)
+    assert swing.end_angle - swing.start_angle == pytest.approx(y.max() - y.min(), abs=1e-4)
+    labels = {e.label for e in s.construction.entities(Diagram.SPACE) if isinstance(e, Point)}
+    assert {"C'", "C''"} <= labels
