@@ -301,6 +301,27 @@ def _outputs(names, n):
     return {name: block[k] for k, name in enumerate(names)}
 
 
+def _given_outputs(given, names, n):
+    """The caller's buffers (``(block, assembles)``, checked) as the fields' views, or fresh ones."""
+    if given is None:
+        return _outputs(names, n), np.empty(n, dtype=bool)
+    try:
+        block, asm = given
+    except (TypeError, ValueError):
+        raise ValueError("out must be a pair (float block, bool assembles)") from None
+    if not (isinstance(block, np.ndarray) and block.dtype == np.float64 and block.shape == (len(names), n)
+            and block.flags.c_contiguous and block.flags.writeable):
+        raise ValueError(f"out[0] must be a writable C-contiguous float64 array of shape ({len(names)}, {n})")
+    if not (isinstance(asm, np.ndarray) and asm.dtype == np.bool_ and asm.shape == (n,) and asm.flags.writeable):
+        raise ValueError(f"out[1] must be a writable bool array of shape ({n},)")
+    return {name: block[k] for k, name in enumerate(names)}, asm
+
+
+def four_bar_buffers(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Output buffers for :func:`four_bar` over ``n`` crank angles (pass them as ``out=``)."""
+    return np.empty((len(_FOURBAR_FIELDS), n)), np.empty(n, dtype=bool)
+
+
 def _chunk_of(w, i, j):
     return w if isinstance(w, float) else w[i:j]
 
@@ -429,7 +450,7 @@ def _atan2(y, x, out, a, b, c, d, e, m) -> None:
 # Four-bar
 # --------------------------------------------------------------------------------------------
 
-_FOURBAR_FIELDS = ("Bx", "By", "Cx", "Cy", "theta2", "theta3", "omega2", "omega3",
+FOURBAR_FIELDS = _FOURBAR_FIELDS = ("Bx", "By", "Cx", "Cy", "theta2", "theta3", "omega2", "omega3",
                    "VBx", "VBy", "VCx", "VCy", "alpha2", "alpha3", "ABx", "ABy", "ACx", "ACy",
                    "condition")
 
@@ -478,7 +499,8 @@ def _crank_tip_acceleration(c, s, r1, w, a, ABx, ABy, t, u) -> None:
         ABy += u
 
 
-def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, coupler, rocker, branch):
+def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, coupler, rocker, branch,
+             out=None):
     """Closed-form positions, velocities and accelerations of a four-bar, vectorised over crank angles.
 
     Parameters
@@ -497,6 +519,11 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
     branch : {+1, -1}
         Assembly: +1 puts C to the LEFT of the directed line B -> O2
         (``cross(O2 - B, C - B) > 0``), -1 to the right.
+    out : (ndarray, ndarray), optional
+        The caller's output buffers, reused from call to call: a C-contiguous float64 array of shape
+        ``(len(FOURBAR_FIELDS), n)`` (a row per field, in the order of :data:`FOURBAR_FIELDS`) and a bool
+        array of ``n`` for ``assembles``; the result's arrays are views of them.  A long sweep repeated
+        into the same buffers pays no page faults for fresh memory (see :func:`four_bar_buffers`).
 
     Returns
     -------
@@ -556,8 +583,7 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
     r2sq, r3sq = r2 * r2, r3 * r3
     half_sumsq = 0.5 * (r2sq + r3sq)  # p . q = half_sumsq - d^2 / 2
 
-    out = _outputs(_FOURBAR_FIELDS, n)
-    asm_all = np.empty(n, dtype=bool)
+    out, asm_all = _given_outputs(out, _FOURBAR_FIELDS, n)
     m = min(CHUNK, max(n, 1))
     c, s, wx, wy, d2, d, f1, f2, tmp, inv, al, be = (np.empty(m) for _ in range(12))
     bt = np.empty(m, dtype=bool)

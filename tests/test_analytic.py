@@ -789,3 +789,23 @@ def test_decisions_do_not_move_with_the_origin(shift):
     # the same size, up to the rounding the far coordinates carry
     assert scene_size((r1, r2, r3), ((0.0, 0.0), o2)) == pytest.approx(
         scene_size((r1, r2, r3), (shift, (o2[0] + shift[0], o2[1] + shift[1]))), rel=1e-9)
+
+
+def test_four_bar_into_the_callers_buffers():
+    """out=: the same values, bit for bit, written into the caller's buffers (views of them), gaps
+    included; buffers of the wrong shape, type or layout refused."""
+    kw = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(0.1, 0.02), crank=0.08, coupler=0.09, rocker=0.07, branch=1)
+    th = np.linspace(0.0, 2 * np.pi, 5001)              # this crank is long enough to leave gaps
+    fresh = four_bar(th, 10.0, 20.0, **kw)
+    block, asm = an.four_bar_buffers(th.size)
+    block.fill(123.0)
+    got = four_bar(th, 10.0, 20.0, out=(block, asm), **kw)
+    assert 0 < fresh.assembles.sum() < th.size
+    for f in dataclasses.fields(fresh):
+        a, b = getattr(fresh, f.name), getattr(got, f.name)
+        assert np.array_equal(a, b, equal_nan=True), f.name
+    assert np.shares_memory(got.Cx, block) and np.shares_memory(got.assembles, asm)
+    for bad in ((np.empty((len(an.FOURBAR_FIELDS), 10)), asm), (block.astype(np.float32), asm),
+                (np.asfortranarray(block), asm), (block, asm.astype(int)), block):
+        with pytest.raises(ValueError, match="out"):
+            four_bar(th, 10.0, 20.0, out=bad, **kw)
