@@ -212,6 +212,8 @@ def parser() -> argparse.ArgumentParser:
     g.add_argument("--steps", type=int, metavar="N", help="number of crank angles over the turn (default 72)")
     g.add_argument("--every", metavar="ANGLE", help="one crank angle every ANGLE, e.g. 5deg or 0.1rad")
     w.add_argument("--csv", type=Path, metavar="FILE", help="write the table as CSV (scene units)")
+    w.add_argument("--sheet", type=Path, metavar="DIR",
+                   help="also draw the cycle sheet (charts, coupler curves, limit positions) into DIR")
     return p
 
 
@@ -257,7 +259,7 @@ def _main(argv: Sequence[str] | None) -> int:
         if args.command == "sweep":
             from .sweep_cmd import SweepInputError, cmd_sweep
             try:
-                return cmd_sweep(args.scene, args.steps, args.every, args.csv)
+                return cmd_sweep(args.scene, args.steps, args.every, args.csv, args.sheet)
             except SweepInputError as e:
                 raise UserError(str(e)) from None
     except UserError as e:

@@ -192,8 +192,27 @@ def summary(scene, s) -> str:
     return "\n".join(lines)
 
 
-def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path | None) -> int:
-    """The command: write the CSV (and say so) or print the summary.  Raises SweepInputError."""
+def write_cycle_sheet(scene, out_dir: Path) -> list[str]:
+    """The scene's cycle sheet (analyses = ["sweep"]: charts against the crank angle, coupler curves, limit
+    positions) as SVG, PDF and PNG in ``out_dir``, named <scene>-cycle.  Raises SweepInputError."""
+    from dataclasses import replace
+    from constructions.errors import ConstructionError
+    from .errors import LayoutError
+    from .export import ExportError, write_sheets
+    from .study import Study
+    from .worked import sheets_for
+    study = Study(replace(scene, analyses=("sweep",), find=None))
+    try:
+        study.run()
+        return [str(w) for w in write_sheets(sheets_for(study), out_dir, f"{scene.path.stem}-cycle")]
+    except (ExportError, LayoutError, ConstructionError) as e:
+        raise SweepInputError(f"{printable(str(scene.path))}: --sheet: {e}") from None
+
+
+def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path | None,
+              sheet_dir: Path | None = None) -> int:
+    """The command: write the CSV (and say so) or print the summary; with ``sheet_dir`` also the cycle
+    sheet.  Raises SweepInputError."""
     scene, s = run_sweep(path, steps, every)
     if csv_path is not None:
         header, values = table(scene, s)
@@ -203,4 +222,7 @@ def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path |
               f"wrote {printable(str(csv_path))}")
     else:
         print(summary(scene, s))
+    if sheet_dir is not None:
+        for w in write_cycle_sheet(scene, sheet_dir):
+            print(f"  wrote {printable(w)}")
     return 0

@@ -248,3 +248,17 @@ def test_a_long_sweep_shows_progress_on_a_terminal_only(tmp_path, capsys, monkey
     err = capsys.readouterr().err
     assert "\rsweep [" in err and "\rcsv [" in err and "100.0 %" in err and err.endswith("\n")
     assert (tmp_path / "a.csv").read_text() == (tmp_path / "b.csv").read_text()
+
+
+def test_sweep_draws_the_cycle_sheet_on_request(tmp_path, capsys):
+    assert cli.main(["sweep", str(FOUR_BAR), "--steps", "36", "--sheet", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    svgs = sorted(tmp_path.glob("notes-velocity-example-2-cycle*.svg"))
+    assert svgs and (tmp_path / "notes-velocity-example-2-cycle.pdf").stat().st_size > 1000
+    text = " ".join(p.read_text() for p in svgs)
+    assert "Transmission angle" in text and "Angular velocities" in text and "wrote" in out
+    bad = tmp_path / "a-file"
+    bad.write_text("x")
+    assert cli.main(["sweep", str(FOUR_BAR), "--sheet", str(bad / "sub")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--sheet" in err and "Traceback" not in err
