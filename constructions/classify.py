@@ -59,13 +59,20 @@ class FourBarClass:
     limit_positions: tuple[LimitPosition, ...]
     mobility: tuple[int, str]
 
-    def summary(self) -> str:
-        g, a, b, c = self.lengths
-        s = f"{self.grashof} {self.kind}" if self.grashof == "Grashof" else f"{self.kind} ({self.grashof})"
+    def summary(self, fmt=None) -> str:
+        """The class in words with the inequality that decides it, lengths written by ``fmt(length)``
+        (default: metres)."""
+        fmt = fmt or (lambda v: f"{v:.6g} m")
+        named = sorted(zip(self.lengths, ("frame", "crank", "coupler", "rocker")))
+        (s_, s_name), (p_, _), (q_, _), (l_, l_name) = named
         if not self.closes:
-            return "the links cannot form a four-bar: the longest is not shorter than the other three together"
+            return (f"the links cannot form a four-bar: the longest, the {l_name} ({fmt(l_)}), is not shorter "
+                    f"than the other three together ({fmt(s_ + p_ + q_)})")
+        rel = {"Grashof": "<", "change point": "=", "non-Grashof": ">"}[self.grashof]
+        why = f"s + l = {fmt(s_ + l_)} {rel} p + q = {fmt(p_ + q_)}"
+        s = f"{self.grashof} {self.kind}" if self.grashof == "Grashof" else f"{self.kind} ({self.grashof})"
         turns = ", ".join(self.turns_fully) if self.turns_fully else "no link"
-        return f"{s}; {turns} turns fully"
+        return f"{s} ({why}, the shortest the {s_name}); {turns} turns fully"
 
 
 def _same(x: float, y: float, tol: float) -> bool:

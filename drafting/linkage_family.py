@@ -211,7 +211,7 @@ def _notes(study) -> tuple[str, ...]:
                  + ": its first column from the equilibrium of all links, its second by virtual work.")
     k = study.get("classification")
     if k is not None:
-        line = k.summary()
+        line = k.summary(lambda v: s.units.format("length", v))
         mu = _transmission_at_pose(study)
         if k.transmission_min is not None:
             lo, hi = math.degrees(k.transmission_min), math.degrees(k.transmission_max)

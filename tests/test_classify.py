@@ -37,8 +37,16 @@ def test_the_notes_types(lengths, kind, turns):
 
 
 def test_links_that_cannot_close():
+    """The sentence names the violated inequality with the lengths: l < s + p + q fails."""
     k = classify_four_bar(four_bar(0.30, 0.05, 0.10, 0.10))
-    assert not k.closes and "cannot form a four-bar" in k.summary()
+    assert not k.closes and k.summary() == ("the links cannot form a four-bar: the longest, the frame (0.3 m), "
+                                            "is not shorter than the other three together (0.25 m)")
+
+
+def test_the_deciding_inequality_is_named():
+    assert "(s + l = 0.19 m > p + q = 0.17 m, the shortest the rocker)" in classify_four_bar(
+        four_bar(0.12, 0.09, 0.08, 0.07)).summary()
+    assert "s + l = 0.14 m = p + q = 0.14 m" in classify_four_bar(four_bar(0.10, 0.04, 0.10, 0.04)).summary()
 
 
 def test_a_slider_crank_is_not_a_four_bar():
@@ -94,6 +102,7 @@ def test_extremes_and_limits_agree_with_a_sweep(case):
 def test_gallery_four_bar_reads_as_the_notes_would_say():
     from drafting.scene import load_scene
     k = classify_four_bar(load_scene("gallery/notes-velocity-example-2.toml").mechanism)
-    assert k.summary() == "Grashof crank-rocker; crank turns fully"
+    assert k.summary(lambda v: f"{v * 1000:g} mm") == (
+        "Grashof crank-rocker (s + l = 45 mm < p + q = 50 mm, the shortest the crank); crank turns fully")
     assert k.mobility[0] == 1
     assert 0 < k.transmission_min < k.transmission_max < math.pi
