@@ -59,11 +59,11 @@ class FourBarClass:
     limit_positions: tuple[LimitPosition, ...]
     mobility: tuple[int, str]
 
-    def summary(self, fmt=None) -> str:
+    def summary(self, fmt=None, names=("frame", "crank", "coupler", "rocker")) -> str:
         """The class in words with the inequality that decides it, lengths written by ``fmt(length)``
-        (default: metres)."""
+        (default: metres), the four links called ``names``."""
         fmt = fmt or (lambda v: f"{v:.6g} m")
-        named = sorted(zip(self.lengths, ("frame", "crank", "coupler", "rocker")))
+        named = sorted(zip(self.lengths, names))
         (s_, s_name), (p_, _), (q_, _), (l_, l_name) = named
         if not self.closes:
             return (f"the links cannot form a four-bar: the longest, the {l_name} ({fmt(l_)}), is not shorter "
@@ -71,8 +71,9 @@ class FourBarClass:
         rel = {"Grashof": "<", "change point": "=", "non-Grashof": ">"}[self.grashof]
         why = f"s + l = {fmt(s_ + l_)} {rel} p + q = {fmt(p_ + q_)}"
         s = f"{self.grashof} {self.kind}" if self.grashof == "Grashof" else f"{self.kind} ({self.grashof})"
-        turns = ", ".join(self.turns_fully) if self.turns_fully else "no link"
-        return f"{s} ({why}, the shortest the {s_name}); {turns} turns fully"
+        role = dict(zip(("frame", "crank", "coupler", "rocker"), names))
+        turns = ", ".join(role[t] for t in self.turns_fully) if self.turns_fully else "no link"
+        return f"{s} ({why}, the shortest the {s_name}); {turns} {'turn' if len(self.turns_fully) > 1 else 'turns'} fully"
 
 
 def _same(x: float, y: float, tol: float) -> bool:
@@ -151,3 +152,58 @@ def classify_four_bar(m: Mechanism) -> FourBarClass | None:
             limits.append(LimitPosition(extended, crank_angle, (C - O2).angle(), C))
     return FourBarClass((crank.pivot, crank.tip, step.joint, o2), (g, a, b, c), closes, grashof, kind, turns,
                         t_min, t_max, at_min, at_max, tuple(limits), mobility(m))
+
+
+@dataclass(frozen=True)
+class Loop:
+    """A further four-bar loop of a larger mechanism: the link ``input`` turning about its fixed pivot
+    drives the dyad that finds ``joint`` against a second fixed pivot; ``k`` is its class with that link
+    as the input (frame, input, coupler, output as ``k.joints``)."""
+
+    input: int
+    joint: str
+    k: FourBarClass
+
+
+def classify_loops(m: Mechanism) -> tuple[Loop, ...]:
+    """The four-bar loops after the crank's own: each two-circle dyad hung from a fixed pivot and from a
+    point of a link that turns about a fixed pivot of its own (a rocker driving a second rocker, as in a
+    Watt or Stephenson six-bar), classified as a four-bar with that link as its input.  The input's own
+    swing may be less than a turn, so "turns fully" is what the loop's lengths allow."""
+    from dataclasses import replace as _replace
+    from .linkage import Branch, Link
+    out = []
+    first = classify_four_bar(m)
+    for step in assembly_plan(m)[1:]:
+        if not isinstance(step, TwoCircles) or (first is not None and step.joint == first.joints[2]):
+            continue
+        centres = {step.first: step.link_a, step.second: step.link_b}
+        fixed = [c for c in centres if c in m.ground]
+        moving = [c for c in centres if c not in m.ground]
+        if len(fixed) != 1 or len(moving) != 1:
+            continue
+        o2, p = fixed[0], moving[0]
+        drivers = [k for k in m.links if p in m.points_of(k.number) and k.number != centres[p].number
+                   and any(j in m.ground for j in k.joints)]
+        for k in drivers:
+            q = next(j for j in k.joints if j in m.ground)
+            loc = m.local(k.number)
+            arm = (loc[p] - loc[q]).norm()
+            if arm <= m.tolerance().length or q == o2:
+                continue
+            radius_a = step.radius_a if step.first == p else step.radius_b
+            radius_b = step.radius_b if step.first == p else step.radius_a
+            coupler = radius_a or centres[p].length
+            output = radius_b or centres[o2].length
+            b = step.branch
+            sub = Mechanism({q: m.ground[q], o2: m.ground[o2]},
+                            (Link(k.number, (q, p), arm), Link(centres[p].number, (p, step.joint), coupler),
+                             Link(centres[o2].number, (o2, step.joint), output)), (), (), k.number,
+                            {step.joint: Branch(b.sign, b.reference)})
+            try:
+                got = classify_four_bar(sub)
+            except Exception:                      # a loop the four-bar rules cannot read: leave it out
+                continue
+            if got is not None:
+                out.append(Loop(k.number, step.joint, _replace(got)))
+    return tuple(out)

@@ -30,6 +30,12 @@ def _classification(study):
     return classify_four_bar(study.scene.mechanism)
 
 
+def _loops(study):
+    """The further four-bar loops (a rocker driving a second rocker), each classified."""
+    from constructions.classify import classify_loops
+    return classify_loops(study.scene.mechanism)
+
+
 def _transmission_at_pose(study) -> float | None:
     """The transmission angle (deg) of the crank's four-bar at the drawn pose, between coupler and rocker."""
     k = study.get("classification")
@@ -221,6 +227,11 @@ def _notes(study) -> tuple[str, ...]:
         if mu is not None:
             line += f", {mu:.0f} deg as drawn"
         w.append(line[:1].upper() + line[1:] + ".")
+    for lp in study.get("loops"):
+        q, _, j, o = lp.k.joints
+        w.append(f"Loop {q}-{lp.k.joints[1]}-{j}-{o}, driven by link {lp.input}, by its lengths a "
+                 + lp.k.summary(lambda v: s.units.format("length", v),
+                                ("frame", f"input link {lp.input}", "coupler", "output")) + ".")
     return tuple(w)
 
 
@@ -276,6 +287,11 @@ def _json(study) -> dict[str, Any]:
                 "max_at_crank_deg": deg(k.transmission_max_at) % 360 if k.transmission_max_at is not None else None},
             "limit_positions": [{"extended": lp.extended, "crank_angle_deg": deg(lp.crank_angle) % 360,
                                  "rocker_angle_deg": deg(lp.rocker_angle) % 360} for lp in k.limit_positions]}
+    loops = study.get("loops")
+    if loops:
+        out["loops"] = [{"input_link": lp.input, "joints": list(lp.k.joints), "closes": lp.k.closes,
+                         "grashof": lp.k.grashof, "kind": lp.k.kind, "turns_fully": list(lp.k.turns_fully)}
+                        for lp in loops]
     out["position"] = {n: [u.convert("length", p.x), u.convert("length", p.y)] for n, p in pose.positions.items()}
     v = study.computed("velocity")
     if v is not None:
@@ -322,6 +338,7 @@ LINKAGE = register(Family(
     kind="linkage",
     analyses={
         "classification": Analysis("classification", (), _classification),
+        "loops": Analysis("loops", (), _loops, label="classification"),     # part of it: one entry in ran
         "position": Analysis("position", ("classification",), _position),
         "velocity": Analysis("velocity", ("position",), _velocity),
         "crank alpha": Analysis("crank alpha", ("position",), _crank_alpha, label="alpha from the torque"),

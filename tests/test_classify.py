@@ -106,3 +106,22 @@ def test_gallery_four_bar_reads_as_the_notes_would_say():
         "Grashof crank-rocker (s + l = 45 mm < p + q = 50 mm, the shortest the crank); crank turns fully")
     assert k.mobility[0] == 1
     assert 0 < k.transmission_min < k.transmission_max < math.pi
+
+
+def test_a_second_loop_driven_by_a_rocker_is_classified():
+    """A Stephenson six-bar: the rocker O2C carries E, which drives the dyad E-F-O3; its loop
+    O2-E-F-O3 is a four-bar with the rocker as input, classified by its own lengths."""
+    from constructions.classify import classify_loops
+    from constructions.linkage import Attached
+    m = Mechanism({"O1": Vec(0.0, 0.0), "O2": Vec(0.10, 0.0), "O3": Vec(0.16, 0.05)},
+                  (Link(1, ("O1", "B"), 0.03), Link(2, ("B", "C"), 0.09), Link(3, ("O2", "C"), 0.07),
+                   Link(4, ("E", "F"), 0.08), Link(5, ("O3", "F"), 0.06)), (),
+                  (Attached("E", 3, "O2", 0.04, math.radians(-30)),), 1,
+                  {"C": Branch(1, ("B", "O2")), "F": Branch(1, ("E", "O3"))})
+    (loop,) = classify_loops(m)
+    assert loop.input == 3 and loop.joint == "F" and loop.k.joints == ("O2", "E", "F", "O3")
+    g = math.hypot(0.06, 0.05)
+    assert loop.k.lengths == pytest.approx((g, 0.04, 0.08, 0.06))
+    s, l = min(0.04, 0.08, 0.06, g), max(0.04, 0.08, 0.06, g)
+    assert (loop.k.grashof == "Grashof") == (s + l < 0.04 + 0.08 + 0.06 + g - s - l)
+    assert classify_loops(four_bar(0.10, 0.03, 0.09, 0.07)) == ()      # a plain four-bar has no other loop
