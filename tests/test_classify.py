@@ -125,3 +125,61 @@ def test_a_second_loop_driven_by_a_rocker_is_classified():
     s, l = min(0.04, 0.08, 0.06, g), max(0.04, 0.08, 0.06, g)
     assert (loop.k.grashof == "Grashof") == (s + l < 0.04 + 0.08 + 0.06 + g - s - l)
     assert classify_loops(four_bar(0.10, 0.03, 0.09, 0.07)) == ()      # a plain four-bar has no other loop
+
+
+STEPHENSON = """
+[drawing]
+title = "Stephenson six-bar: a rocker drives a second rocker"
+number = "T-S"
+[units]
+length = "mm"
+[frame]
+O1 = [0, 0]
+O2 = [100, 0]
+O3 = [160, 50]
+[[link]]
+number = 1
+joints = ["O1", "B"]
+length = 30
+[[link]]
+number = 2
+joints = ["B", "C"]
+length = 90
+[[link]]
+number = 3
+joints = ["O2", "C"]
+length = 70
+[[point]]
+name = "E"
+link = 3
+from = "O2"
+distance = 40
+angle = "-30 deg"
+[[link]]
+number = 4
+joints = ["E", "F"]
+length = 80
+[[link]]
+number = 5
+joints = ["O3", "F"]
+length = 60
+[input]
+link = 1
+angle = "40 deg"
+omega = "10 rad/s"
+[assembly]
+C = "left of B->O2"
+F = "left of E->O3"
+"""
+
+
+def test_the_loop_is_on_the_sheet_and_in_json():
+    from drafting.scene import parse_scene
+    from drafting.study import Study
+    s = Study(parse_scene(STEPHENSON, "steph.toml")).run()
+    j = s.to_json()
+    assert j["loops"] == [{"input_link": 3, "joints": ["O2", "E", "F", "O3"], "closes": True,
+                           "grashof": "Grashof", "kind": "crank-rocker", "turns_fully": ["crank"]}]
+    assert any(n.startswith("Loop O2-E-F-O3, driven by link 3, by its lengths a Grashof crank-rocker")
+               for n in s.notes)
+    assert j["analyses"].count("classification") == 1
