@@ -75,7 +75,10 @@ def register(family: Family) -> Family:
     return family
 
 
-BUILTIN = ("drafting.linkage_family", "drafting.free_body_family")
+BUILTIN = (
+    "drafting.linkage_family",
+    "drafting.free_body_family",
+)
 """The modules of the families this package ships; each registers its family when imported.  Named, not
 imported here, so this registry depends on no family (a family depends on it)."""
 
