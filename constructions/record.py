@@ -424,6 +424,12 @@ class Construction:
         """The distinct equations the steps work on, in the order they first appear."""
         return tuple(dict.fromkeys(s.equation for s in self.steps if s.equation is not None))
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the numbered steps (values in SI; a sheet writes them in the scene's units)."""
+        from html import escape
+        items = "".join(f"<li>{escape(st.text())}</li>" for st in self.steps)
+        return f"<div><b>{escape(self.title)}</b><ol>{items}</ol></div>"
+
     def diagrams(self) -> tuple[Diagram, ...]:
         seen: dict[Diagram, None] = {}
         for e in self.entities():

@@ -73,6 +73,13 @@ class Scene:
     model: Any = None
     effects: Effects = NO_EFFECTS
 
+    def _repr_html_(self) -> str:
+        """Jupyter: what the scene is (a Study shows what it gives)."""
+        from html import escape
+        return (f"<div><b>{escape(self.title)}</b> ({escape(self.kind)} scene, {escape(self.drawing_number)}, "
+                f"{escape(self.paper)})<br>asks for {escape(', '.join(self.analyses))}; from "
+                f"{escape(str(self.path))}</div>")
+
 
 def load_scene(path: Path | str) -> Scene:
     """Read a scene file; the limits (:mod:`drafting.limits`) are checked before anything else."""

@@ -133,6 +133,35 @@ class Sheet:
     def texts(self) -> tuple[Text, ...]:
         return tuple(c for c in self.commands if isinstance(c, Text))
 
+    def svg(self) -> str:
+        """The page as an SVG document (true size in mm)."""
+        from .svg import sheet_to_svg
+        return sheet_to_svg(self)
+
+    def svg_inline(self, width: str = "100%") -> str:
+        """The page as an SVG element that scales to ``width`` (for HTML and notebooks)."""
+        text = self.svg()
+        head, rest = text.split("<svg", 1)
+        tag, body = rest.split(">", 1)
+        tag = tag.replace(f'width="{self.paper.width:g}mm"', f'width="{width}"')
+        tag = tag.replace(f'height="{self.paper.height:g}mm"', 'height="auto"')
+        return f"<svg{tag}>{body}"
+
+    def save(self, path, *, dpi: float | None = None):
+        """Write this page as SVG, PDF or PNG (the suffix decides), atomically; returns the Path."""
+        from pathlib import Path as _Path
+        from .export import PNG_DPI, ExportError, write_sheets
+        path = _Path(path)
+        fmt = path.suffix.lower().lstrip(".")
+        if fmt not in ("svg", "pdf", "png"):
+            raise ExportError(f"Cannot write {path}: the suffix must be .svg, .pdf or .png")
+        (written,) = write_sheets([self], path.parent if str(path.parent) else _Path("."), path.stem, [fmt],
+                                  dpi=dpi or PNG_DPI)
+        return written
+
+    def _repr_svg_(self) -> str:
+        return self.svg_inline()
+
     def named(self, prefix: str) -> tuple[Command, ...]:
         return tuple(c for c in self.commands if c.name.startswith(prefix))
 

@@ -121,6 +121,31 @@ class Study:
         """The analytic model the results were checked against, or None."""
         return self.family.model_name(self)
 
+    @property
+    def results(self) -> dict[str, Comparison]:
+        """Every compared quantity by name ("V_C", "omega_2", "F_32"): ``.graphical`` read off the
+        construction, ``.analytic``, ``.difference``, ``.agrees`` (SI values; vectors as Vec, rates CCW
+        positive).  :meth:`table` has the same rows as text in the scene's units."""
+        return {c.name: c for c in self.comparisons}
+
+    def sheets(self) -> list:
+        """The worked sheets (:class:`~drafting.sheet.Sheet`, one per page): ``sheet.save("x.pdf")``."""
+        from .worked import sheets_for
+        return list(sheets_for(self))
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the title, the results table in the scene's units and the first sheet, inline."""
+        from html import escape
+        rows = "".join(f"<tr><td>{escape(q)}</td><td>{escape(g)}</td><td>{escape(a)}</td><td>{escape(d)}</td></tr>"
+                       for q, g, a, d in self.table())
+        head = "<tr><th>quantity</th><th>graphical</th><th>analytic</th><th>difference</th></tr>"
+        table = f"<table>{head}{rows}</table>" if rows else ""
+        words = "".join(f"<li>{escape(w)}</li>" for w in self.notes + self.warnings)
+        sheets = self.sheets()
+        more = f"<p>{len(sheets)} sheets; the first:</p>" if len(sheets) > 1 else ""
+        return (f"<div><h4>{escape(self.scene.title)}</h4>{table}"
+                + (f"<ul>{words}</ul>" if words else "") + more + sheets[0].svg_inline() + "</div>")
+
     def disagreements(self) -> list[Comparison]:
         return [c for c in self.comparisons if c.agrees is False]
 

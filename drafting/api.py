@@ -1,0 +1,56 @@
+"""The Python API, for scripts and notebooks.
+
+    import drafting
+    study = drafting.load("gallery/notes-velocity-example-1.toml")   # or a dict, or drafting.loads(text)
+    study.results["V_C"].graphical            # the value read off the construction (SI)
+    sheets = study.sheets()                   # the worked sheets, one or more pages
+    sheets[0].save("example.pdf")             # .svg, .pdf or .png, by the suffix
+    study                                     # in Jupyter: the results table and the first sheet, inline
+
+Everything is what the command line does, without the command line: the same scene reader (a scene is
+untrusted input, read strictly, errors one sentence naming the file and key as
+:class:`~drafting.scene.SceneError`), the same lazy study (only the analyses the scene asks for), the
+same sheets.  Scene, Study, Sheet and Construction display themselves in Jupyter (``_repr_html_``,
+``_repr_svg_``).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Mapping
+
+from .scene import Scene, load_scene, parse_scene, scene_from_data
+from .study import Study
+
+__all__ = ["load", "loads"]
+
+
+def load(source: str | Path | Mapping[str, Any] | Scene, *, paper: str | None = None) -> Study:
+    """A solved study of a scene file (a path), of a scene given as a dict (the TOML's tables), or of a
+    :class:`Scene` already read.  ``paper`` ("A4" or "A3") overrides the scene's.  Raises SceneError for
+    bad input and ConstructionError where the mechanism cannot be drawn (a singular position names
+    itself)."""
+    if isinstance(source, Scene):
+        scene = source
+    elif isinstance(source, Mapping):
+        scene = scene_from_data(dict(source), "<dict>")
+    elif isinstance(source, (str, Path)):
+        scene = load_scene(source)
+    else:
+        raise TypeError(f"load() takes a scene file's path, a dict or a Scene, not {type(source).__name__}")
+    return _study(scene, paper)
+
+
+def loads(text: str, *, name: str = "<text>", paper: str | None = None) -> Study:
+    """A solved study of a scene given as TOML text (``name`` stands for the file in errors)."""
+    return _study(parse_scene(text, name), paper)
+
+
+def _study(scene: Scene, paper: str | None) -> Study:
+    if paper is not None:
+        from dataclasses import replace
+        from .scene import PAPERS
+        if paper not in PAPERS:
+            raise ValueError(f"paper must be one of {', '.join(PAPERS)}, not {paper!r}")
+        scene = replace(scene, paper=paper)
+    return Study(scene).run()
