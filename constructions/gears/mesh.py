@@ -1,0 +1,400 @@
+"""A pair of spur gears in mesh, drawn as the notes draw it, and its contact geometry read off the drawing.
+
+Gear 1 (the pinion) drives, turning clockwise; its centre O1 is at the origin, gear 2's centre O2 on +x
+at the centre distance C (a rack: its pitch line square to O1P at C from O1).  The construction is
+Cartesian, as a drafter works: the pitch point P divides O1O2 in the ratio of the teeth; the line of
+action is drawn through P at the working pressure angle phi' (cos phi' = (r_b1 + r_b2)/C; phi itself at
+the standard distance) to the common tangent of the pitch circles; the base circles touch it at the
+interference points T1 and T2; the addendum circle of the driven gear cuts it where contact starts (A),
+the driver's where it ends (B).  AP is the approach, PB the recess, AB the path of contact; contact
+ratio AB / p_b.  Contact starting or ending outside T1T2 is interference, decided three ways (clear, at
+the limit, interference) within 1e-9 of the scene size.  The closed forms that check these readings
+are :mod:`constructions.gears.mesh_check`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..errors import ConstructionError, DegenerateInput
+from ..geometry import Circle as GCircle, Contact, Line, Tolerance, Vec, intersect_line_circle
+from ..quantities import Measured
+from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dimension, Note, Pivot, Point, Role,
+                      Segment, StepKind, Value)
+from ..tolerance import DECISION
+from .tooth import Gear, ToothSystem, roll_angle, unwinding_points
+
+SPACE = Diagram("space")
+THREAD = Diagram("involute", "by unwinding a thread")
+
+CLEAR, AT_LIMIT, INTERFERENCE = "clear", "at the limit", "interference"
+
+FLANK_POINTS = 24
+"""Points per involute flank drawn (see benchmarks/involute_flank.py: the chord error of 24 points on a
+module-5 tooth is far below a printed line's width)."""
+
+
+@dataclass(frozen=True)
+class Pair:
+    """Gear 1 (the pinion, driver) with gear 2 -- or a rack when ``gear`` is None -- at ``centre_distance``
+    (None: the standard distance (r1 + r2), or r1 from the rack's pitch line)."""
+
+    pinion: Gear
+    gear: Gear | None = None
+    centre_distance: float | None = None
+    rack_system: ToothSystem | None = None
+
+    def __post_init__(self) -> None:
+        if self.gear is not None and self.gear.system.module != self.pinion.system.module:
+            raise DegenerateInput("gears in mesh need the same module")
+        if self.gear is not None and self.gear.system.pressure_angle != self.pinion.system.pressure_angle:
+            raise DegenerateInput("gears in mesh need the same pressure angle")
+
+    @property
+    def rack(self) -> bool:
+        return self.gear is None
+
+    @property
+    def rack_teeth(self) -> ToothSystem:
+        return self.rack_system or self.pinion.system
+
+    @property
+    def standard_distance(self) -> float:
+        r1 = self.pinion.pitch_radius
+        return r1 if self.rack else r1 + self.gear.pitch_radius
+
+    @property
+    def distance(self) -> float:
+        return self.standard_distance if self.centre_distance is None else self.centre_distance
+
+    @property
+    def size(self) -> float:
+        """The scene size L the decisions are taken against: the centre distance plus the larger tip."""
+        ra2 = self.rack_teeth.a if self.rack else self.gear.addendum_radius
+        return self.distance + max(self.pinion.addendum_radius, ra2)
+
+
+@dataclass(frozen=True)
+class ContactGeometry:
+    """The contact geometry read off the construction (SI; points in the drawing's frame)."""
+
+    points: dict[str, Vec]
+    working_pressure_angle: float
+    working_radii: tuple[float, float]          # r1', r2' (rack: r1', inf)
+    approach: float                             # AP
+    recess: float                               # PB
+    path: float                                 # AB
+    base_pitch: float
+    limits: tuple[float, float]                 # PT1, PT2 (rack: PT1, inf)
+    start: str                                  # CLEAR / AT_LIMIT / INTERFERENCE at A (against T1)
+    end: str                                    # ... at B (against T2)
+    tolerance: float
+
+    @property
+    def contact_ratio(self) -> float:
+        return self.path / self.base_pitch
+
+    @property
+    def verdict(self) -> str:
+        if INTERFERENCE in (self.start, self.end):
+            return INTERFERENCE
+        return AT_LIMIT if AT_LIMIT in (self.start, self.end) else CLEAR
+
+
+@dataclass
+class MeshAnalysis:
+    pair: Pair
+    construction: Construction
+    geometry: ContactGeometry
+    warnings: tuple[str, ...] = field(default_factory=tuple)
+
+    def measured(self) -> list[Measured]:
+        g = self.geometry
+        out = [Measured("AP", "length", g.approach), Measured("PB", "length", g.recess),
+               Measured("AB", "length", g.path), Measured("p_b", "length", g.base_pitch),
+               Measured("PT_1", "length", g.limits[0])]
+        if not self.pair.rack:
+            out.append(Measured("PT_2", "length", g.limits[1]))
+        out.append(Measured("phi'", "angle", g.working_pressure_angle))
+        return out
+
+
+def _three_way(reach: float, limit: float, tol: float) -> str:
+    gap = limit - reach
+    return CLEAR if gap > tol else AT_LIMIT if gap >= -tol else INTERFERENCE
+
+
+def _v(kind: str, x: float) -> Value:
+    return Value(kind, x)
+
+
+def contact_geometry(pair: Pair) -> tuple[ContactGeometry, dict]:
+    """The Cartesian construction of the contact geometry; also returns the lines and circles drawn."""
+    p1 = pair.pinion
+    phi = p1.system.pressure_angle
+    C = pair.distance
+    L = pair.size
+    tol = Tolerance(L)
+    if C < pair.standard_distance - tol.length:
+        what = "rack's pitch line" if pair.rack else "centre distance"
+        raise ConstructionError(f"the {what} {C:.6g} m is less than the standard {pair.standard_distance:.6g} m: "
+                                f"the teeth would jam (an involute pair may be pulled apart, never pushed closer)")
+    O1 = Vec(0.0, 0.0)
+    rb1 = p1.base_radius
+    if pair.rack:
+        phi_w = phi
+        r1w = p1.pitch_radius
+        O2 = None
+    else:
+        g2 = pair.gear
+        rb2 = g2.base_radius
+        c = (rb1 + rb2) / C
+        phi_w = phi if pair.centre_distance is None else math.acos(min(1.0, c))
+        r1w = C * p1.teeth / (p1.teeth + g2.teeth)
+        O2 = Vec(C, 0.0)
+    P = Vec(r1w, 0.0)
+    # the line of action through P at phi' to the common tangent (the y axis), leaning so the driver turning
+    # clockwise pushes the contact from T1 towards T2
+    d = Vec(math.sin(phi_w), -math.cos(phi_w))
+    loa = Line(P, d)
+    T1 = loa.foot(O1)
+    pts = {"O1": O1, "P": P, "T1": T1}
+    # where contact ends: the driver's addendum circle on the far side of P from T1
+    cut1 = intersect_line_circle(loa, GCircle(O1, p1.addendum_radius), tol)
+    B = cut1.points[0]                       # ahead along d (towards T2)
+    if pair.rack:
+        rs = pair.rack_teeth
+        tip_x = C - rs.a                     # the rack's addendum line, square to O1P
+        if tip_x >= r1w:
+            raise ConstructionError("the rack's addendum line does not reach the pitch point: its teeth miss the pinion")
+        # the line of action meets the addendum line x = tip_x behind P (towards T1)
+        A = P + d * ((tip_x - P.x) / d.x)
+        T2 = None
+        limit2 = math.inf
+        r2w = math.inf
+    else:
+        O2v = O2
+        T2 = loa.foot(O2v)
+        cut2 = intersect_line_circle(loa, GCircle(O2v, pair.gear.addendum_radius), tol)
+        if cut2.contact is not Contact.CROSSING:
+            raise ConstructionError("the addendum circle of gear 2 does not cut the line of action")
+        A = cut2.points[1]                   # behind the foot T2, towards T1
+        pts |= {"O2": O2v, "T2": T2}
+        limit2 = P.distance_to(T2)
+        r2w = C - r1w
+    along = lambda q: d.dot(q - P)          # noqa: E731 -- signed distance along the line of action from P
+    approach, recess = -along(A), along(B)
+    if approach <= tol.length or recess <= tol.length:
+        who = "gear 2 (or the rack)" if approach <= tol.length else "gear 1"
+        raise ConstructionError(f"the addendum circle of {who} does not reach past the pitch point on the line of "
+                                f"action: the teeth never come into contact there (centre distance too large)")
+    pts |= {"A": A, "B": B}
+    limit1 = P.distance_to(T1)
+    start = _three_way(approach, limit1, tol.length)
+    end = _three_way(recess, limit2, tol.length) if not pair.rack else CLEAR
+    geo = ContactGeometry(pts, phi_w, (r1w, r2w), approach, recess, A.distance_to(B), p1.base_pitch,
+                          (limit1, limit2), start, end, tol.length)
+    return geo, {"line": loa}
+
+
+class _Draw:
+    def __init__(self, pair: Pair, geo: ContactGeometry, fmt) -> None:
+        self.pair, self.geo, self.fmt = pair, geo, fmt
+        self.rec = Construction("Gears in mesh: contact geometry")
+
+    def then(self, words, *ents, values=None, kind=StepKind.CONSTRUCTION):
+        self.rec = self.rec.then(words, *ents, values=values, kind=kind)
+
+
+def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int = FLANK_POINTS,
+                  thread: bool = True) -> MeshAnalysis:
+    """The pair drawn as the notes' contact-geometry diagram, step by step, and its readings."""
+    geo, _ = contact_geometry(pair)
+    p1, g2 = pair.pinion, pair.gear
+    sysm = p1.system
+    pts = geo.points
+    O1, P, T1, A, B = pts["O1"], pts["P"], pts["T1"], pts["A"], pts["B"]
+    C = pair.distance
+    phi_w = geo.working_pressure_angle
+    rec = Construction("Gears in mesh: contact geometry")
+    warnings: list[str] = []
+    name2 = "the rack" if pair.rack else "gear 2"
+    # 1 the data
+    given = [Pivot("O1", Role.GIVEN, SPACE, O1, "O1")]
+    vals = {"m": _v("length", sysm.module), "phi": _v("angle", sysm.pressure_angle), "C": _v("length", C)}
+    if pair.rack:
+        rack_x = C
+        top, bottom = P.y + 0.75 * p1.addendum_radius, P.y - 0.75 * p1.addendum_radius
+        given.append(Segment("rack pitch line", Role.CENTRE_LINE, SPACE, Vec(rack_x, bottom), Vec(rack_x, top), "pitch line"))
+        words = (f"Given: pinion 1 ({p1.teeth} teeth, the driver, turning clockwise) and a rack, module $m, pressure angle "
+                 f"$phi; the rack's pitch line $C from O1.")
+    else:
+        O2 = pts["O2"]
+        given += [Pivot("O2", Role.GIVEN, SPACE, O2, "O2"),
+                  Segment("line of centres", Role.CENTRE_LINE, SPACE, O1, O2)]
+        words = (f"Given: gear 1 ({p1.teeth} teeth, the driver, turning clockwise) and gear 2 ({g2.teeth} teeth), module "
+                 f"$m, pressure angle $phi, centre distance O1O2 = $C"
+                 + (" (the standard distance)." if pair.centre_distance is None else "."))
+    rec = rec.then(words, *given, values=vals, kind=StepKind.GIVEN)
+    # 2 pitch circles and the pitch point
+    r1w, r2w = geo.working_radii
+    ents = [Circle("pitch circle 1", Role.CENTRE_LINE, SPACE, O1, r1w), Point("P", Role.LABEL, SPACE, P, "P")]
+    vals = {"r1": _v("length", r1w)}
+    if pair.rack:
+        words = "Pitch circle of the pinion, r1 = mN1/2 = $r1, touching the rack's pitch line at the pitch point P."
+    else:
+        ents.insert(1, Circle("pitch circle 2", Role.CENTRE_LINE, SPACE, pts["O2"], r2w))
+        vals["r2"] = _v("length", r2w)
+        if pair.centre_distance is None:
+            words = ("Pitch circles r1 = mN1/2 = $r1 and r2 = mN2/2 = $r2; they touch at the pitch point P on the line "
+                     "of centres.")
+        else:
+            words = ("At the stated centre distance the pitch point P divides O1O2 in the ratio of the teeth: working "
+                     "pitch circles r1' = C N1/(N1+N2) = $r1 and r2' = $r2.")
+    rec = rec.then(words, *ents, values=vals)
+    # 3 the line of action
+    d = Vec(math.sin(phi_w), -math.cos(phi_w))
+    far = max(geo.path, p1.addendum_radius) * 0.35
+    lo = min(d.dot(T1 - P), d.dot(A - P)) - far
+    hi = (d.dot(pts["T2"] - P) if "T2" in pts else d.dot(B - P)) + far
+    hi = max(hi, d.dot(B - P) + far)
+    tangent_len = 0.8 * p1.addendum_radius if pair.rack else 0.5 * min(r1w, r2w)
+    mark_r = 0.35 * min(p1.pitch_radius, geo.path * 3)
+    ents = [Segment("common tangent", Role.AUXILIARY, SPACE, P + Vec(0, -tangent_len), P + Vec(0, tangent_len)),
+            Segment("line of action", Role.PATH, SPACE, P + d * lo, P + d * hi, "line of action"),
+            AngleMark("pressure angle", Role.DIMENSION, SPACE, P, mark_r, -math.pi / 2, -math.pi / 2 + phi_w,
+                      "\u03c6'" if pair.centre_distance is not None and not pair.rack else "\u03c6")]
+    vals = {"phiw": _v("angle", phi_w)}
+    if pair.centre_distance is not None and not pair.rack:
+        words = ("Through P draw the line of action at the working pressure angle \u03c6' to the common tangent of the "
+                 "pitch circles: cos \u03c6' = (r_b1 + r_b2)/C, \u03c6' = $phiw.")
+    else:
+        words = "Through P draw the line of action at the pressure angle $phiw to the common tangent of the pitch circles."
+    rec = rec.then(words, *ents, values=vals)
+    # 4 base circles and the interference points
+    ents = [Circle("base circle 1", Role.CENTRE_LINE, SPACE, O1, p1.base_radius),
+            Segment("O1T1", Role.AUXILIARY, SPACE, O1, T1), Point("T1", Role.LABEL, SPACE, T1, "T1")]
+    vals = {"rb1": _v("length", p1.base_radius)}
+    if pair.rack:
+        words = ("The base circle r_b1 = r1 cos \u03c6 = $rb1 touches the line of action at the interference point T1 "
+                 "(the foot of the perpendicular from O1).")
+    else:
+        T2 = pts["T2"]
+        ents += [Circle("base circle 2", Role.CENTRE_LINE, SPACE, pts["O2"], g2.base_radius),
+                 Segment("O2T2", Role.AUXILIARY, SPACE, pts["O2"], T2), Point("T2", Role.LABEL, SPACE, T2, "T2")]
+        vals["rb2"] = _v("length", g2.base_radius)
+        words = ("The base circles r_b1 = $rb1 and r_b2 = $rb2 (r cos \u03c6) touch the line of action at the "
+                 "interference points T1 and T2, the feet of the perpendiculars from O1 and O2.")
+    rec = rec.then(words, *ents, values=vals)
+    # 5 addendum and dedendum circles
+    ents = [Circle("addendum circle 1", Role.GIVEN, SPACE, O1, p1.addendum_radius),
+            Circle("dedendum circle 1", Role.AUXILIARY, SPACE, O1, p1.dedendum_radius)]
+    vals = {"ra1": _v("length", p1.addendum_radius)}
+    if pair.rack:
+        tip_x = C - pair.rack_teeth.a
+        top, bottom = P.y + 0.75 * p1.addendum_radius, P.y - 0.75 * p1.addendum_radius
+        ents.append(Segment("rack addendum line", Role.GIVEN, SPACE, Vec(tip_x, bottom), Vec(tip_x, top)))
+        vals["a2"] = _v("length", pair.rack_teeth.a)
+        words = "Addendum circle of the pinion r_a1 = r1 + a = $ra1; the rack's addendum line $a2 inside its pitch line."
+    else:
+        ents += [Circle("addendum circle 2", Role.GIVEN, SPACE, pts["O2"], g2.addendum_radius),
+                 Circle("dedendum circle 2", Role.AUXILIARY, SPACE, pts["O2"], g2.dedendum_radius)]
+        vals["ra2"] = _v("length", g2.addendum_radius)
+        words = "Addendum circles r_a1 = r1 + a = $ra1 and r_a2 = $ra2 (dedendum circles thin)."
+    rec = rec.then(words, *ents, values=vals)
+    # 6 the path of contact
+    n = d.perp()
+    off = 0.06 * max(geo.path, p1.addendum_radius * 0.3) * 2
+    ents = [Point("A", Role.LABEL, SPACE, A, "A"), Point("B", Role.LABEL, SPACE, B, "B"),
+            Segment("path of contact", Role.RESULT, SPACE, A, B),
+            Dimension("approach", Role.DIMENSION, SPACE, A, P, off, "AP $ap"),
+            Dimension("recess", Role.DIMENSION, SPACE, P, B, off, "PB $pb")]
+    vals = {"ap": _v("length", geo.approach), "pb": _v("length", geo.recess), "ab": _v("length", geo.path)}
+    words = (f"Contact starts at A, where the addendum {'line' if pair.rack else 'circle'} of the driven {name2} cuts "
+             f"the line of action, and ends at B on the driver's addendum circle: approach AP = $ap, recess PB = $pb, "
+             f"path of contact AB = $ab.")
+    rec = rec.then(words, *ents, values=vals, kind=StepKind.ANSWER)
+    # 7 interference
+    vals = {"pt1": _v("length", geo.limits[0]), "ap": _v("length", geo.approach)}
+    verdict = {CLEAR: "inside", AT_LIMIT: "exactly at", INTERFERENCE: "outside"}
+    words = f"Interference check: A lies {verdict[geo.start]} T1 (AP = $ap against PT1 = $pt1)"
+    if not pair.rack:
+        vals |= {"pt2": _v("length", geo.limits[1]), "pb": _v("length", geo.recess)}
+        words += f"; B lies {verdict[geo.end]} T2 (PB = $pb against PT2 = $pt2)"
+    words += {CLEAR: ": no interference.", AT_LIMIT: ": at the limit of interference (contact starts or ends at an "
+              "interference point), no interference.", INTERFERENCE: ": INTERFERENCE -- contact off the involutes, "
+              "below a base circle."}[geo.verdict]
+    rec = rec.then(words, values=vals, kind=StepKind.ANSWER)
+    if geo.verdict == INTERFERENCE:
+        warnings.append("Interference: contact " + ("starts before T1" if geo.start == INTERFERENCE else "ends after T2")
+                        + ", below a base circle where there is no involute (the teeth would be undercut when cut by "
+                          "generation).")
+    # 8 contact ratio
+    cr = geo.contact_ratio
+    vals = {"pbase": _v("length", geo.base_pitch), "ab": _v("length", geo.path), "cr": _v("number", cr)}
+    rec = rec.then("Base pitch p_b = \u03c0 m cos \u03c6 = $pbase; contact ratio AB / p_b = $ab / $pbase = $cr.",
+                   values=vals, kind=StepKind.ANSWER)
+    if cr < 1.0:
+        warnings.append(f"Contact ratio {cr:.3f} is below 1: a pair of teeth leaves contact before the next pair "
+                        f"engages (the drive is not continuous).")
+    # 9 teeth
+    ents = [Curve("teeth 1", Role.GIVEN, SPACE, tuple(p1.teeth_outline(O1, p1.half_tooth_angle - teeth_drawn * 2 * math.pi
+                                                                          / p1.teeth, 2 * teeth_drawn + 1, flank_points)))]
+    if pair.rack:
+        ents.append(Curve("rack teeth", Role.GIVEN, SPACE, tuple(_rack_outline(pair, teeth_drawn + 1))))
+    else:
+        O2 = pts["O2"]
+        ents.append(Curve("teeth 2", Role.GIVEN, SPACE, tuple(g2.teeth_outline(
+            O2, math.pi + g2.half_tooth_angle - teeth_drawn * 2 * math.pi / g2.teeth, 2 * teeth_drawn + 1, flank_points))))
+    rec = rec.then(f"A few teeth of each, their involute flanks computed exactly ({flank_points} points a flank): a pair "
+                   f"in contact at P, the flanks square to the line of action there.", *ents)
+    if thread:
+        rec = rec + _thread_construction(p1, phi_w)
+    return MeshAnalysis(pair, rec, geo, tuple(warnings))
+
+
+def _rack_outline(pair: Pair, count: int) -> list[Vec]:
+    """The rack's teeth about the pitch point: straight flanks at the pressure angle, a tooth centred a
+    quarter pitch below P so its flank passes through P."""
+    s = pair.rack_teeth
+    p = s.circular_pitch
+    phi = s.pressure_angle
+    x0 = pair.distance                       # pitch line
+    xa, xd = x0 - s.a, x0 + s.d
+    t = math.tan(phi)
+    out: list[Vec] = []
+    for k in range(-count, count + 1):
+        yc = -p / 4 + k * p                  # tooth centre on the pitch line
+        half = p / 4
+        lower = [Vec(xd, yc - half - s.d * t), Vec(xa, yc - half + s.a * t)]
+        upper = [Vec(xa, yc + half - s.a * t), Vec(xd, yc + half + s.d * t)]
+        out += lower + upper
+    return out
+
+
+def _thread_construction(g: Gear, phi: float) -> Construction:
+    """The involute of gear 1 drawn by unwinding a thread off its base circle (a separate detail)."""
+    rb, ra = g.base_radius, g.addendum_radius
+    O = Vec(0.0, 0.0)
+    u_tip = roll_angle(rb, ra)
+    count = 6
+    step = u_tip / count
+    theta0 = math.pi / 2 - u_tip / 2         # the flank stands upright on the detail
+    marks = unwinding_points(rb, theta0, step, count, O, +1)
+    a0, a1 = theta0 - 0.1, theta0 + u_tip + 0.15
+    ents = [Arc("thread base arc", Role.CENTRE_LINE, THREAD, O, rb, a0, a1),
+            Arc("thread pitch arc", Role.CENTRE_LINE, THREAD, O, g.pitch_radius, a0, a1),
+            Arc("thread addendum arc", Role.AUXILIARY, THREAD, O, ra, a0, a1)]
+    rec = Construction("involute").then(
+        "Involute by unwinding a thread: divide the base circle of gear 1 from the flank's root into equal arcs of "
+        "roll angle $du.", *ents, *[Point(f"thread k{k}", Role.LABEL, THREAD, t, str(k)) for k, (t, _, _) in enumerate(marks)],
+        values={"du": Value("angle", step)})
+    tans = [Segment(f"thread tangent {k}", Role.AUXILIARY, THREAD, t, e) for k, (t, e, _) in enumerate(marks) if k]
+    rec = rec.then("At each division draw the tangent and lay off along it the unwound arc r_b u (the thread held "
+                   "tight): its ends are points of the involute.", *tans)
+    from .tooth import involute_point
+    fine = [involute_point(rb, theta0, u_tip * i / (FLANK_POINTS * 2 - 1), O, +1) for i in range(FLANK_POINTS * 2)]
+    rec = rec.then("Join them: the involute flank from the base circle to the addendum circle (drawn computed exactly).",
+                   Curve("involute", Role.RESULT, THREAD, tuple(fine)))
+    return rec
