@@ -78,6 +78,8 @@ def register(family: Family) -> Family:
 BUILTIN = (
     "drafting.linkage_family",
     "drafting.free_body_family",
+    "drafting.gear_family",
+    "drafting.cam_family",
 )
 """The modules of the families this package ships; each registers its family when imported.  Named, not
 imported here, so this registry depends on no family (a family depends on it)."""

@@ -24,9 +24,6 @@ from .textsafe import cut, cut_middle, one_line, printable
 from .units import UnitError, check_unit, to_si
 
 PLANNED_KINDS = (
-    "cam",
-    "gear pair",
-    "gear train",
 )
 """Scene families announced but not built yet: a scene of one of these kinds gets a clear "not yet"."""
 PAPERS = ("A4", "A3")

@@ -1,0 +1,83 @@
+"""The s-v-a-j diagrams of a motion program against the cam angle, as chart entities.
+
+Each piece of the program (a segment, or half a parabolic one) is sampled on its own, ends included, so a
+jump at a join shows as a break in the curve (a NaN between the pieces), never as a drawn vertical line;
+the join's consequence (infinite acceleration where the velocity jumps, infinite jerk where the
+acceleration jumps) is named in the step's words.  With the cam's speed ``omega`` the curves are v, a and
+j in SI; without it, s', s'' and s''' per radian (charted as lengths: m per rad^k).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..record import Chart, Diagram, Role, Series
+from .laws import Program, TAU
+from .profile import segment_breaks
+
+
+def chart_diagram(name: str) -> Diagram:
+    return Diagram("chart", name)
+
+
+def svaj_series(program: Program, omega: float | None, per_piece: int = 48):
+    """(x, [s, v, a, j]) as tuples with NaN breaks where a value jumps between pieces."""
+    b = segment_breaks(program)
+    w = abs(omega) if omega else 1.0
+    xs: list[float] = []
+    ys: list[list[float]] = [[], [], [], []]
+    prev_end = None
+    for lo, hi in zip(b[:-1], b[1:]):
+        if hi - lo <= 0:
+            continue
+        g = np.linspace(lo, hi, per_piece)
+        # evaluate just inside the piece so each end takes this piece's one-sided value
+        eps = (hi - lo) * 1e-12
+        gi = np.clip(g, lo + eps, hi - eps)
+        d = program.derivatives(gi)
+        vals = [d[0], d[1] * w, d[2] * w ** 2, d[3] * w ** 3]
+        if prev_end is not None:
+            jump = [abs(vals[k][0] - prev_end[k]) > 1e-9 * (1.0 + np.max(np.abs(vals[k]))) for k in range(4)]
+            if any(jump):
+                xs.append(float(lo))
+                for k in range(4):
+                    ys[k].append(math.nan if jump[k] else float(vals[k][0]))
+        xs.extend(float(x) for x in g)
+        for k in range(4):
+            ys[k].extend(float(v) for v in vals[k])
+        prev_end = [vals[k][-1] for k in range(4)]
+    return tuple(xs), [tuple(y) for y in ys]
+
+
+def svaj_charts(program: Program, omega: float | None) -> list[Chart]:
+    x, ys = svaj_series(program, omega)
+    # a NaN row inserted at a jump must not break curves that do not jump there: fill their value
+    out = []
+    if omega:
+        spec = (("s", "Displacement s", "length"), ("v", "Velocity v", "velocity"),
+                ("a", "Acceleration a", "acceleration"), ("j", "Jerk j", "jerk"))
+    else:
+        spec = (("s", "Displacement s", "length"), ("ds/d\u03b8", "ds/d\u03b8 (per rad)", "length"),
+                ("d\u00b2s/d\u03b8\u00b2", "d\u00b2s/d\u03b8\u00b2 (per rad\u00b2)", "length"),
+                ("d\u00b3s/d\u03b8\u00b3", "d\u00b3s/d\u03b8\u00b3 (per rad\u00b3)", "length"))
+    for (label, title, kind), y in zip(spec, ys):
+        xx, yy = _fill(x, y)
+        out.append(Chart(f"chart {label}", Role.GIVEN, chart_diagram(title), "angle", "cam angle",
+                         (Series(label, xx, yy, kind),)))
+    return out
+
+
+def _fill(x, y):
+    """Drop the extra row at a join for a curve that is continuous there (its NaN-free duplicate)."""
+    xx, yy = [], []
+    for i, (a, b) in enumerate(zip(x, y)):
+        if i and a == x[i - 1] and not math.isnan(b) and not math.isnan(y[i - 1]) and b == y[i - 1]:
+            continue
+        xx.append(a)
+        yy.append(b)
+    return tuple(xx), tuple(yy)
+
+
+__all__ = ["svaj_charts", "svaj_series", "chart_diagram"]

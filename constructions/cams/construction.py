@@ -1,0 +1,222 @@
+"""The graphical construction of a disk cam's profile, step by step as the notes draw it.
+
+Notes, "Graphical construction of cam (roller follower)" and "Roller follower with offset":
+
+1. divide the cam angle (360 deg) into N equal portions;
+2. calculate and tabulate s at every interval;
+3. draw the base circle (r_b);
+4. draw the prime circle (r_b + r_0; a roller follower);
+5. draw the offset circle (radius e; an offset follower);
+6. draw the N follower lines -- radial lines, or lines tangent to the offset circle -- laid out opposite
+   to the cam's rotation (the cam is held still and the follower walked round it);
+7. on each line mark the roller centre s_i beyond the prime circle and draw the roller circle (a flat
+   face: the face line square to the line at r_b + s_i; a knife edge: the edge itself);
+8. draw the profile tangent to every roller circle (face line): their envelope.
+
+The stations and roller centres are computed in the cam frame of :mod:`constructions.cams.profile`; the
+profile drawn is the exact envelope, its contact points on the roller circles marked.  Measured values
+read off the construction: the roller centres and contact points at the
+segment joins (their distance from O is the prime circle plus the lift tabulated there), and the pressure angle at the station where it is largest (the angle between the
+follower's line and the roller's radius to its contact point; flat-faced: the face is square to its line).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geometry import Vec
+from ..quantities import Measured
+from ..record import Circle, Construction, Curve, Diagram, Note, Pivot, Point, Role, Segment, StepKind, Value
+from .charts import svaj_charts
+from .laws import DWELL, TAU, Program
+from .profile import FLAT, KNIFE, ROLLER, CamProfile, Follower, analyse, evaluate
+
+CAM = Diagram("cam", "profile")
+
+
+@dataclass
+class CamConstruction:
+    construction: Construction
+    stations: np.ndarray                  # the cam angles of the stations (rad)
+    table: np.ndarray                     # s at each station (SI)
+    centres: np.ndarray                   # roller centres (knife: edges; flat: the feet of the face lines) 2 x N
+    contacts: np.ndarray                  # contact points on each roller circle / face line, 2 x N
+    profile: CamProfile
+    measured: list[Measured]
+    station_names: dict[str, int]         # "P_120" -> station index
+
+
+def _v(p) -> Vec:
+    return Vec(float(p[0]), float(p[1]))
+
+
+def _deg(theta: float) -> str:
+    d = math.degrees(theta)
+    return f"{d:.6g}"
+
+
+def construct(program: Program, f: Follower, divisions: int, *, omega: float | None = None,
+              degrees=lambda a: f"{math.degrees(a):.4g} deg", samples: int = 2048) -> CamConstruction:
+    """The construction with ``divisions`` equal portions of the turn."""
+    if divisions < 4:
+        raise ValueError("divide the cam angle into at least 4 portions")
+    cp = analyse(program, f, samples)
+    n = divisions
+    step = TAU / n
+    th = np.arange(n) * step
+    ev = evaluate(program, f, th)
+    sg = f.sense
+    O = Vec(0.0, 0.0)
+    turn = "counter-clockwise" if sg > 0 else "clockwise"
+    opposite = "clockwise" if sg > 0 else "counter-clockwise"
+    rb, rr, e = f.base_radius, f.roller_radius, f.offset
+
+    # the program in words (given)
+    parts = []
+    vals: dict[str, Value] = {}
+    for i, seg in enumerate(program.segments):
+        a, b = program.starts[i], program.starts[i] + seg.beta
+        vals[f"a{i}"], vals[f"b{i}"] = Value("angle", a), Value("angle", b)
+        if seg.kind == DWELL:
+            vals[f"h{i}"] = Value("length", program.levels[i])
+            parts.append(f"dwell at $h{i} from $a{i} to $b{i}")
+        else:
+            vals[f"h{i}"] = Value("length", seg.lift)
+            parts.append(f"{seg.law} {seg.kind} of $h{i} from $a{i} to $b{i}")
+    vals["rb"] = Value("length", rb)
+    what = {KNIFE: "a knife-edge follower", ROLLER: "a roller follower of radius $rr",
+            FLAT: "a flat-faced follower"}[f.kind]
+    if f.kind == ROLLER:
+        vals["rr"] = Value("length", rr)
+    off = ""
+    if e and f.kind != FLAT:
+        vals["e"] = Value("length", abs(e))
+        off = f", its axis offset $e to the {'right' if e > 0 else 'left'} of the cam centre"
+    rec = Construction("Cam profile").then(
+        f"Given: the follower's motion program -- {'; '.join(parts)}; {what}{off}; base circle radius $rb; the "
+        f"cam turns {turn}.", values=vals, kind=StepKind.GIVEN)
+    rec = rec.then(f"Divide the cam angle (360 deg) into N = {n} equal portions of $d.",
+                   values={"d": Value("angle", step)})
+
+    # 2: the table of s
+    tvals = {f"s{i}": Value("length", float(ev.s[i])) for i in range(n)}
+    rows = "; ".join(f"{_deg(th[i])}: $s{i}" for i in range(n))
+    rec = rec.then(f"Calculate and tabulate s at every station (cam angle in deg: s) -- {rows}.", values=tvals)
+
+    # 3-5: circles
+    rec = rec.then("Draw the base circle of radius $rb about the cam centre O.",
+                   Pivot("O", Role.GIVEN, CAM, O, "O"),
+                   Circle("base circle", Role.CENTRE_LINE, CAM, O, rb, "base circle"),
+                   values={"rb": Value("length", rb)})
+    if f.kind == ROLLER:
+        rec = rec.then("Draw the prime circle of radius r_b + r_0 = $rp.",
+                       Circle("prime circle", Role.CENTRE_LINE, CAM, O, f.prime_radius, "prime circle"),
+                       values={"rp": Value("length", f.prime_radius)})
+    if e and f.kind != FLAT:
+        rec = rec.then("Draw the offset circle of radius e = $e about O.",
+                       Circle("offset circle", Role.CENTRE_LINE, CAM, O, abs(e), "offset circle"),
+                       values={"e": Value("length", abs(e))})
+
+    # 6: the follower's lines laid out opposite to the rotation
+    reach = (f.prime_radius if f.kind != FLAT else rb) + program.lift
+    a = -sg * th
+    ux, uy = -np.sin(a), np.cos(a)              # the axis direction at each station (cam frame)
+    wx, wy = np.cos(a), np.sin(a)               # +x of the fixed frame at each station
+    foot = np.stack([e * wx, e * wy]) if f.kind != FLAT else np.zeros((2, n))
+    lines = []
+    label_every = max(1, n // 12)
+    notes = []
+    for i in range(n):
+        p0 = _v(foot[:, i])
+        p1 = Vec(float(foot[0, i] + ux[i] * reach * 1.12), float(foot[1, i] + uy[i] * reach * 1.12))
+        lines.append(Segment(f"line {i}", Role.AUXILIARY, CAM, p0, p1))
+        if i % label_every == 0:
+            q = Vec(float(foot[0, i] + ux[i] * reach * 1.2), float(foot[1, i] + uy[i] * reach * 1.2))
+            notes.append(Note(f"station {i}", Role.LABEL, CAM, q, f"{_deg(th[i])}\u00b0"))
+    kind_lines = "radial lines from O" if not e or f.kind == FLAT else "lines tangent to the offset circle"
+    rec = rec.then(f"Draw the {n} follower lines ({kind_lines}) every $d, laid out {opposite} -- opposite to the "
+                   f"cam's rotation, the cam held still and the follower walked round it; station 0 is the "
+                   f"follower's line at 0 deg.", *lines, *notes, values={"d": Value("angle", step)})
+
+    # 7: roller circles / face lines / edges
+    centres = ev.pitch if f.kind != FLAT else np.stack([(rb + ev.s) * ux, (rb + ev.s) * uy])
+    contacts = ev.profile
+    ents = []
+    if f.kind == ROLLER:
+        for i in range(n):
+            ents.append(Point(f"P{i}", Role.PATH, CAM, _v(centres[:, i])))
+            ents.append(Circle(f"roller {i}", Role.AUXILIARY, CAM, _v(centres[:, i]), rr))
+        words = ("On each line mark the roller centre s_i beyond the prime circle (where the line meets it) and "
+                 "draw a roller circle of radius $rr about it.")
+        wv = {"rr": Value("length", rr)}
+    elif f.kind == KNIFE:
+        for i in range(n):
+            ents.append(Point(f"P{i}", Role.PATH, CAM, _v(centres[:, i])))
+        words = "On each line mark the knife edge s_i beyond the base circle (where the line meets it)."
+        wv = {}
+    else:
+        lo, hi = cp.face_width
+        half = max(abs(lo), abs(hi)) * 1.15 + 0.05 * rb
+        for i in range(n):
+            c = centres[:, i]
+            ents.append(Segment(f"face {i}", Role.AUXILIARY, CAM,
+                                Vec(float(c[0] - wx[i] * half), float(c[1] - wy[i] * half)),
+                                Vec(float(c[0] + wx[i] * half), float(c[1] + wy[i] * half))))
+        words = "On each line draw the face line square to it at r_b + s_i from O."
+        wv = {}
+    rec = rec.then(words, *ents, values=wv)
+
+    # 8: the envelope
+    prof = cp.trimmed
+    curve = Curve("profile", Role.RESULT, CAM, tuple(Vec(float(x), float(y)) for x, y in zip(prof[0], prof[1])),
+                  True, "cam profile")
+    marks = [Point(f"C{i}", Role.RESULT, CAM, _v(contacts[:, i])) for i in range(n)] if f.kind != KNIFE else []
+    tangent = {ROLLER: "tangent to every roller circle (their envelope; its contact points marked)",
+               KNIFE: "through every knife-edge point (the pitch curve itself)",
+               FLAT: "tangent to every face line (their envelope; its contact points marked)"}[f.kind]
+    rec = rec.then(f"Draw the cam profile {tangent}.", curve, *marks)
+
+    # answers read off the construction
+    measured: list[Measured] = []
+    names: dict[str, int] = {}
+    k_max = int(np.argmax(ev.s))
+    join_stations = sorted({int(round(t / step)) % n for t in program.starts
+                            if abs(t / step - round(t / step)) < 1e-9})
+    for i in join_stations:
+        tag = _deg(th[i])
+        measured.append(Measured(f"P_{tag}", "length", _v(centres[:, i])))
+        names[f"P_{tag}"] = i
+        measured.append(Measured(f"C_{tag}", "length", _v(contacts[:, i])))
+        names[f"C_{tag}"] = i
+    if f.kind == ROLLER:
+        # the angle between the follower's line and the roller's radius to its contact point
+        rx, ry = centres[0] - contacts[0], centres[1] - contacts[1]
+        phis = np.arctan2(ux * ry - uy * rx, ux * rx + uy * ry) * sg
+        k = int(np.argmax(np.abs(phis)))
+        measured.append(Measured("phi_max", "angle", float(phis[k])))
+        names["phi_max"] = k
+        rec = rec.then("The pressure angle, read at each station between the follower's line and the roller's "
+                       "radius to its contact point, is largest at station $t: $phi.",
+                       values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
+                       kind=StepKind.ANSWER)
+    elif f.kind == KNIFE:
+        k = int(np.argmax(np.abs(ev.pressure_angle)))
+        rec = rec.then("The pressure angle is largest at station $t: $phi.",
+                       values={"t": Value("angle", float(th[k])),
+                               "phi": Value("angle", float(abs(ev.pressure_angle[k])))}, kind=StepKind.ANSWER)
+    rec = rec.then("The largest lift in the table: $s.", values={"s": Value("length", float(ev.s[k_max]))},
+                   kind=StepKind.ANSWER)
+    charts = svaj_charts(program, omega)
+    jn = [j for j in program.joins() if j.consequence]
+    words = ("The s-v-a-j diagrams against the cam angle" + (" with the cam at its given speed" if omega else
+                                                            ", per radian of cam angle (no cam speed given)"))
+    if jn:
+        words += "; at " + "; ".join(f"{degrees(j.theta)} ({j.before} to {j.after}) {j.consequence}" for j in jn)
+    rec = rec.then(words + ".", *charts)
+    return CamConstruction(rec, th, ev.s, centres, contacts, cp, measured, names)
+
+
+__all__ = ["construct", "CamConstruction", "CAM"]

@@ -1,0 +1,377 @@
+"""The exact cam profile of a disk cam with a translating follower: the analytic envelope.
+
+Frames.  In the *fixed frame* the cam turns about the origin O; the follower's axis is parallel to +y at
+the signed offset ``e`` along +x; the roller centre (the *pitch point*) is at ``q = (e, d0 + s)`` with
+``d0 = sqrt(Rp^2 - e^2)``, ``Rp = rb + rr`` the prime circle's radius (``rr = 0`` for a knife edge).  The
+profile lives in the *cam frame*: with the cam turned through ``theta`` in its sense ``sigma`` (+1 CCW,
+-1 CW), the follower is seen from the cam laid out the opposite way, ``P(theta) = R(-sigma theta) q``
+(the notes' "successive positions laid out opposite to the cam's rotation").
+
+Derivatives of the pitch curve (``J`` the quarter turn CCW, ``R = R(-sigma theta)``)::
+
+    P'   = R (q' - sigma J q)
+    P''  = R (q'' - 2 sigma J q' - q)
+    P''' = R (q''' - 3 sigma J q'' - 3 q' + sigma J q)
+
+The pitch curve is run clockwise for a CCW cam (and the other way for a CW cam), so its outward normal
+is ``n = sigma J t`` (``t`` the unit tangent) and its radius of curvature, positive where convex, is
+``rho_p = -sigma |P'|^3 / (P' x P'')``.  The roller profile is the inner envelope of the roller circles,
+``C = P - rr n``, whose radius of curvature is ``rho_p - rr``; where ``0 < rho_p < rr`` the envelope
+folds back (undercut, a swallowtail), at ``rho_p = rr`` it has a cusp.
+
+The flat-faced follower's face is square to its axis at ``rb + s`` from O; in the cam frame the face
+lines are ``p . u = rb + s`` with ``u = R(-sigma theta) (0, 1)``; their envelope (``p . u' = s'``) touches
+each face at ``sigma s'`` from the axis's foot: ``C = (rb + s) u + sigma s' w``, ``w = R(-sigma theta)(1, 0)``
+(for a CW cam this is the notes' ``x = -(rb + s) sin theta - s' cos theta``, ``y = (rb + s) cos theta -
+s' sin theta``), with radius of curvature ``rb + s + s''`` (needs > 0: rb > max(-(s + s''))).
+
+Pressure angle (the angle between the follower's axis and the common normal at the contact): relative to
+the cam the pitch point moves along ``(sigma (d0 + s), s' - sigma e)``, so ``tan phi = (s' - sigma e) /
+(d0 + s)`` -- the offset counts, and the roller does not (it sits on the prime circle).  A flat face
+square to its axis has phi = 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .laws import TAU, Program
+
+KNIFE, ROLLER, FLAT = "knife-edge", "roller", "flat-faced"
+FOLLOWERS = (KNIFE, ROLLER, FLAT)
+
+
+@dataclass(frozen=True, slots=True)
+class Follower:
+    """A translating follower: its ``kind``, the cam's base circle radius ``rb`` (to the profile), the
+    roller radius ``rr`` (roller only), the signed ``offset`` e of its axis (+x of the fixed frame, the
+    axis pointing +y), and the cam's sense ``sense`` (+1 CCW, -1 CW)."""
+
+    kind: str
+    base_radius: float
+    roller_radius: float = 0.0
+    offset: float = 0.0
+    sense: int = 1
+
+    def __post_init__(self) -> None:
+        if self.kind not in FOLLOWERS:
+            raise ValueError(f"{self.kind!r} is not a follower ({', '.join(FOLLOWERS)})")
+        if self.sense not in (1, -1):
+            raise ValueError("the cam's sense is +1 (CCW) or -1 (CW)")
+        if not self.base_radius > 0:
+            raise ValueError("the base circle needs a positive radius")
+        if self.kind == ROLLER and not self.roller_radius > 0:
+            raise ValueError("a roller follower needs a positive roller radius")
+        if self.kind != ROLLER and self.roller_radius:
+            raise ValueError(f"a {self.kind} follower has no roller")
+        if self.kind != FLAT and abs(self.offset) >= self.prime_radius:
+            raise ValueError("the offset must be smaller than the prime circle's radius")
+
+    @property
+    def prime_radius(self) -> float:
+        return self.base_radius + self.roller_radius
+
+    @property
+    def d0(self) -> float:
+        """The height of the pitch point above O along the axis at zero lift."""
+        return math.sqrt(self.prime_radius ** 2 - self.offset ** 2)
+
+
+def _rot(a: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    c, s = np.cos(a), np.sin(a)
+    return np.stack([c * x - s * y, s * x + c * y])
+
+
+def _J(v: np.ndarray) -> np.ndarray:
+    return np.stack([-v[1], v[0]])
+
+
+@dataclass
+class Evaluation:
+    """The profile quantities at cam angles ``theta`` (arrays, SI; points as 2 x N arrays)."""
+
+    theta: np.ndarray
+    s: np.ndarray
+    ds: np.ndarray
+    d2s: np.ndarray
+    d3s: np.ndarray
+    pitch: np.ndarray | None          # roller centre (knife: contact) in the cam frame
+    profile: np.ndarray               # the envelope point (contact with the cam)
+    pressure_angle: np.ndarray
+    rho_pitch: np.ndarray | None      # radius of curvature of the pitch curve (convex +)
+    rho_profile: np.ndarray           # radius of curvature of the profile (convex +)
+    normal: np.ndarray                # outward unit normal of the profile at the contact
+
+
+def evaluate(program: Program, f: Follower, theta) -> Evaluation:
+    th = np.asarray(theta, dtype=float)
+    s, d1, d2, d3 = program.derivatives(th)
+    sg = f.sense
+    a = -sg * th
+    if f.kind == FLAT:
+        r = f.base_radius + s
+        u = _rot(a, np.zeros_like(th), np.ones_like(th))
+        w = _rot(a, np.ones_like(th), np.zeros_like(th))
+        prof = r * u + sg * d1 * w
+        return Evaluation(th, s, d1, d2, d3, None, prof, np.zeros_like(th), None, f.base_radius + s + d2, u)
+    e, d0 = f.offset, f.d0
+    q = np.stack([np.full_like(th, e), d0 + s])
+    q1 = np.stack([np.zeros_like(th), d1])
+    q2 = np.stack([np.zeros_like(th), d2])
+    P = _rot(a, q[0], q[1])
+    v1 = q1 - sg * _J(q)
+    v2 = q2 - 2 * sg * _J(q1) - q
+    P1 = _rot(a, v1[0], v1[1])
+    P2 = _rot(a, v2[0], v2[1])
+    speed = np.hypot(P1[0], P1[1])
+    cross = P1[0] * P2[1] - P1[1] * P2[0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rho = -sg * speed ** 3 / cross
+    t = P1 / speed
+    n = sg * _J(t)
+    prof = P - f.roller_radius * n
+    phi = np.arctan2(d1 - sg * e, d0 + s)
+    return Evaluation(th, s, d1, d2, d3, P, prof, phi, rho, rho - f.roller_radius, n)
+
+
+def convex_curvature_pitch(program: Program, f: Follower, theta) -> np.ndarray:
+    """The pitch curve's curvature, positive where convex (finite through inflections)."""
+    ev = evaluate(program, f, theta)
+    with np.errstate(divide="ignore"):
+        return np.where(np.isfinite(ev.rho_pitch), 1.0 / ev.rho_pitch, 0.0)
+
+
+# -- searching along the cam angle ---------------------------------------------------------------------------
+
+def _bisect(g, a: float, b: float, ga: float, it: int = 80) -> float:
+    for _ in range(it):
+        m = 0.5 * (a + b)
+        gm = g(m)
+        if (gm > 0) == (ga > 0):
+            a, ga = m, gm
+        else:
+            b = m
+        if b - a < 1e-15:
+            break
+    return 0.5 * (a + b)
+
+
+def _golden_max(g, a: float, b: float, it: int = 100) -> float:
+    r = (math.sqrt(5) - 1) / 2
+    c, d = b - r * (b - a), a + r * (b - a)
+    gc, gd = g(c), g(d)
+    for _ in range(it):
+        if gc > gd:
+            b, d, gd = d, c, gc
+            c = b - r * (b - a)
+            gc = g(c)
+        else:
+            a, c, gc = c, d, gd
+            d = a + r * (b - a)
+            gd = g(d)
+        if b - a < 1e-13:
+            break
+    return 0.5 * (a + b)
+
+
+def segment_breaks(program: Program) -> np.ndarray:
+    """The cam angles where the program's pieces meet (segment joins and laws' inner joins)."""
+    return np.array(sorted({0.0, TAU} | {j.theta for j in program.joins()} | set(program.starts)))
+
+
+def _grid(program: Program, per_piece: int) -> list[np.ndarray]:
+    b = segment_breaks(program)
+    return [np.linspace(lo, hi, per_piece) for lo, hi in zip(b[:-1], b[1:]) if hi - lo > 0]
+
+
+def extremum(program: Program, fn, *, per_piece: int = 256, largest: bool = True) -> tuple[float, float]:
+    """The cam angle and value of the largest (or smallest) of ``fn(theta)`` (a vectorised function)
+    over the turn: a grid in every piece of the program, refined by golden section."""
+    best = (None, -math.inf)
+    sgn = 1.0 if largest else -1.0
+    for g in _grid(program, per_piece):
+        v = sgn * np.asarray(fn(g), dtype=float)
+        v = np.where(np.isfinite(v), v, -math.inf)
+        k = int(np.argmax(v))
+        lo, hi = g[max(k - 1, 0)], g[min(k + 1, len(g) - 1)]
+        scalar = lambda x: float(sgn * fn(np.array([x]))[0])   # noqa: E731
+        x = _golden_max(scalar, lo, hi) if hi > lo else g[k]
+        cand = max(((x, scalar(x)), (g[k], v[k])), key=lambda p: p[1])
+        if cand[1] > best[1]:
+            best = cand
+    return float(best[0]), float(sgn * best[1])
+
+
+def spans(program: Program, g, *, per_piece: int = 256) -> list[tuple[float, float]]:
+    """The cam-angle intervals where ``g(theta) > 0`` (g vectorised), ends found by bisection."""
+    out: list[list[float]] = []
+    for grid in _grid(program, per_piece):
+        v = np.asarray(g(grid), dtype=float)
+        scalar = lambda x: float(g(np.array([x]))[0])     # noqa: E731
+        inside = v > 0
+        start = grid[0] if inside[0] else None
+        for k in range(1, len(grid)):
+            if inside[k] and not inside[k - 1]:
+                start = _bisect(scalar, grid[k - 1], grid[k], v[k - 1])
+            elif not inside[k] and inside[k - 1]:
+                out.append([start, _bisect(scalar, grid[k - 1], grid[k], v[k - 1])])
+                start = None
+        if start is not None:
+            out.append([start, grid[-1]])
+    merged: list[list[float]] = []
+    for a, b in out:
+        if merged and abs(a - merged[-1][1]) < 1e-12:
+            merged[-1][1] = b
+        else:
+            merged.append([a, b])
+    if len(merged) > 1 and merged[0][0] <= 1e-12 and merged[-1][1] >= TAU - 1e-12:
+        merged[0][0] = merged[-1][0] - TAU
+        merged.pop()
+    return [(a, b) for a, b in merged]
+
+
+# -- the analysis ----------------------------------------------------------------------------------------------
+
+CUSP_REL = 1e-9
+"""The roller radius is *at* the cusp limit when it equals the pitch curve's smallest convex radius of
+curvature within this fraction of the cam's size (designed tangency built from floats reads as equal)."""
+
+
+@dataclass
+class CamProfile:
+    """What the analysis finds: the profile sampled at ``samples`` cam angles, the extreme pressure angle,
+    the pitch curve's smallest radius of curvature, undercut spans, and the valid (trimmed) profile."""
+
+    program: Program
+    follower: Follower
+    samples: Evaluation
+    size: float
+    max_pressure_angle: tuple[float, float]       # (theta, phi) of the largest |phi|
+    min_rho_pitch: tuple[float, float] | None      # (theta, rho) of the smallest convex pitch radius
+    min_rho_profile: tuple[float, float]           # (theta, rho) of the smallest profile radius
+    undercut: list[tuple[float, float]]            # cam-angle spans where the profile folds (roller) or
+                                                   # the flat face would need rho <= 0
+    cusp_at: list[float]                           # cusp points at the limit
+    min_base_radius: float | None                  # flat-faced: the smallest rb with rho > 0
+    face_width: tuple[float, float] | None         # flat-faced: contact's reach either side of the axis
+    trimmed: np.ndarray = field(repr=False, default=None)   # the valid profile, closed polyline 2 x M
+
+    @property
+    def undercut_free(self) -> bool:
+        return not self.undercut and not self.cusp_at
+
+
+def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
+    th = np.linspace(0.0, TAU, samples, endpoint=False)
+    ev = evaluate(program, f, th)
+    size = f.prime_radius + program.lift if f.kind != FLAT else f.base_radius + program.lift
+    phi_t, phi = extremum(program, lambda x: np.abs(evaluate(program, f, x).pressure_angle))
+    phi = float(evaluate(program, f, np.array([phi_t])).pressure_angle[0])
+    rp_t, rp = extremum(program, lambda x: evaluate(program, f, x).rho_profile if f.kind == FLAT else
+                        np.where(evaluate(program, f, x).rho_pitch > 0, evaluate(program, f, x).rho_profile, np.inf),
+                        largest=False)
+    undercut: list[tuple[float, float]] = []
+    cusps: list[float] = []
+    min_pitch = None
+    rb_min = width = None
+    if f.kind == FLAT:
+        # rho = rb + s + s'' must stay positive: rb > max(-(s + s''))
+        q_t, negq = extremum(program, lambda x: -(program.derivatives(x)[0] + program.derivatives(x)[2]))
+        rb_min = max(negq, 0.0)
+        tol = CUSP_REL * size
+        g = lambda x: -evaluate(program, f, x).rho_profile      # noqa: E731
+        if abs(rp) <= tol:
+            cusps.append(rp_t)
+        elif rp < 0:
+            undercut = spans(program, g)
+        lo = float(np.min(f.sense * ev.ds)); hi = float(np.max(f.sense * ev.ds))
+        lo = min(lo, extremum(program, lambda x: f.sense * program.derivatives(x)[1], largest=False)[1])
+        hi = max(hi, extremum(program, lambda x: f.sense * program.derivatives(x)[1])[1])
+        width = (lo, hi)
+    elif f.kind == ROLLER:
+        kt, kmax = extremum(program, lambda x: convex_curvature_pitch(program, f, x))
+        min_pitch = (kt, 1.0 / kmax) if kmax > 0 else None
+        if min_pitch is not None:
+            d = f.roller_radius * kmax - 1.0          # > 0: the roller is bigger than the tightest convex bend
+            if abs(d) * f.roller_radius <= CUSP_REL * size:
+                cusps.append(kt)
+            elif d > 0:
+                undercut = spans(program, lambda x: f.roller_radius * convex_curvature_pitch(program, f, x) - 1.0)
+    out = CamProfile(program, f, ev, size, (phi_t, phi), min_pitch, (rp_t, rp), undercut, cusps, rb_min, width)
+    out.trimmed = trim(out) if undercut else ev.profile
+    return out
+
+
+def trim(cp: CamProfile) -> np.ndarray:
+    """The valid profile: envelope points that no roller position cuts into (a roller's centre is on the
+    pitch curve, so a point nearer than rr to it is cut away), with each removed loop replaced by the
+    crossing of the two branches.  A flat-faced cam with rho <= 0 is trimmed likewise by the face lines."""
+    ev, f = cp.samples, cp.follower
+    C = ev.profile
+    n = C.shape[1]
+    tol = 1e-9 * cp.size
+    keep = np.ones(n, dtype=bool)
+    if f.kind == FLAT:
+        # a point is cut if some face line lies between it and the centre: p . u_j > rb + s_j
+        U, r = ev.normal, f.base_radius + ev.s
+        for lo in range(0, n, 512):
+            d = C[:, lo:lo + 512].T @ U - r[None, :]
+            keep[lo:lo + 512] = np.max(d, axis=1) <= tol
+    else:
+        P = ev.pitch
+        for lo in range(0, n, 512):
+            c = C[:, lo:lo + 512]
+            dx = c[0][:, None] - P[0][None, :]
+            dy = c[1][:, None] - P[1][None, :]
+            keep[lo:lo + 512] = np.min(np.hypot(dx, dy), axis=1) >= f.roller_radius - tol
+    if keep.all():
+        return C
+    if not keep.any():
+        raise ValueError("no point of the profile survives: the follower cuts the whole cam away")
+    if f.kind == FLAT:
+        # the cam a flat face leaves is the intersection of the half-planes behind its face lines: convex,
+        # so its boundary is the convex hull of the envelope points no face line cuts (shapely; a corner
+        # where the envelope folds becomes the chord across it)
+        from shapely.geometry import MultiPoint
+        hull = MultiPoint(C[:, keep].T).convex_hull
+        xy = np.asarray(hull.exterior.coords)[:-1][::-1] if f.sense < 0 else np.asarray(hull.exterior.coords)[:-1]
+        return xy.T
+    # rotate so that index 0 is kept, then walk the runs
+    k0 = int(np.argmax(keep))
+    idx = np.roll(np.arange(n), -k0)
+    kp = keep[idx]
+    pts: list[np.ndarray] = []
+    i = 0
+    while i < n:
+        if kp[i]:
+            pts.append(C[:, idx[i]])
+            i += 1
+            continue
+        j = i
+        while j < n and not kp[j]:
+            j += 1
+        a0, a1 = C[:, idx[i - 1]], C[:, idx[i]]
+        b0, b1 = C[:, idx[(j - 1) % n]], C[:, idx[j % n]]
+        x = _cross_point(a0, a1, b0, b1)
+        if x is not None:
+            pts.append(x)
+        i = j
+    return np.array(pts).T
+
+
+def _cross_point(a0, a1, b0, b1):
+    """Where the chords a0-a1 and b0-b1 cross (their lines' crossing, kept if it lies near both)."""
+    da, db = a1 - a0, b1 - b0
+    den = da[0] * db[1] - da[1] * db[0]
+    if den == 0:
+        return None
+    w = b0 - a0
+    t = (w[0] * db[1] - w[1] * db[0]) / den
+    return a0 + t * da
+
+
+__all__ = ["Follower", "KNIFE", "ROLLER", "FLAT", "FOLLOWERS", "evaluate", "analyse", "CamProfile", "Evaluation",
+           "extremum", "spans", "trim"]
