@@ -59,6 +59,7 @@ MAGNITUDES: dict[str, tuple[float, float]] = {
     "mass": (1e-12, 1e12),
     "moment of inertia": (1e-15, 1e12),
     "stiffness": (1e-12, 1e15),
+    "power": (1e-12, 1e12),
     "angle": (0.0, 2 * math.pi * 1e4),
 }
 LENGTH_RATIO = 1e6

@@ -156,6 +156,8 @@ class Study:
             return "n/a"
         if isinstance(value, Vec):
             return f"{u.format(c.kind, value.norm())} at {direction_deg(value):.1f}\u00b0"
+        if c.kind not in _RATE_KINDS:          # a length, an angle, a force magnitude: no sense of turning
+            return u.format(c.kind, value) if value < 0 else u.format(c.kind, abs(value))
         sense = "CCW" if value > 0 else "CW" if value < 0 else ""
         return f"{u.format(c.kind, abs(value))} {sense}".strip()
 
@@ -185,6 +187,10 @@ class Study:
         out["warnings"] = list(self.warnings)
         out["analyses"] = list(self.ran)
         return out
+
+
+_RATE_KINDS = frozenset({"angular velocity", "angular acceleration", "torque"})
+"""Scalar kinds that turn one way or the other (written with CCW / CW)."""
 
 
 def display_name(name: str) -> str:

@@ -1,0 +1,171 @@
+"""A gear train drawn as its kinematic diagram (pitch circles, axes on the frame or on the carrier, the
+carrier arm, pitch points) with the solution written as the notes work it: the signed ratio of every
+mesh, the train value, and for a planetary train the tabular method (carrier held, then everything
+locked), each case (which member held, which driven) a block of steps."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..geometry import Vec
+from ..quantities import Measured
+from ..record import (AngleMark, Bar, Circle, Construction, Diagram, Note, Pivot, Point, Role, StepKind, Value)
+from .trains import FRAME, Given, Train, TrainSolution, layout, solve_train
+
+KINEMATIC = Diagram("space")
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    givens: tuple[Given, ...]
+    power: float | None = None
+    inp: str | None = None
+    out: str | None = None
+
+
+@dataclass
+class TrainAnalysis:
+    train: Train
+    cases: tuple[Case, ...]
+    solutions: tuple[TrainSolution, ...]
+    construction: Construction
+
+    def quantity(self, base: str, case: Case) -> str:
+        return base if len(self.cases) == 1 else f"{base} ({case.name})"
+
+    def measured(self) -> list[Measured]:
+        out: list[Measured] = []
+        for case, sol in zip(self.cases, self.solutions):
+            for m in self.train.members:
+                out.append(Measured(self.quantity(f"omega_{m}", case), "angular velocity", sol.speeds[m]))
+            if sol.torques is not None:
+                for m, t in sol.torques.items():
+                    out.append(Measured(self.quantity(f"T_{m}", case), "torque", t))
+                for mesh, w in (sol.loads or {}).items():
+                    out.append(Measured(self.quantity(f"W_t {mesh}", case), "force", w))
+        return out
+
+
+def _member_label(train: Train, m: str) -> str:
+    gs = [g for g in train.gears if g.member == m]
+    if not gs:
+        return f"carrier {m}"
+    if len(gs) == 1 and gs[0].name == m:
+        return f"gear {m}"
+    return f"shaft {m} (gears {', '.join(g.name for g in gs)})"
+
+
+def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> TrainAnalysis:
+    rate_text = rate_text or (lambda w: f"{w:.4g} rad/s")
+    centres, pitch = layout(train)
+    sols = tuple(solve_train(train, c.givens, power=c.power, inp=c.inp, out=c.out) for c in cases)
+    rec = Construction("Gear train")
+    ents = []
+    size = max(train.radius(g) for g in train.gears)
+    for g in train.gears:
+        O = centres[g.name]
+        r = train.radius(g)
+        ents.append(Circle(f"pitch circle {g.name}", Role.GIVEN, KINEMATIC, O, r,
+                           f"{g.name}: {g.teeth}T" + (" int." if g.internal else "")))
+    axes: dict[Vec, str] = {}
+    for g in train.gears:
+        axes.setdefault(centres[g.name], g.carrier)
+    carrier_pins = []
+    for i, (O, c) in enumerate(axes.items()):
+        if c == FRAME:
+            ents.append(Pivot(f"axis {i}", Role.GIVEN, KINEMATIC, O, None))
+        else:
+            ents.append(Point(f"axis {i}", Role.LABEL, KINEMATIC, O, None))
+            carrier_pins.append(O)
+    if train.planetary:
+        for j, O in enumerate(carrier_pins):
+            ents.append(Bar(f"carrier arm {j}", Role.GIVEN, KINEMATIC, Vec(0.0, 0.0), O, 90 + j))
+        ents.append(Note("carrier label", Role.NOTE, KINEMATIC, carrier_pins[0] * 0.5 + Vec(0.12 * size, 0.0),
+                         f"carrier {train.carrier}"))
+    for m in train.meshes:
+        ents.append(Point(f"pitch point {m.name}", Role.LABEL, KINEMATIC, pitch[m.name], None))
+    rec = rec.then(
+        f"Kinematic diagram: {len(train.gears)} gears on {len(train.members)} members"
+        + (f", the planets' axes on carrier {train.carrier}" if train.planetary else "")
+        + "; pitch circles r = mN/2 touch at the pitch points.", *ents, kind=StepKind.GIVEN)
+    # the meshes' ratios
+    parts = []
+    for m in train.meshes:
+        ga, gb = train.gear(m.a), train.gear(m.b)
+        sign = "+" if train.internal_mesh(m) else "-"
+        parts.append(f"{m.b}/{m.a}: {sign}{ga.teeth}/{gb.teeth}")
+    rel = "relative to the carrier " if train.planetary else ""
+    rec = rec.then(f"Speed ratio of each mesh {rel}(external -, internal +, driving over driven teeth): "
+                   + "; ".join(parts) + ".")
+    for case, sol in zip(cases, sols):
+        ref = sol.reference
+        vals = {}
+        if train.planetary:
+            rows = ", ".join(f"{m} {sol.values[m]:+.5g}x" for m in train.members)
+            words = (f"{case.name}: tabular method. Row 1, carrier {train.carrier} held, {_member_label(train, ref)} "
+                     f"turned x: {rows}. Row 2, all locked and turned with the carrier n_c. Total n = n_c + e x; ")
+            gv = "; ".join(f"{g.member} = $g{i}" for i, g in enumerate(case.givens))
+            for i, g in enumerate(case.givens):
+                vals[f"g{i}"] = Value("angular velocity", g.speed)
+            words += f"given {gv}: n_c = $nc, x = $x."
+            vals["nc"] = Value("angular velocity", sol.carrier_speed)
+            vals["x"] = Value("angular velocity", sol.x)
+            rec = rec.then(words, values=vals)
+            held = [g.member for g in case.givens if g.speed == 0.0]
+            driven = [g.member for g in case.givens if g.speed != 0.0]
+            central = [m for m in train.members if m != train.carrier
+                       and all(x.carrier == FRAME for x in train.gears if x.member == m)]
+            if held and driven and len(central) >= 2:
+                h, d = held[0], driven[0]
+                A, B = central[0], central[1]
+                e = sol.values
+                o = next(m for m in (A, B, train.carrier) if m not in (h, d))
+                ratio = sol.speeds[o] / sol.speeds[d]
+                rec = rec.then(f"{case.name}: notes' formula (n_{B} - n_c)/(n_{A} - n_c) = e = {e[B] / e[A]:+.5g} (the "
+                               f"signed product of driving over driven teeth, {A} to {B}); with n_{h} = 0: "
+                               f"n_{o}/n_{d} = $ratio.", values={"ratio": Value("number", ratio)}, kind=StepKind.ANSWER)
+        else:
+            g = case.givens[0]
+            words = f"{case.name}: {_member_label(train, g.member)} turns $g0; each member n = (train value) x n_{g.member}:"
+            vals["g0"] = Value("angular velocity", g.speed)
+            for i, m in enumerate(train.members):
+                if m == g.member:
+                    continue
+                vals[f"n{i}"] = Value("angular velocity", sol.speeds[m])
+                words += f" n_{m} = {sol.values[m] / sol.values[g.member]:+.5g} n_{g.member} = $n{i};"
+            rec = rec.then(words.rstrip(";") + ".", values=vals, kind=StepKind.ANSWER)
+        # rotation senses on the diagram (first case only, to keep it legible)
+        if case is cases[0]:
+            marks = []
+            for m in train.members:
+                w = sol.speeds[m]
+                if abs(w) < 1e-12:
+                    continue
+                gs = [x for x in train.gears if x.member == m]
+                if gs:
+                    O, r = centres[gs[0].name], train.radius(gs[0]) * (0.45 if not gs[0].internal else 0.92)
+                else:
+                    O, r = Vec(0.0, 0.0), 0.0
+                    continue
+                a0 = math.radians(200.0 if not gs[0].internal else 220.0)
+                span = math.radians(70.0) * (1 if w > 0 else -1)
+                marks.append(AngleMark(f"sense {m}", Role.LOAD, KINEMATIC, O, r, a0, a0 + span,
+                                       f"n_{m} {'CCW' if w > 0 else 'CW'}"))
+            if marks:
+                rec = rec.then(f"{case.name}: senses of rotation drawn on the diagram.", *marks)
+        if sol.torques is not None:
+            vals = {}
+            words = (f"{case.name}: power {case.power / 1000:.4g} kW in at {case.inp}. Torques T = P/\u03c9 (balance of power and of torques): ")
+            for i, (m, t) in enumerate(sol.torques.items()):
+                vals[f"t{i}"] = Value("torque", abs(t))
+                words += f"T_{m} = $t{i}{' (idler: none)' if t == 0 else ''}; "
+            words = words.rstrip("; ") + ". Tooth loads (tangential W_t = T/r, radial W_t tan \u03c6, total W_t/cos \u03c6): "
+            phi = train.pressure_angle
+            for j, (mesh, w) in enumerate((sol.loads or {}).items()):
+                vals[f"w{j}"], vals[f"r{j}"], vals[f"f{j}"] = (Value("force", w), Value("force", w * math.tan(phi)),
+                                                             Value("force", w / math.cos(phi)))
+                words += f"mesh {mesh}: $w{j}, $r{j}, $f{j}; "
+            rec = rec.then(words.rstrip("; ") + ".", values=vals, kind=StepKind.ANSWER)
+    return TrainAnalysis(train, cases, sols, rec)
