@@ -116,7 +116,11 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
         try:
             study = _solve(_study(path, paper))
             try:
-                written = write_sheets(sheets_for(study), out, path.stem, formats)
+                sheet_formats = [f for f in formats if f != PAGE]
+                written = write_sheets(sheets_for(study), out, path.stem, sheet_formats) if sheet_formats else []
+                if PAGE in formats:
+                    from .html_page import write_page
+                    written.append(write_page(study, out, path.stem))
             except ExportError as e:                  # names the output file it could not write
                 raise UserError(f"{path}: {e}") from None
             except LayoutError as e:                  # the sheet: the paper is what the user can change
@@ -169,10 +173,15 @@ def cmd_bench(quick: bool, peers: bool = False) -> int:
 
 def _formats(text: str) -> list[str]:
     out = [f.strip().lower() for f in text.split(",") if f.strip()]
-    bad = [f for f in out if f not in FORMATS]
+    known = FORMATS + (PAGE,)
+    bad = [f for f in out if f not in known]
     if bad or not out:
-        raise argparse.ArgumentTypeError(f"unknown format {bad[0] if bad else text!r}; choose from {','.join(FORMATS)}")
+        raise argparse.ArgumentTypeError(f"unknown format {bad[0] if bad else text!r}; choose from {','.join(known)}")
     return out
+
+
+PAGE = "html"
+"""The step-through page (drafting.html_page): asked for by --format html beside the sheets' formats."""
 
 
 def parser() -> argparse.ArgumentParser:
@@ -185,7 +194,8 @@ def parser() -> argparse.ArgumentParser:
                        description="Render each scene to a sheet and print its results table.")
     r.add_argument("scenes", nargs="+", type=Path, metavar="SCENE", help="scene files (TOML)")
     r.add_argument("-o", "--out", type=Path, default=DEFAULT_OUT, help="output folder (default: %(default)s)")
-    r.add_argument("--format", type=_formats, default=list(FORMATS), help="comma-separated: svg,pdf,png (default: all)")
+    r.add_argument("--format", type=_formats, default=list(FORMATS),
+                   help="comma-separated: svg,pdf,png (default: all), and html for the step-through page")
     r.add_argument("--paper", choices=PAPERS, help="override the scene's paper size")
     s = sub.add_parser("solve", help="solve a scene and print its results",
                        description="Solve a scene; with --json print machine-readable results in the "

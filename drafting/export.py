@@ -33,7 +33,7 @@ import re
 import stat
 import time
 from pathlib import Path
-from typing import Sequence
+from typing import Callable, Sequence
 
 from . import faults
 from .sheet import Sheet
@@ -266,17 +266,24 @@ def write_sheets(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, format
                 _convert_png(svgs[page], buf, dpi)
         return buf.getvalue()
 
+    return write_outputs(out_dir, stem, [(final, (lambda f=f, page=page: produce(f, page))) for f, final, page in plan])
+
+
+def write_outputs(out_dir: Path, stem: str, plan: Sequence[tuple[Path, Callable[[], bytes]]]) -> list[Path]:
+    """Write each ``(final path, produce)`` of ``plan`` (all in ``out_dir``) as the bytes ``produce()``
+    returns: every file to a temporary beside it first (fsynced), then all renamed into place together, or
+    none (module docstring).  Any failure is an :class:`ExportError` naming the path."""
     temps: list[tuple[Path, Path]] = []
     backups: list[Path] = []
     try:
-        for f, final, page in plan:
+        for final, produce in plan:
             try:
-                data = produce(f, page)
+                data = produce()
             except ExportError:
                 raise
             except Exception as e:
                 raise ExportError(f"Cannot write {_show(final)}: {_why(e)}.") from e
-            tmp = _temp_name(out_dir, stem, f)
+            tmp = _temp_name(out_dir, stem, final.suffix.lstrip(".") or "out")
             faults.track(tmp)
             try:
                 fd = _create_temp(tmp)

@@ -14,6 +14,8 @@ shapes and text only, no scripts, no links or external references, no DOCTYPE or
 
 from __future__ import annotations
 
+from typing import Callable
+
 import svgwrite
 
 from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Text
@@ -98,8 +100,9 @@ def _text(dwg: svgwrite.Drawing, c: Text):
     return el
 
 
-def sheet_to_svg(sheet: Sheet) -> str:
-    """The sheet as an SVG document, 1 user unit = 1 mm."""
+def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None = None) -> str:
+    """The sheet as an SVG document, 1 user unit = 1 mm; ``attrs(command)`` adds attributes to each
+    element (the step-through page tags each with its entity)."""
     w, h = sheet.width, sheet.height
     dwg = svgwrite.Drawing(size=(f"{fmt(w)}mm", f"{fmt(h)}mm"), profile="full", debug=False)
     dwg.attribs["viewBox"] = f"0 0 {fmt(w)} {fmt(h)}"
@@ -107,5 +110,8 @@ def sheet_to_svg(sheet: Sheet) -> str:
     page.attribs.update({"x": "0", "y": "0", "width": fmt(w), "height": fmt(h), "fill": "white", "stroke": "none"})
     dwg.add(page)
     for c in sheet.commands:
-        dwg.add(_element(dwg, c))
+        el = _element(dwg, c)
+        if attrs is not None:
+            el.attribs.update(attrs(c))
+        dwg.add(el)
     return xml_safe(dwg.tostring())        # and once more over the whole: nothing unsafe gets through

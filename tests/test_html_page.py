@@ -1,0 +1,72 @@
+"""The step-through HTML page: self-contained, every drawn element tagged with its entity, steps that walk
+forward and back -- checked in headless Chromium when it is installed (Debian `chromium`)."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import drafting
+from drafting.cli import main
+from drafting.html_page import entity_of, markup_html, page_html
+
+GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+SCENE = GALLERY / "notes-acceleration-example-1.toml"
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+def test_the_page_is_self_contained_and_tagged():
+    study = drafting.load(SCENE)
+    page = page_html(study)
+    assert page.startswith("<!DOCTYPE html>") and page.count("<svg") == len(study.sheets())
+    assert not re.search(r"<(link|img|iframe)\b|\bsrc=|url\(", page)          # nothing fetched
+    assert not re.search(r'href="(?!#)', page)
+    tagged = set(re.findall(r'data-e="([^"]+)"', page))
+    drawn = {e.name for st in study.construction.steps for e in st.entities}
+    assert {"link 1", "link 2", "pole O_a"} <= tagged <= drawn
+    assert len(re.findall(r"<li>", page)) == len(study.construction.steps)
+
+
+def test_entity_names_and_markup():
+    names = {"guide C", "link 1", "link 10"}
+    assert entity_of("guide C:rail:hatch", names) == "guide C"
+    assert entity_of("link 1", names) == "link 1" and entity_of("link 10", names) == "link 10"
+    assert entity_of("link 100", names) is None and entity_of("frame", names) is None
+    assert markup_html("A_CB^t = α_2 · BC <x>") == "A<sub>CB</sub><sup>t</sup> = α<sub>2</sub> · BC &lt;x&gt;"
+
+
+def test_render_writes_the_page_beside_the_sheets(tmp_path, capsys):
+    assert main(["render", str(SCENE), "-o", str(tmp_path), "--format", "svg,html"]) == 0
+    assert (tmp_path / "notes-acceleration-example-1.html").stat().st_size > 10_000
+    assert (tmp_path / "notes-acceleration-example-1-1.svg").exists()
+    with pytest.raises(SystemExit):
+        main(["render", str(SCENE), "-o", str(tmp_path), "--format", "gif"])
+    assert "choose from svg,pdf,png,html" in capsys.readouterr().err
+
+
+def _chromium(url: str, *args: str) -> str:
+    r = subprocess.run([CHROMIUM, "--headless=new", "--no-sandbox", "--disable-gpu", *args, url],
+                       capture_output=True, text=True, timeout=120)
+    return r.stdout
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium (Debian chromium) is not installed")
+def test_in_headless_chromium_it_steps_forward_and_back(tmp_path):
+    assert main(["render", str(SCENE), "-o", str(tmp_path), "--format", "html"]) == 0
+    page = tmp_path / "notes-acceleration-example-1.html"
+    dom = _chromium(f"{page.as_uri()}#step=14&selftest", "--dump-dom")
+    title = re.search(r"<title>([^<]*)</title>", dom).group(1)
+    assert title.startswith("selftest ok step=15")                           # 14 -> 16 -> 15
+    lit = int(re.search(r"lit=(\d+)", title).group(1))
+    hidden = int(re.search(r"hidden=(\d+)", title).group(1))
+    assert lit > 0 and hidden > 0                                            # step 15 lit, 16-17 hidden
+    dom = _chromium(f"{page.as_uri()}#step=15", "--dump-dom")
+    current = re.findall(r'<li class="current">(.*?)</li>', dom)
+    assert len(current) == 1 and current[0].startswith("From b' draw A<sub>CB</sub><sup>n</sup>")
+    shot = tmp_path / "shot.png"
+    _chromium(f"{page.as_uri()}#step=15", f"--screenshot={shot}", "--window-size=1600,1000")
+    assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
