@@ -34,6 +34,7 @@ from constructions.gears.tooth import INCH, SYSTEMS, Gear, ToothSystem
 from constructions.gears.train_drawing import Case
 from constructions.gears.trains import FRAME, Given, Train, TrainGear, TrainMesh, layout, solve_train
 
+from .units import UnitError, to_si
 from .unitset import Units
 
 PAIR_SECTIONS = frozenset({"teeth", "pair"})
@@ -199,7 +200,10 @@ def read_gear_train(r, units: Units) -> dict:
                                       "driven member")
         power = out = None
         if "power" in t:
-            power = r.quantity(f"{k}.power", t["power"], "power", units)
+            try:
+                power = to_si(t["power"], "power", "kW")
+            except UnitError as e:
+                raise r.fail(f"{k}.power", str(e)) from None
             if power <= 0:
                 raise r.fail(f"{k}.power", "must be positive (the power put in at the driven member)")
             if "output" not in t:

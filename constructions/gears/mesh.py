@@ -25,8 +25,9 @@ from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dime
 from ..tolerance import DECISION
 from .tooth import Gear, ToothSystem, roll_angle, unwinding_points
 
-SPACE = Diagram("space")
+SPACE = Diagram("overall")
 THREAD = Diagram("involute", "by unwinding a thread")
+DETAIL = Diagram("space", "contact at the pitch point")
 
 CLEAR, AT_LIMIT, INTERFERENCE = "clear", "at the limit", "interference"
 
@@ -239,12 +240,21 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     rec = rec.then(words, *given, values=vals, kind=StepKind.GIVEN)
     # 2 pitch circles and the pitch point
     r1w, r2w = geo.working_radii
-    ents = [Circle("pitch circle 1", Role.CENTRE_LINE, SPACE, O1, r1w), Point("P", Role.LABEL, SPACE, P, "P")]
+    T2p = pts.get("T2")
+    h = 0.6 * (T1.distance_to(T2p) if T2p is not None else 2.2 * max(T1.distance_to(P), geo.recess, geo.approach))
+
+    def arc(name, role, centre, r):
+        half = 2 * math.asin(min(1.0, 1.3 * h / (2 * r)))
+        a = (P - centre).angle()
+        return Arc(name, role, DETAIL, centre, r, a - half, a + half)
+    ents = [Circle("pitch circle 1", Role.CENTRE_LINE, SPACE, O1, r1w), Point("P", Role.LABEL, SPACE, P, "P"),
+            arc("detail pitch 1", Role.CENTRE_LINE, O1, r1w), Point("detail P", Role.LABEL, DETAIL, P, "P")]
     vals = {"r1": _v("length", r1w)}
     if pair.rack:
         words = "Pitch circle of the pinion, r1 = mN1/2 = $r1, touching the rack's pitch line at the pitch point P."
     else:
-        ents.insert(1, Circle("pitch circle 2", Role.CENTRE_LINE, SPACE, pts["O2"], r2w))
+        ents += [Circle("pitch circle 2", Role.CENTRE_LINE, SPACE, pts["O2"], r2w),
+                 arc("detail pitch 2", Role.CENTRE_LINE, pts["O2"], r2w)]
         vals["r2"] = _v("length", r2w)
         if pair.centre_distance is None:
             words = ("Pitch circles r1 = mN1/2 = $r1 and r2 = mN2/2 = $r2; they touch at the pitch point P on the line "
@@ -260,10 +270,13 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     hi = (d.dot(pts["T2"] - P) if "T2" in pts else d.dot(B - P)) + far
     hi = max(hi, d.dot(B - P) + far)
     tangent_len = 0.8 * p1.addendum_radius if pair.rack else 0.5 * min(r1w, r2w)
-    mark_r = 0.35 * min(p1.pitch_radius, geo.path * 3)
-    ents = [Segment("common tangent", Role.AUXILIARY, SPACE, P + Vec(0, -tangent_len), P + Vec(0, tangent_len)),
+    mark_r = 0.45 * h
+    tangent_len = min(tangent_len, 0.9 * h)
+    ents = [Segment("common tangent", Role.AUXILIARY, DETAIL, P + Vec(0, -tangent_len), P + Vec(0, tangent_len)),
             Segment("line of action", Role.PATH, SPACE, P + d * lo, P + d * hi, "line of action"),
-            AngleMark("pressure angle", Role.DIMENSION, SPACE, P, mark_r, -math.pi / 2, -math.pi / 2 + phi_w,
+            Segment("detail line of action", Role.PATH, DETAIL, P + d * (d.dot(T1 - P) - 0.1 * h),
+                    P + d * ((d.dot(T2p - P) if T2p is not None else d.dot(B - P)) + 0.1 * h)),
+            AngleMark("pressure angle", Role.DIMENSION, DETAIL, P, mark_r, -math.pi / 2, -math.pi / 2 + phi_w,
                       "\u03c6'" if pair.centre_distance is not None and not pair.rack else "\u03c6")]
     vals = {"phiw": _v("angle", phi_w)}
     if pair.centre_distance is not None and not pair.rack:
@@ -274,7 +287,8 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     rec = rec.then(words, *ents, values=vals)
     # 4 base circles and the interference points
     ents = [Circle("base circle 1", Role.CENTRE_LINE, SPACE, O1, p1.base_radius),
-            Segment("O1T1", Role.AUXILIARY, SPACE, O1, T1), Point("T1", Role.LABEL, SPACE, T1, "T1")]
+            Segment("O1T1", Role.AUXILIARY, SPACE, O1, T1), Point("T1", Role.LABEL, SPACE, T1, "T1"),
+            Point("detail T1", Role.LABEL, DETAIL, T1, "T1"), arc("detail base 1", Role.CENTRE_LINE, O1, p1.base_radius)]
     vals = {"rb1": _v("length", p1.base_radius)}
     if pair.rack:
         words = ("The base circle r_b1 = r1 cos \u03c6 = $rb1 touches the line of action at the interference point T1 "
@@ -282,34 +296,40 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     else:
         T2 = pts["T2"]
         ents += [Circle("base circle 2", Role.CENTRE_LINE, SPACE, pts["O2"], g2.base_radius),
-                 Segment("O2T2", Role.AUXILIARY, SPACE, pts["O2"], T2), Point("T2", Role.LABEL, SPACE, T2, "T2")]
+                 Segment("O2T2", Role.AUXILIARY, SPACE, pts["O2"], T2), Point("T2", Role.LABEL, SPACE, T2, "T2"),
+                 Point("detail T2", Role.LABEL, DETAIL, T2, "T2"),
+                 arc("detail base 2", Role.CENTRE_LINE, pts["O2"], g2.base_radius)]
         vals["rb2"] = _v("length", g2.base_radius)
         words = ("The base circles r_b1 = $rb1 and r_b2 = $rb2 (r cos \u03c6) touch the line of action at the "
                  "interference points T1 and T2, the feet of the perpendiculars from O1 and O2.")
     rec = rec.then(words, *ents, values=vals)
     # 5 addendum and dedendum circles
     ents = [Circle("addendum circle 1", Role.GIVEN, SPACE, O1, p1.addendum_radius),
-            Circle("dedendum circle 1", Role.AUXILIARY, SPACE, O1, p1.dedendum_radius)]
+            Circle("dedendum circle 1", Role.AUXILIARY, SPACE, O1, p1.dedendum_radius),
+            arc("detail addendum 1", Role.PATH, O1, p1.addendum_radius)]
     vals = {"ra1": _v("length", p1.addendum_radius)}
     if pair.rack:
         tip_x = C - pair.rack_teeth.a
         top, bottom = P.y + 0.75 * p1.addendum_radius, P.y - 0.75 * p1.addendum_radius
         ents.append(Segment("rack addendum line", Role.GIVEN, SPACE, Vec(tip_x, bottom), Vec(tip_x, top)))
+        ents.append(Segment("detail rack addendum line", Role.AUXILIARY, DETAIL, Vec(tip_x, P.y - h), Vec(tip_x, P.y + h)))
         vals["a2"] = _v("length", pair.rack_teeth.a)
         words = "Addendum circle of the pinion r_a1 = r1 + a = $ra1; the rack's addendum line $a2 inside its pitch line."
     else:
         ents += [Circle("addendum circle 2", Role.GIVEN, SPACE, pts["O2"], g2.addendum_radius),
-                 Circle("dedendum circle 2", Role.AUXILIARY, SPACE, pts["O2"], g2.dedendum_radius)]
+                 Circle("dedendum circle 2", Role.AUXILIARY, SPACE, pts["O2"], g2.dedendum_radius),
+                 arc("detail addendum 2", Role.PATH, pts["O2"], g2.addendum_radius)]
         vals["ra2"] = _v("length", g2.addendum_radius)
         words = "Addendum circles r_a1 = r1 + a = $ra1 and r_a2 = $ra2 (dedendum circles thin)."
     rec = rec.then(words, *ents, values=vals)
     # 6 the path of contact
     n = d.perp()
-    off = 0.06 * max(geo.path, p1.addendum_radius * 0.3) * 2
-    ents = [Point("A", Role.LABEL, SPACE, A, "A"), Point("B", Role.LABEL, SPACE, B, "B"),
-            Segment("path of contact", Role.RESULT, SPACE, A, B),
-            Dimension("approach", Role.DIMENSION, SPACE, A, P, off, "AP $ap"),
-            Dimension("recess", Role.DIMENSION, SPACE, P, B, off, "PB $pb")]
+    off = -0.3 * h
+    ents = [Point("A", Role.LABEL, DETAIL, A, "A"), Point("B", Role.LABEL, DETAIL, B, "B"),
+            Segment("path of contact", Role.RESULT, DETAIL, A, B),
+            Segment("overview path of contact", Role.RESULT, SPACE, A, B),
+            Dimension("approach", Role.DIMENSION, DETAIL, A, P, off, "AP $ap"),
+            Dimension("recess", Role.DIMENSION, DETAIL, P, B, off, "PB $pb")]
     vals = {"ap": _v("length", geo.approach), "pb": _v("length", geo.recess), "ab": _v("length", geo.path)}
     words = (f"Contact starts at A, where the addendum {'line' if pair.rack else 'circle'} of the driven {name2} cuts "
              f"the line of action, and ends at B on the driver's addendum circle: approach AP = $ap, recess PB = $pb, "
@@ -339,13 +359,13 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
         warnings.append(f"Contact ratio {cr:.3f} is below 1: a pair of teeth leaves contact before the next pair "
                         f"engages (the drive is not continuous).")
     # 9 teeth
-    ents = [Curve("teeth 1", Role.GIVEN, SPACE, tuple(p1.teeth_outline(O1, p1.half_tooth_angle - teeth_drawn * 2 * math.pi
+    ents = [Curve("teeth 1", Role.GIVEN, DETAIL, tuple(p1.teeth_outline(O1, p1.half_tooth_angle - teeth_drawn * 2 * math.pi
                                                                           / p1.teeth, 2 * teeth_drawn + 1, flank_points)))]
     if pair.rack:
-        ents.append(Curve("rack teeth", Role.GIVEN, SPACE, tuple(_rack_outline(pair, teeth_drawn + 1))))
+        ents.append(Curve("rack teeth", Role.GIVEN, DETAIL, tuple(_rack_outline(pair, teeth_drawn + 1))))
     else:
         O2 = pts["O2"]
-        ents.append(Curve("teeth 2", Role.GIVEN, SPACE, tuple(g2.teeth_outline(
+        ents.append(Curve("teeth 2", Role.GIVEN, DETAIL, tuple(g2.teeth_outline(
             O2, math.pi + g2.half_tooth_angle - teeth_drawn * 2 * math.pi / g2.teeth, 2 * teeth_drawn + 1, flank_points))))
     rec = rec.then(f"A few teeth of each, their involute flanks computed exactly ({flank_points} points a flank): a pair "
                    f"in contact at P, the flanks square to the line of action there.", *ents)
@@ -364,13 +384,17 @@ def _rack_outline(pair: Pair, count: int) -> list[Vec]:
     xa, xd = x0 - s.a, x0 + s.d
     t = math.tan(phi)
     out: list[Vec] = []
-    for k in range(-count, count + 1):
+    reach = 1.1 * pair.pinion.addendum_radius
+    for k in range(-count - 1, count + 2):
         yc = -p / 4 + k * p                  # tooth centre on the pitch line
+        if abs(yc) > reach:
+            continue
         half = p / 4
         lower = [Vec(xd, yc - half - s.d * t), Vec(xa, yc - half + s.a * t)]
         upper = [Vec(xa, yc + half - s.a * t), Vec(xd, yc + half + s.d * t)]
         out += lower + upper
-    return out
+    back = xd + 1.5 * s.module                # the rack's body behind its roots
+    return [Vec(back, out[0].y)] + out + [Vec(back, out[-1].y), Vec(back, out[0].y)]
 
 
 def _thread_construction(g: Gear, phi: float) -> Construction:

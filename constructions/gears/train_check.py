@@ -44,15 +44,18 @@ def velocity_check(train: Train, givens: tuple[Given, ...]) -> tuple[dict[str, f
                 row[idx[g.carrier]] += sign * _k_cross(O - origin) @ t
         rows.append(row)
         rhs.append(0.0)
-    for gv in givens:
-        row = np.zeros(len(members))
-        row[idx[gv.member]] = 1.0
-        rows.append(row)
-        rhs.append(gv.speed)
-    A, b = np.array(rows), np.array(rhs)
-    sol, _, rank, _ = np.linalg.lstsq(A, b, rcond=None)
-    res = float(np.linalg.norm(A @ sol - b))
-    return {m: float(sol[idx[m]]) for m in members}, int(rank), res
+    # the given speeds are substituted (a held member stays exactly at rest); the rest solved together
+    A = np.array(rows)
+    known = {gv.member: gv.speed for gv in givens}
+    free = [m for m in members if m not in known]
+    kv = np.array([known.get(m, 0.0) for m in members])
+    b = -A @ kv
+    Af = A[:, [idx[m] for m in free]]
+    sol, _, rank, _ = np.linalg.lstsq(Af, b, rcond=None)
+    res = float(np.linalg.norm(Af @ sol - b))
+    out = dict(known)
+    out.update({m: float(sol[i]) for i, m in enumerate(free)})
+    return {m: out[m] for m in members}, int(rank) + len(known), res
 
 
 def torque_check(train: Train, speeds: dict[str, float], power: float, inp: str, out: str,

@@ -128,13 +128,15 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                                f"n_{o}/n_{d} = $ratio.", values={"ratio": Value("number", ratio)}, kind=StepKind.ANSWER)
         else:
             g = case.givens[0]
-            words = f"{case.name}: {_member_label(train, g.member)} turns $g0; each member n = (train value) x n_{g.member}:"
-            vals["g0"] = Value("angular velocity", g.speed)
+            sense = lambda w: "CCW" if w > 0 else "CW"  # noqa: E731
+            words = (f"{case.name}: {_member_label(train, g.member)} turns $g0 {sense(g.speed)}; each member "
+                     f"n = (train value) x n_{g.member}:")
+            vals["g0"] = Value("angular velocity", abs(g.speed))
             for i, m in enumerate(train.members):
                 if m == g.member:
                     continue
-                vals[f"n{i}"] = Value("angular velocity", sol.speeds[m])
-                words += f" n_{m} = {sol.values[m] / sol.values[g.member]:+.5g} n_{g.member} = $n{i};"
+                vals[f"n{i}"] = Value("angular velocity", abs(sol.speeds[m]))
+                words += f" n_{m} = {sol.values[m] / sol.values[g.member]:+.5g} n_{g.member} = $n{i} {sense(sol.speeds[m])};"
             rec = rec.then(words.rstrip(";") + ".", values=vals, kind=StepKind.ANSWER)
         # rotation senses on the diagram (first case only, to keep it legible)
         if case is cases[0]:
@@ -149,7 +151,7 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                 else:
                     O, r = Vec(0.0, 0.0), 0.0
                     continue
-                a0 = math.radians(200.0 if not gs[0].internal else 220.0)
+                a0 = math.radians(105.0 if not gs[0].internal else 220.0)
                 span = math.radians(70.0) * (1 if w > 0 else -1)
                 marks.append(AngleMark(f"sense {m}", Role.LOAD, KINEMATIC, O, r, a0, a0 + span,
                                        f"n_{m} {'CCW' if w > 0 else 'CW'}"))
@@ -160,7 +162,11 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
             words = (f"{case.name}: power {case.power / 1000:.4g} kW in at {case.inp}. Torques T = P/\u03c9 (balance of power and of torques): ")
             for i, (m, t) in enumerate(sol.torques.items()):
                 vals[f"t{i}"] = Value("torque", abs(t))
-                words += f"T_{m} = $t{i}{' (idler: none)' if t == 0 else ''}; "
+                idler = (not train.planetary and len(train.meshes_of(m)) == 2
+                         and sum(1 for x in train.gears if x.member == m) == 1)
+                role = ("in" if m == case.inp else "out" if m == case.out else "held" if t else
+                        "none: an idler" if idler else "none")
+                words += f"T_{m} = $t{i} ({role}); "
             words = words.rstrip("; ") + ". Tooth loads (tangential W_t = T/r, radial W_t tan \u03c6, total W_t/cos \u03c6): "
             phi = train.pressure_angle
             for j, (mesh, w) in enumerate((sol.loads or {}).items()):
