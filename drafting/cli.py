@@ -137,12 +137,23 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
     return 2 if failed else 0
 
 
-def cmd_solve(path: Path, as_json: bool) -> int:
+def cmd_solve(path: Path, as_json: bool, csv_path: Path | None = None) -> int:
     study = _solve(_study(path))
     if as_json:
         print(json.dumps(study.to_json(), indent=2))
     else:
         print(results_text(study))
+    if csv_path is not None:
+        from .export import ExportError, _prepare_folder, write_outputs
+        from .study import results_csv
+        folder = csv_path.parent if str(csv_path.parent) else Path(".")
+        try:
+            _prepare_folder(folder)
+            write_outputs(folder, csv_path.stem, [(csv_path, lambda: results_csv(study).encode("utf-8"))])
+        except ExportError as e:
+            raise UserError(f"{path}: --csv: {e}") from None
+        if not as_json:
+            print(f"  wrote {csv_path}")
     return 0
 
 
@@ -202,6 +213,7 @@ def parser() -> argparse.ArgumentParser:
                                    "scene's units and the list of analyses that ran.")
     s.add_argument("scene", type=Path, metavar="SCENE")
     s.add_argument("--json", action="store_true", help="print JSON")
+    s.add_argument("--csv", type=Path, metavar="FILE", help="also write the results as CSV (scene units)")
     c = sub.add_parser("check", help="compare graphical and analytic results",
                        description="Compare every graphical result with the analytic (vector-loop) one; "
                                    "exit 1 if any differs by more than 1e-9 relative.")
@@ -261,7 +273,7 @@ def _main(argv: Sequence[str] | None) -> int:
         if args.command == "render":
             return cmd_render(args.scenes, args.out, args.format, args.paper)
         if args.command == "solve":
-            return cmd_solve(args.scene, args.json)
+            return cmd_solve(args.scene, args.json, args.csv)
         if args.command == "check":
             return cmd_check(args.scenes)
         if args.command == "bench":

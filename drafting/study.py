@@ -193,6 +193,36 @@ _RATE_KINDS = frozenset({"angular velocity", "angular acceleration", "torque"})
 """Scalar kinds that turn one way or the other (written with CCW / CW)."""
 
 
+CSV_HEADER = ("quantity", "kind", "unit", "graphical", "graphical x", "graphical y", "graphical angle (deg)",
+              "analytic", "analytic x", "analytic y", "analytic angle (deg)", "difference", "agrees")
+
+
+def results_csv(study: "Study") -> str:
+    """The results table as CSV in the scene's units, one row per quantity: a vector as its magnitude,
+    components and direction, a rate or torque signed (CCW positive); the unit of each row in its
+    ``unit`` column, the header naming what each column holds.  Empty cells where there is no value."""
+    import csv
+    import io
+    u = study.scene.units
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(CSV_HEADER)
+
+    def cells(kind, v):
+        if v is None:
+            return ["", "", "", ""]
+        if isinstance(v, Vec):
+            return [repr(u.convert(kind, v.norm())), repr(u.convert(kind, v.x)), repr(u.convert(kind, v.y)),
+                    repr(direction_deg(v))]
+        return [repr(u.convert(kind, v)), "", "", ""]
+    for c in study.comparisons:
+        diff = "" if c.difference is None else repr(u.convert(c.kind, c.difference))
+        agrees = "" if c.agrees is None else ("yes" if c.agrees else "no")
+        w.writerow([c.name, c.kind, u.symbol(c.kind), *cells(c.kind, c.graphical), *cells(c.kind, c.analytic),
+                    diff, agrees])
+    return buf.getvalue()
+
+
 def display_name(name: str) -> str:
     """omega_2 -> ω_2, alpha_2 -> α_2 (the rest of the name is the notes' markup already)."""
     return name.replace("omega_", "\u03c9_").replace("alpha_", "\u03b1_")

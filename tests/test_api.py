@@ -95,3 +95,22 @@ def test_the_gallery_notebook_runs_and_shows_a_sheet_inline():
         assert "V_C read off the polygon: 568.54 mm/s, analytic 568.54 mm/s, agrees: True" in text
         shown = [d for o in outs for k, d in o.get("data", {}).items() if k in ("text/html", "image/svg+xml")]
         assert sum("<svg" in "".join(d) for d in shown) >= 2 and "longer-rod.pdf True" in text
+
+
+def test_results_as_csv_in_the_scenes_units(tmp_path, capsys):
+    import csv
+    from drafting.cli import main
+    out = tmp_path / "r" / "results.csv"
+    assert main(["solve", str(GALLERY / "notes-velocity-example-2.toml"), "--csv", str(out)]) == 0
+    rows = list(csv.DictReader(out.open()))
+    by = {r["quantity"]: r for r in rows}
+    assert by["V_C"]["unit"] == "mm/s" and float(by["V_C"]["graphical"]) == pytest.approx(217.2, abs=0.05)
+    assert by["omega_3"]["unit"] == "rad/s" and float(by["omega_3"]["graphical"]) > 0 and by["omega_3"]["graphical x"] == ""
+    assert all(r["agrees"] == "yes" for r in rows)
+    study = drafting.load(GALLERY / "notes-velocity-example-2.toml")
+    assert len(rows) == len(study.comparisons)
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    assert main(["solve", str(GALLERY / "notes-velocity-example-2.toml"), "--csv", str(blocker / "r.csv")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--csv" in err and "Traceback" not in err
