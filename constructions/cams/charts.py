@@ -57,7 +57,7 @@ def svaj_charts(program: Program, omega: float | None) -> list[Chart]:
     out = []
     if omega:
         spec = (("s", "Displacement s", "length"), ("v", "Velocity v", "velocity"),
-                ("a", "Acceleration a", "acceleration"), ("j", "Jerk j", "jerk"))
+                ("a", "Acceleration a", "acceleration"), ("j (m/s\u00b3)", "Jerk j", "jerk"))
     else:
         spec = (("s", "Displacement s", "length"), ("ds/d\u03b8", "ds/d\u03b8 (per rad)", "length"),
                 ("d\u00b2s/d\u03b8\u00b2", "d\u00b2s/d\u03b8\u00b2 (per rad\u00b2)", "length"),

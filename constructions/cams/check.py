@@ -33,7 +33,8 @@ def closed_form_point(program: Program, f: Follower, theta: float) -> dict[str, 
     s, ds, d2, _ = (float(v[0]) for v in program.derivatives(np.array([theta])))
     sg = f.sense
     if f.kind == FLAT:
-        return {"C": _turn_back(theta, sg, sg * ds, f.base_radius + s), "phi": 0.0, "s": s}
+        return {"P": _turn_back(theta, sg, 0.0, f.base_radius + s),        # the face line's foot on the axis
+                "C": _turn_back(theta, sg, sg * ds, f.base_radius + s), "phi": 0.0, "s": s}
     e = f.offset
     d0 = math.sqrt(f.prime_radius ** 2 - e * e)
     phi = math.atan((ds - sg * e) / (d0 + s))

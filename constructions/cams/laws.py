@@ -191,7 +191,9 @@ class Program:
 
     # -- evaluation ----------------------------------------------------------------------------------------
     def _index(self, theta: np.ndarray) -> np.ndarray:
-        idx = np.searchsorted(np.asarray(self.starts), theta, side="right") - 1
+        # a cam angle within rounding of a segment's start belongs to that segment (a station at 150 deg
+        # built as 10 x 15 deg must not read the end of the segment before as 3e-14 above zero lift)
+        idx = np.searchsorted(np.asarray(self.starts) - 1e-12 * TAU, theta, side="right") - 1
         return np.clip(idx, 0, len(self.segments) - 1)
 
     def derivatives(self, theta) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
