@@ -47,7 +47,7 @@ def _pair_limits(pair) -> dict[str, Any]:
     phi, k = s.pressure_angle, s.addendum
     out: dict[str, Any] = {"pinion_with_rack": min_pinion_with_rack(phi, k), "equal_gears": min_equal_gears(phi, k),
                            "max_gear_for_pinion": max_gear_for_pinion(pair.pinion.teeth, phi, k)}
-    if not pair.rack:
+    if not pair.rack and not pair.internal:
         out["pinion_with_this_gear"] = min_pinion_with_gear(pair.gear.teeth, phi, k)
     return out
 
@@ -62,7 +62,7 @@ def _pair_notes(study) -> tuple[str, ...]:
     out = [f"Contact ratio {g.contact_ratio:.4f} drawn (AB / p_b = {u.format('length', g.path)} / "
            f"{u.format('length', g.base_pitch)}); {cf.contact_ratio:.4f} by the closed form "
            f"(relative difference {abs(g.contact_ratio - cf.contact_ratio) / cf.contact_ratio:.1e})."]
-    if pair.centre_distance is None and not pair.rack:
+    if pair.centre_distance is None and not pair.rack and not pair.internal:
         s = pair.pinion.system
         n = notes_contact_ratio(pair.pinion.pitch_radius, pair.gear.pitch_radius, s.a, s.a, s.pressure_angle,
                                 s.base_pitch)
@@ -72,7 +72,7 @@ def _pair_notes(study) -> tuple[str, ...]:
     out.append(f"Interference: {verdict}.")
     lim = _pair_limits(pair)
     phi_deg = math.degrees(pair.pinion.system.pressure_angle)
-    words = (f"Least pinion free of interference at {phi_deg:g} deg, addendum {pair.pinion.system.addendum:g} module: "
+    words = (("External gears: " if pair.internal else "") + f"least pinion free of interference at {phi_deg:g} deg, addendum {pair.pinion.system.addendum:g} module: "
              f"{lim['pinion_with_rack']} teeth with a rack, {lim['equal_gears']} with an equal gear")
     if "pinion_with_this_gear" in lim:
         words += f", {lim['pinion_with_this_gear']} with this {pair.gear.teeth}-tooth gear"
@@ -99,7 +99,7 @@ def _pair_json(study) -> dict[str, Any]:
     out: dict[str, Any] = {"teeth_system": {"module": L(s.module), "pressure_angle_deg": math.degrees(s.pressure_angle),
                                             "addendum": s.addendum, "dedendum": s.dedendum},
                            "gears": {"1": gear(pair.pinion)} | ({} if pair.rack else {"2": gear(pair.gear)}),
-                           "rack": pair.rack, "centre_distance": L(pair.distance),
+                           "rack": pair.rack, "internal": pair.internal, "centre_distance": L(pair.distance),
                            "interference_limits": _pair_limits(pair)}
     a = study.result("contact")
     if a is not None:

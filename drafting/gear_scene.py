@@ -6,7 +6,8 @@ A pair in mesh (``kind = "gear pair"``)::
                 pressure_angle = "20 deg"; system = "full depth" | "stub" (or addendum = 1.0, dedendum = 1.25,
                 the constants in modules)
     [pair]      pinion = 20 (teeth of gear 1, the driver); gear = 40 (teeth of gear 2) or "rack";
-                centre_distance = "152 mm" (optional; for a rack, from O1 to the rack's pitch line)
+                centre_distance = "152 mm" (optional; for a rack, from O1 to the rack's pitch line);
+                internal = true (gear 2 is an internal gear, a ring, about the pinion)
 
 A gear train (``kind = "gear train"``)::
 
@@ -93,13 +94,20 @@ def read_gear_pair(r, units: Units) -> dict:
     s = read_teeth(r, units)
     if "pair" not in r.data:
         raise r.fail("pair", "is missing: give the teeth, e.g. [pair] pinion = 20, gear = 40 (or gear = \"rack\")")
-    t = r.table("pair", {"pinion", "gear", "centre_distance"}, {"pinion", "gear"})
+    t = r.table("pair", {"pinion", "gear", "centre_distance", "internal"}, {"pinion", "gear"})
+    internal = t.get("internal", False)
+    if not isinstance(internal, bool):
+        raise r.fail("pair.internal", "must be true (gear 2 is an internal gear, a ring) or false")
     n1 = _teeth_count(r, "pair.pinion", t["pinion"])
     g = t["gear"]
     if g == "rack":
+        if internal:
+            raise r.fail("pair.internal", "a rack is not an internal gear; give gear = its teeth")
         gear = None
     else:
         n2 = _teeth_count(r, "pair.gear", g)
+        if n2 <= n1 and internal:
+            raise r.fail("pair.gear", f"an internal gear needs more teeth than its {n1}-tooth pinion")
         if n2 < n1:
             raise r.fail("pair.gear", f"{n2} teeth is fewer than the pinion's {n1}: gear 1 is the pinion, the smaller "
                                       f"gear (swap them)")
@@ -107,7 +115,7 @@ def read_gear_pair(r, units: Units) -> dict:
     c = None
     if "centre_distance" in t:
         c = r.quantity("pair.centre_distance", t["centre_distance"], "length", units)
-    pair = Pair(Gear(n1, s), gear, c)
+    pair = Pair(Gear(n1, s), gear, c, internal=internal)
     try:
         from constructions.gears.mesh import contact_geometry
         contact_geometry(pair)

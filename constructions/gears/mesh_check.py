@@ -60,6 +60,17 @@ def closed_form(pair: Pair) -> ClosedForm:
         return ClosedForm(phi, ap, pbr, ap + pbr, pb, pt1, math.inf)
     g2 = pair.gear
     C = pair.distance
+    if pair.internal:
+        # the ring's addendum circle r2 - a is cut between T2 and P: AP = PT2 - sqrt(r_a2^2 - r_b2^2), and
+        # T1 lies between T2 and P (PT1 = r1' sin phi' < PT2 = r2' sin phi'); no interference point past P
+        rb2, ra2 = g2.base_radius, g2.pitch_radius - g2.system.a
+        phiw = phi if pair.centre_distance is None else math.acos((rb2 - rb1) / C)
+        r1w = C * g1.teeth / (g2.teeth - g1.teeth)
+        r2w = C + r1w
+        pt1, pt2 = r1w * math.sin(phiw), r2w * math.sin(phiw)
+        ap = pt2 - math.sqrt((ra2 - rb2) * (ra2 + rb2))
+        pbr = tip1 - pt1
+        return ClosedForm(phiw, ap, pbr, ap + pbr, pb, pt1, math.inf)
     rb2, ra2 = g2.base_radius, g2.addendum_radius
     if pair.centre_distance is None:
         phiw = phi

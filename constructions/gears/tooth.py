@@ -58,9 +58,8 @@ class ToothSystem:
             raise DegenerateInput(f"the module must be a positive length, not {self.module!r}")
         if not (0.0 < self.pressure_angle < math.radians(45.0)):
             raise DegenerateInput("the pressure angle must lie between 0 and 45 deg")
-        if not (0.0 < self.addendum <= self.dedendum):
-            raise DegenerateInput("the addendum constant must be positive and at most the dedendum constant "
-                                  "(the clearance is their difference)")
+        if not (self.addendum > 0.0 and self.dedendum > 0.0):
+            raise DegenerateInput("the addendum and dedendum constants must be positive")
 
     @classmethod
     def from_diametral_pitch(cls, pitch_per_inch: float, pressure_angle: float, addendum: float = 1.0,
@@ -204,3 +203,13 @@ def unwinding_points(rb: float, theta0: float, roll_step: float, count: int, cen
         tangent = Vec(math.sin(a), -math.cos(a)) * sense        # the thread's direction off the circle
         out.append((touch, touch + tangent * (rb * u), u))
     return out
+
+
+def ring_outline(teeth: int, system: ToothSystem, centre: Vec, first_centre_angle: float, count: int,
+                 flank_points: int) -> list[Vec]:
+    """``count`` teeth of an internal gear (a ring): its tooth is the space of an external gear of as many
+    teeth with addendum and dedendum exchanged (the ring's tips point inwards, at r - a); the ring tooth
+    centred at ``first_centre_angle`` is that gear's space there."""
+    ghost = Gear(teeth, ToothSystem(system.module, system.pressure_angle, system.dedendum, system.addendum))
+    half = math.pi / teeth
+    return ghost.teeth_outline(centre, first_centre_angle - half, count + 1, flank_points)

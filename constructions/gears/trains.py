@@ -279,6 +279,17 @@ def layout(train: Train, tol_rel: float = 1e-9) -> tuple[dict[str, Vec], dict[st
                 oa = ob - u * (ra - rb if train.internal_mesh(m) else ra + rb)
                 place(ga, oa, f"mesh {m.name}")
                 pitch[m.name] = oa + u * ra
+    if train.planetary:                          # central gears turn about the carrier's axis, the origin
+        for m in train.meshes:
+            ga, gb = train.gear(m.a), train.gear(m.b)
+            if (ga.carrier == FRAME) == (gb.carrier == FRAME):
+                continue
+            central = ga if ga.carrier == FRAME else gb
+            off = centres[central.name].norm()
+            if off > tol:
+                raise ConstructionError(f"mesh {m.name} puts gear {central.name} {off:.4g} m off the carrier's axis: "
+                                        f"the gears do not fit (a planet and its ring need N_ring = N_sun + "
+                                        f"2 N_planet)")
     for a, b in train.coaxial:
         ca = next(centres[g.name] for g in train.gears if g.member == a)
         cb = next(centres[g.name] for g in train.gears if g.member == b)
