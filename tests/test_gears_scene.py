@@ -125,3 +125,23 @@ def test_an_internal_pair_scene_reads_and_agrees(tmp_path):
     assert not study.disagreements() and study.results["AP"].analytic is not None
     assert "PT_2" not in study.results                   # no interference point on the recess side
     assert any("INTERFERENCE" in n for n in study.notes)  # 18 in a 72-tooth ring, full depth 20 deg: O2T1 > r2 - a
+
+
+def test_the_reverted_reducer_scene():
+    """Derived in the scene's header: n_c = 1500 (20/60)(25/55) rpm; W_t = 1061.0 and 2546.5 N; none on b."""
+    study = Study(load_scene(GALLERY / "gear-train-reverted-reducer.toml"))
+    assert not study.disagreements()
+    r = study.results
+    rpm = 2 * math.pi / 60
+    assert r["omega_c"].graphical / rpm == pytest.approx(1500 * 20 / 60 * 25 / 55, rel=1e-12)
+    assert r["W_t 1-2"].graphical == pytest.approx(5000 / (1500 * rpm * 0.03), rel=1e-12)
+    assert r["W_t 3-4"].graphical * 0.0375 == pytest.approx(r["W_t 1-2"].graphical * 0.09, rel=1e-12)
+    assert r["T_b"].graphical == 0.0
+
+
+def test_a_reverted_train_whose_stages_differ_is_named(tmp_path, capsys):
+    p = tmp_path / "rev.toml"
+    p.write_text((GALLERY / "gear-train-reverted-reducer.toml").read_text().replace("teeth = 55", "teeth = 54"))
+    assert main(["check", str(p)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and ": train.coaxial: " in err and "must be coaxial" in err, err

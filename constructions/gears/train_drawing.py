@@ -54,7 +54,7 @@ def _member_label(train: Train, m: str) -> str:
         return f"carrier {m}"
     if len(gs) == 1 and gs[0].name == m:
         return f"gear {m}"
-    return f"shaft {m} (gears {', '.join(g.name for g in gs)})"
+    return f"shaft {m} (gear{'s' if len(gs) > 1 else ''} {', '.join(g.name for g in gs)})"
 
 
 def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> TrainAnalysis:
