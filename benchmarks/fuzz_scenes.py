@@ -490,6 +490,11 @@ def _shown(path: Path) -> list[str]:
     return [printable(str(path)), cut_middle(printable(str(path)), 120)]
 
 
+FONT_FACES = re.compile(r'(@font-face\{font-family:"DejaVu Sans";font-style:(normal|italic);'
+                        r'src:url\(data:font/woff;base64,[A-Za-z0-9+/=]+\) format\("woff"\);\})+')
+"""The one <style> a sheet may hold: its font (drafting.font_embed), nothing that fetches or runs."""
+
+
 def check_svg(path: Path) -> str | None:
     """None if the file is well-formed, inert SVG; else why not."""
     data = path.read_bytes()
@@ -501,6 +506,8 @@ def check_svg(path: Path) -> str | None:
         return "has a DOCTYPE or entity"
     for el in root.iter():
         tag = el.tag.rsplit("}", 1)[-1]
+        if tag == "style" and FONT_FACES.fullmatch(el.text or ""):
+            continue                           # the embedded font: @font-face rules with data URLs only
         if tag in ("script", "foreignObject", "a", "image", "use", "iframe", "style"):
             return f"has <{tag}>"
         for k, v in el.attrib.items():

@@ -18,6 +18,7 @@ from typing import Callable
 
 import svgwrite
 
+from .font_embed import css_for
 from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Text
 from .sheet import Sheet
 from .style import FONT_FAMILY, style
@@ -109,6 +110,7 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
     page = dwg.rect()
     page.attribs.update({"x": "0", "y": "0", "width": fmt(w), "height": fmt(h), "fill": "white", "stroke": "none"})
     dwg.add(page)
+    dwg.defs.add(dwg.style(css_for(s.text for c in sheet.commands if isinstance(c, Text) for s in c.spans)))
     for c in sheet.commands:
         el = _element(dwg, c)
         if attrs is not None:

@@ -49,6 +49,12 @@ def test_the_check_catches_a_bad_svg(tmp_path):
     (tmp_path / "sub" / "x.svg").write_bytes(b'<svg xmlns="http://www.w3.org/2000/svg"><text>\x01</text></svg>')
     (tmp_path / "y.svg").write_bytes(b'<!DOCTYPE svg [<!ENTITY e "x">]><svg xmlns="http://www.w3.org/2000/svg"/>')
     (tmp_path / "z.svg").write_bytes(b'<svg xmlns="http://www.w3.org/2000/svg"><a href="http://x"/></svg>')
-    assert [p.name for p, _ in bad_svgs(tmp_path)] == ["x.svg", "y.svg", "z.svg"]
+    # a style sheet other than the embedded font's @font-face rules (data URLs only) is active content
+    (tmp_path / "w.svg").write_bytes(b'<svg xmlns="http://www.w3.org/2000/svg"><style>@import url(http://x);'
+                                     b'</style></svg>')
+    (tmp_path / "v.svg").write_bytes(b'<svg xmlns="http://www.w3.org/2000/svg"><style>@font-face{font-family:'
+                                     b'"DejaVu Sans";font-style:normal;src:url(http://x/f.woff) format("woff");}'
+                                     b'</style></svg>')
+    assert [p.name for p, _ in bad_svgs(tmp_path)] == ["x.svg", "v.svg", "w.svg", "y.svg", "z.svg"]
     for p in tmp_path.rglob("*.svg"):          # leave nothing bad for the end-of-session check
         p.unlink()
