@@ -98,3 +98,34 @@ def test_base_scene_runs():
     s = Study(parse_scene(BASE, "cam.toml")).run()
     assert s.scene.model.divisions == 12 and all(c.agrees for c in s.comparisons)
     assert math.isclose(s.scene.model.follower.prime_radius, 0.05)
+
+
+def test_export_csv_and_dxf_at_the_tolerance(tmp_path):
+    import ezdxf
+    import numpy as np
+
+    from constructions.cams.profile import evaluate
+    from drafting.cam_export import export
+
+    scene = GALLERY / "notes-roller-cam.toml"
+    csv, dxf = export(scene, tmp_path, 1e-6)
+    lines = csv.read_text().splitlines()
+    assert "# units: in" in lines
+    rows = np.array([[float(v) for v in r.split(",")] for r in lines if r and r[0] not in "#x"]) * 0.0254
+    m = load_scene(scene).model
+    n = len(rows)
+    th = np.linspace(0, 2 * math.pi, n, endpoint=False)
+    exact = evaluate(m.program, m.follower, th).profile.T
+    assert np.max(np.hypot(*(rows - exact).T)) < 1e-9          # every point exact (9 decimals of an inch)
+    # every chord within the tolerance: the exact curve at the middle of each step against the chord
+    mid = evaluate(m.program, m.follower, th + math.pi / n).profile.T
+    a, b = rows, np.roll(rows, -1, axis=0)
+    ab = b - a
+    u = np.clip(np.sum((mid - a) * ab, axis=1) / np.sum(ab * ab, axis=1), 0, 1)
+    dev = np.hypot(*(mid - (a + u[:, None] * ab)).T)
+    size = m.follower.prime_radius + m.program.lift
+    assert np.max(dev) <= 1e-6 * size * 1.01
+    doc = ezdxf.readfile(dxf)
+    assert doc.header["$INSUNITS"] == 1
+    poly = list(doc.modelspace().query("LWPOLYLINE"))
+    assert len(poly) == 1 and poly[0].closed and len(poly[0]) == n

@@ -374,4 +374,32 @@ def _cross_point(a0, a1, b0, b1):
 
 
 __all__ = ["Follower", "KNIFE", "ROLLER", "FLAT", "FOLLOWERS", "evaluate", "analyse", "CamProfile", "Evaluation",
-           "extremum", "spans", "trim"]
+           "extremum", "spans", "trim", "samples_for", "profile_points"]
+
+
+def samples_for(program: Program, f: Follower, tolerance: float, coarse: int = 720) -> int:
+    """How many equal steps of cam angle keep every chord of the analytic envelope within ``tolerance``
+    (SI length) of the curve: a chord of length l on a bend of curvature k strays l^2 k / 8 from it, so
+    from a coarse pass (chord lengths, the larger |curvature| at either end) the step is shortened by
+    sqrt(max(l^2 k) / (8 tol))."""
+    if not tolerance > 0:
+        raise ValueError("the tolerance must be positive")
+    th = np.linspace(0.0, TAU, coarse + 1)
+    ev = evaluate(program, f, th)
+    C = ev.profile
+    seg = np.hypot(np.diff(C[0]), np.diff(C[1]))
+    with np.errstate(divide="ignore"):
+        k = np.abs(1.0 / ev.rho_profile)
+    k = np.where(np.isfinite(k), k, 0.0)
+    kk = np.maximum(k[:-1], k[1:])
+    worst = float(np.max(seg ** 2 * kk))
+    n = coarse * math.sqrt(worst / (8.0 * tolerance)) if worst > 0 else coarse
+    return int(max(coarse, math.ceil(n)))
+
+
+def profile_points(program: Program, f: Follower, tolerance: float) -> np.ndarray:
+    """The exact envelope at equal steps of cam angle, dense enough that the polyline through the points
+    stays within ``tolerance`` of the true profile (2 x N, closed: the last point is not repeated).
+    Every point is exact; only the chords between them approximate."""
+    n = samples_for(program, f, tolerance)
+    return evaluate(program, f, np.linspace(0.0, TAU, n, endpoint=False)).profile
