@@ -20,6 +20,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from .style import FONT_FAMILY, FONT_FILES
+from .textsafe import xml_safe
 
 FONTS = Path(__file__).resolve().parent / "fonts"
 REPERTOIRE = frozenset(string.ascii_letters + string.digits + string.punctuation + " "
@@ -59,6 +60,7 @@ def font_face_css(extra: frozenset[str] = frozenset()) -> str:
 
 
 def css_for(texts) -> str:
-    """The rules for a sheet whose text is ``texts`` (strings)."""
-    used = frozenset("".join(texts))
-    return font_face_css(frozenset(used - REPERTOIRE))
+    """The rules for a sheet whose text is ``texts`` (strings), as the SVG writes them (xml_safe: control
+    characters, surrogates and non-characters already replaced)."""
+    used = frozenset(xml_safe("".join(texts)))
+    return font_face_css(frozenset(c for c in used - REPERTOIRE if c.isprintable()))
