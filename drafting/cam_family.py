@@ -12,7 +12,7 @@ from typing import Any
 
 from constructions.cams import check as cam_check
 from constructions.cams.construction import construct
-from constructions.cams.profile import FLAT, KNIFE, ROLLER
+from constructions.cams.profile import FLAT, KNIFE, OSCILLATING, ROLLER
 from constructions.geometry import Vec
 
 from .cam_scene import SECTIONS, read_cam
@@ -70,7 +70,7 @@ def _warnings(study) -> tuple[str, ...]:
     u, m = study.scene.units, study.scene.model
     cp, f = c.profile, m.follower
     out = []
-    if f.kind == ROLLER and cp.min_rho_pitch is not None:
+    if f.kind in (ROLLER, OSCILLATING) and cp.min_rho_pitch is not None:
         t, rho = cp.min_rho_pitch
         if cp.cusp_at:
             out.append(f"Cusp: the roller radius {u.format('length', f.roller_radius)} equals the pitch curve's "
@@ -88,9 +88,11 @@ def _warnings(study) -> tuple[str, ...]:
             out.append(f"The flat face cannot follow: r_b + s + s'' < 0 from {_spans(u, cp.undercut)} (needs a base "
                        f"radius above {u.format('length', cp.min_base_radius)}); the profile drawn is trimmed.")
     phi = abs(cp.max_pressure_angle[1])
-    if f.kind != FLAT and phi > math.radians(30):
+    limit = 35 if f.kind == OSCILLATING else 30
+    if f.kind != FLAT and phi > math.radians(limit):
         out.append(f"The pressure angle reaches {u.format('angle', phi)} at {u.format('angle', cp.max_pressure_angle[0])}"
-                   f", above the usual 30 deg for a translating follower.")
+                   f", above the usual {limit} deg for {'an oscillating' if limit == 35 else 'a translating'} "
+                   f"follower.")
     return tuple(out)
 
 
@@ -133,12 +135,14 @@ def _json(study) -> dict[str, Any]:
         a = m.program.starts[i]
         row = {"motion": seg.kind, "from": A(a), "to": A(a + seg.beta)}
         if seg.kind != "dwell":
-            row.update(lift=L(seg.lift), law=seg.law)
+            row.update(lift=A(seg.lift) if f.kind == OSCILLATING else L(seg.lift), law=seg.law)
         prog.append(row)
     out: dict[str, Any] = {"cam": {"base_radius": L(f.base_radius), "sense": "ccw" if f.sense > 0 else "cw",
                                    "divisions": m.divisions,
                                    "speed": u.convert("angular velocity", m.omega) if m.omega else None},
-                           "follower": {"type": f.kind, "roller_radius": L(f.roller_radius), "offset": L(f.offset)},
+                           "follower": {"type": f.kind, "roller_radius": L(f.roller_radius), "offset": L(f.offset),
+                                        **({"pivot_distance": L(f.pivot_distance), "arm_length": L(f.arm_length)}
+                                           if f.kind == OSCILLATING else {})},
                            "program": prog,
                            "joins": [{"at": A(j.theta), "before": j.before, "after": j.after,
                                       "consequence": j.consequence or "continuous"} for j in m.program.joins()]}
@@ -146,7 +150,7 @@ def _json(study) -> dict[str, Any]:
     if c is not None:
         cp = c.profile
         out["profile"] = {
-            "table": [{"theta": A(t), "s": L(v)} for t, v in zip(c.stations, c.table)],
+            "table": [{"theta": A(t), "s": A(v) if f.kind == OSCILLATING else L(v)} for t, v in zip(c.stations, c.table)],
             "max_pressure_angle": {"at": A(cp.max_pressure_angle[0]), "value": A(abs(cp.max_pressure_angle[1]))},
             "min_radius_of_curvature_pitch": ({"at": A(cp.min_rho_pitch[0]), "value": L(cp.min_rho_pitch[1])}
                                               if cp.min_rho_pitch else None),

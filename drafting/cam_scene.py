@@ -4,9 +4,11 @@
     [cam]          base_radius, sense ("cw" or "ccw"), speed (optional: the cam's steady angular speed, for
                    v, a and j; without it the s-v-a-j diagrams are per radian), divisions (how many equal
                    portions of the turn the construction draws, 4..72; default 12) or step (e.g. "10 deg")
-    [follower]     type ("knife-edge", "roller", "flat-faced"), roller_radius or roller_diameter (a roller),
-                   offset (optional: the axis to the right of the cam centre, negative to the left; not for
-                   a flat face)
+    [follower]     type ("knife-edge", "roller", "flat-faced", "oscillating roller"), roller_radius or
+                   roller_diameter (a roller), offset (optional: the axis to the right of the cam centre,
+                   negative to the left; translating knife-edge or roller only), pivot_distance and
+                   arm_length (an oscillating roller: its arm's pivot to the right of the cam centre; the
+                   segments' lifts are then the arm's swing, an angle)
     [[segment]]    motion ("dwell", "rise", "return"), from, to (cam angles; the segments run on from 0 to
                    360 deg), lift (a rise or return), law ("simple harmonic", "cycloidal", "uniform",
                    "parabolic", "3-4-5 polynomial", "4-5-6-7 polynomial")
@@ -20,13 +22,13 @@ import math
 from dataclasses import dataclass
 
 from constructions.cams.laws import DWELL, RETURN, RISE, SEGMENT_KINDS, Program, Segment, law_name
-from constructions.cams.profile import FLAT, FOLLOWERS, KNIFE, ROLLER, Follower
+from constructions.cams.profile import FLAT, FOLLOWERS, KNIFE, OSCILLATING, ROLLER, Follower
 
 from .unitset import Units
 
 SECTIONS = frozenset({"cam", "follower", "segment"})
 CAM_KEYS = {"base_radius", "sense", "speed", "divisions", "step"}
-FOLLOWER_KEYS = {"type", "roller_radius", "roller_diameter", "offset"}
+FOLLOWER_KEYS = {"type", "roller_radius", "roller_diameter", "offset", "pivot_distance", "arm_length"}
 SEGMENT_KEYS = {"motion", "from", "to", "lift", "law"}
 MAX_DIVISIONS = 72
 
@@ -77,9 +79,17 @@ def read_cam(r, units: Units) -> dict:
     kind = ft["type"]
     if kind not in FOLLOWERS:
         raise r.fail("follower.type", f"{r.shown(kind)} is not a follower; choose from {', '.join(FOLLOWERS)} "
-                                      f"(oscillating followers are not available yet)")
+                                      f"(an oscillating flat-faced follower is not available yet)")
     rr = 0.0
-    if kind == ROLLER:
+    osc = kind == OSCILLATING
+    for k in ("pivot_distance", "arm_length"):
+        if osc and k not in ft:
+            raise r.fail(f"follower.{k}", "is missing: an oscillating roller needs its pivot distance and arm length")
+        if not osc and k in ft:
+            raise r.fail(f"follower.{k}", "only an oscillating follower has a pivot and an arm")
+    pivot = r.quantity("follower.pivot_distance", ft["pivot_distance"], "length", units) if osc else 0.0
+    arm = r.quantity("follower.arm_length", ft["arm_length"], "length", units) if osc else 0.0
+    if kind in (ROLLER, OSCILLATING):
         if "roller_radius" in ft and "roller_diameter" in ft:
             raise r.fail("follower.roller_diameter", "give roller_radius or roller_diameter, not both")
         if "roller_radius" in ft:
@@ -96,6 +106,8 @@ def read_cam(r, units: Units) -> dict:
                 raise r.fail(f"follower.{k}", f"a {kind} follower has no roller")
     e = 0.0
     if "offset" in ft:
+        if osc:
+            raise r.fail("follower.offset", "an oscillating follower has no offset; its pivot places it")
         if kind == FLAT:
             raise r.fail("follower.offset", "a flat face square to its axis draws the same profile at any offset; "
                                             "leave it out")
@@ -129,7 +141,7 @@ def read_cam(r, units: Units) -> dict:
         else:
             if "lift" not in st:
                 raise r.fail(f"{k}.lift", "is missing")
-            h = r.quantity(f"{k}.lift", st["lift"], "length", units)
+            h = r.quantity(f"{k}.lift", st["lift"], "angle" if osc else "length", units)
             if h <= 0:
                 raise r.fail(f"{k}.lift", "must be positive (a return lowers the follower by its lift)")
             try:
@@ -145,7 +157,13 @@ def read_cam(r, units: Units) -> dict:
         program = Program(segments)
     except ValueError as err:
         raise r.fail("segment", str(err)) from None
-    follower = Follower(kind, rb, rr, e, sg)
+    if osc:
+        if not (pivot > 0 and arm > 0):
+            raise r.fail("follower.arm_length", "the pivot distance and the arm must be positive")
+        if not abs(pivot - arm) < rb + rr < pivot + arm:
+            raise r.fail("follower.arm_length", "the arm cannot reach the prime circle from its pivot: base + roller "
+                                                "must lie between |pivot_distance - arm_length| and their sum")
+    follower = Follower(kind, rb, rr, e, sg, pivot, arm)
     return {"model": CamModel(program, follower, omega, divisions)}
 
 

@@ -108,3 +108,16 @@ def test_program_errors():
     with pytest.raises(ValueError):
         law_name("sinusoid")
     assert law_name("SHM") == HARMONIC and law_name("3-4-5") == POLY345
+
+
+def test_chart_pieces_keep_their_one_sided_values():
+    """Each piece of the s-v-a-j charts ends on its own law's value (the jerk of a cycloidal rise ends at
+    +4 pi^2 h / beta^3, not at the dwell's 0), with a break before the next piece's value."""
+    from constructions.cams.charts import svaj_series
+    p = Program([Segment(RISE, D(120), 0.01, CYCLOIDAL), Segment(DWELL, D(40)), Segment(RETURN, D(120), 0.01, CYCLOIDAL),
+                 Segment(DWELL, D(80))])
+    x, (s, v, a, j) = svaj_series(p, None)
+    x = np.array(x)
+    k = int(np.flatnonzero(np.isclose(x, D(120)))[0])
+    assert j[k] == pytest.approx(4 * math.pi ** 2 * 0.01 / D(120) ** 3, rel=1e-6)
+    assert math.isnan(j[k + 1]) and j[k + 2] == 0.0

@@ -163,3 +163,33 @@ def test_knife_edge_and_errors():
         Follower(ROLLER, 0.01, 0.005, offset=0.02)
     with pytest.raises(ValueError):
         Follower(FLAT, 0.04, 0.01)
+
+
+@settings(max_examples=25, deadline=None)
+@given(law=st.sampled_from(LAWS), swing=st.floats(5, 25), a=st.floats(0.07, 0.12), arm=st.floats(0.05, 0.09),
+       sense=st.sampled_from([1, -1]))
+def test_oscillating_roller_equals_kennedy(law, swing, a, arm, sense):
+    """The oscillating roller's envelope (derivatives of the rotated pitch curve) against the contact point
+    found through the instant centre of cam and arm (Kennedy), at every construction station."""
+    from constructions.cams.profile import OSCILLATING
+    rb, rr = 0.035, 0.007
+    if not abs(a - arm) < rb + rr < a + arm:
+        return
+    p = Program([Segment(RISE, D(120), D(swing), law), Segment(DWELL, D(40)), Segment(RETURN, D(120), D(swing), law),
+                 Segment(DWELL, D(80))])
+    f = Follower(OSCILLATING, rb, rr, sense=sense, pivot_distance=a, arm_length=arm)
+    c = construct(p, f, 18, samples=256)
+    size = c.profile.size
+    for i, t in enumerate(c.stations):
+        s, ds = (float(v[0]) for v in p.derivatives(np.array([t]))[:2])
+        if abs(sense + ds) < 0.05:          # the instant centre runs off to infinity: Kennedy's form is ill-posed
+            continue
+        cf = closed_form_point(p, f, float(t))
+        assert np.hypot(*(c.centres[:, i] - cf["P"])) <= 1e-9 * size
+        assert np.hypot(*(c.contacts[:, i] - cf["C"])) <= 1e-9 * size
+    k = c.station_names["phi_max"]
+    phi = next(m for m in c.measured if m.name == "phi_max").value
+    assert phi == pytest.approx(closed_form_point(p, f, float(c.stations[k]))["phi"], abs=1e-9)
+    # the roller centre stays on the arm's circle about its laid-out pivot
+    A = np.stack([a * np.cos(-sense * c.stations), a * np.sin(-sense * c.stations)])
+    assert np.allclose(np.hypot(*(c.centres - A)), arm, rtol=1e-12)

@@ -129,3 +129,16 @@ def test_export_csv_and_dxf_at_the_tolerance(tmp_path):
     assert doc.header["$INSUNITS"] == 1
     poly = list(doc.modelspace().query("LWPOLYLINE"))
     assert len(poly) == 1 and poly[0].closed and len(poly[0]) == n
+
+
+def test_oscillating_scene():
+    s = study("oscillating-roller-cam.toml")
+    assert all(c.agrees for c in s.comparisons) and len(s.comparisons) == 9
+    f = s.scene.model.follower
+    assert math.degrees(f.gamma0) == pytest.approx(math.degrees(math.acos((48 ** 2 - 90 ** 2 - 70 ** 2) / (2 * 90 * 70))))
+    text = BASE.replace('type = "roller"', 'type = "oscillating roller"\npivot_distance = "90 mm"')
+    with pytest.raises(SceneError, match="follower.arm_length"):
+        parse_scene(text, "cam.toml")
+    text = BASE.replace('type = "roller"', 'type = "oscillating roller"\npivot_distance = "90 mm"\narm_length = "70 mm"')
+    with pytest.raises(SceneError, match="segment\\[1\\].lift"):       # a swing is an angle, not a length
+        parse_scene(text, "cam.toml")

@@ -34,7 +34,7 @@ def svaj_series(program: Program, omega: float | None, per_piece: int = 48):
             continue
         g = np.linspace(lo, hi, per_piece)
         # evaluate just inside the piece so each end takes this piece's one-sided value
-        eps = (hi - lo) * 1e-12
+        eps = (hi - lo) * 1e-9       # well inside: a station within 1e-12 turn of a start reads that segment
         gi = np.clip(g, lo + eps, hi - eps)
         d = program.derivatives(gi)
         vals = [d[0], d[1] * w, d[2] * w ** 2, d[3] * w ** 3]
@@ -51,11 +51,20 @@ def svaj_series(program: Program, omega: float | None, per_piece: int = 48):
     return tuple(xs), [tuple(y) for y in ys]
 
 
-def svaj_charts(program: Program, omega: float | None) -> list[Chart]:
+def svaj_charts(program: Program, omega: float | None, angular: bool = False) -> list[Chart]:
+    """The four charts; ``angular`` for an oscillating follower, whose lift is an angle."""
     x, ys = svaj_series(program, omega)
     # a NaN row inserted at a jump must not break curves that do not jump there: fill their value
     out = []
-    if omega:
+    if angular:
+        spec = (("\u03c8", "Swing \u03c8", "angle"),
+                ("\u03c9 (rad/s)" if omega else "d\u03c8/d\u03b8", "Angular velocity" if omega else "d\u03c8/d\u03b8",
+                 "angular velocity" if omega else "number"),
+                ("\u03b1 (rad/s\u00b2)" if omega else "d\u00b2\u03c8/d\u03b8\u00b2", "Angular acceleration" if omega
+                 else "d\u00b2\u03c8/d\u03b8\u00b2", "angular acceleration" if omega else "number"),
+                ("(rad/s\u00b3)" if omega else "d\u00b3\u03c8/d\u03b8\u00b3", "Angular jerk" if omega
+                 else "d\u00b3\u03c8/d\u03b8\u00b3", "number"))
+    elif omega:
         spec = (("s", "Displacement s", "length"), ("v", "Velocity v", "velocity"),
                 ("a", "Acceleration a", "acceleration"), ("j (m/s\u00b3)", "Jerk j", "jerk"))
     else:

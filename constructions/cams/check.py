@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from .laws import TAU, Program
-from .profile import FLAT, Follower
+from .profile import FLAT, OSCILLATING, Follower
 
 
 def _turn_back(theta: float, sense: int, x: float, y: float) -> tuple[float, float]:
@@ -35,6 +35,8 @@ def closed_form_point(program: Program, f: Follower, theta: float) -> dict[str, 
     if f.kind == FLAT:
         return {"P": _turn_back(theta, sg, 0.0, f.base_radius + s),        # the face line's foot on the axis
                 "C": _turn_back(theta, sg, sg * ds, f.base_radius + s), "phi": 0.0, "s": s}
+    if f.kind == OSCILLATING:
+        return _oscillating(f, theta, s, ds)
     e = f.offset
     d0 = math.sqrt(f.prime_radius ** 2 - e * e)
     phi = math.atan((ds - sg * e) / (d0 + s))
@@ -42,6 +44,28 @@ def closed_form_point(program: Program, f: Follower, theta: float) -> dict[str, 
     rr = f.roller_radius
     C = _turn_back(theta, sg, e + sg * rr * math.sin(phi), d0 + s - rr * math.cos(phi))
     return {"P": P, "C": C, "phi": phi, "s": s}
+
+
+def _oscillating(f: Follower, theta: float, s: float, ds: float) -> dict:
+    """An oscillating roller by Kennedy's theorem: the roller centre B from the arm's angle (the law of
+    cosines places the arm at zero lift), and the common normal through B and the instant centre I of
+    cam and follower, on the line of centres OA where both move alike: sigma x_I = -s' (x_I - a), so
+    x_I = s' a / (sigma + s')."""
+    a, L, rp, sg = f.pivot_distance, f.arm_length, f.prime_radius, f.sense
+    g0 = math.acos((rp * rp - a * a - L * L) / (2 * a * L))
+    g = g0 - s
+    B = (a + L * math.cos(g), L * math.sin(g))
+    xi = ds * a / (sg + ds)
+    nx, ny = B[0] - xi, B[1]
+    k = math.hypot(nx, ny)
+    nx, ny = nx / k, ny / k
+    if nx * B[0] + ny * B[1] < 0:          # the normal's outward sense: away from the cam's centre
+        nx, ny = -nx, -ny
+    rr = f.roller_radius
+    C = (B[0] - rr * nx, B[1] - rr * ny)
+    dirn = (math.sin(g), -math.cos(g))     # the roller centre's path as the swing grows
+    phi = sg * math.atan2(dirn[0] * ny - dirn[1] * nx, dirn[0] * nx + dirn[1] * ny)
+    return {"P": _turn_back(theta, sg, *B), "C": _turn_back(theta, sg, *C), "phi": phi, "s": s}
 
 
 def min_base_radius_flat(program: Program, start: float = 0.0, end: float = TAU, n: int = 200001) -> float:

@@ -32,7 +32,7 @@ from ..quantities import Measured
 from ..record import Circle, Construction, Curve, Diagram, Note, Pivot, Point, Role, Segment, StepKind, Value
 from .charts import svaj_charts
 from .laws import DWELL, TAU, Program
-from .profile import FLAT, KNIFE, ROLLER, CamProfile, Follower, analyse, evaluate
+from .profile import FLAT, KNIFE, OSCILLATING, ROLLER, CamProfile, Follower, analyse, evaluate
 
 CAM = Diagram("cam", "profile")
 
@@ -73,6 +73,8 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     turn = "counter-clockwise" if sg > 0 else "clockwise"
     opposite = "clockwise" if sg > 0 else "counter-clockwise"
     rb, rr, e = f.base_radius, f.roller_radius, f.offset
+    osc = f.kind == OSCILLATING
+    lk = "angle" if osc else "length"          # an oscillating follower's lift is its swing
 
     # the program in words (given)
     parts = []
@@ -81,16 +83,20 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
         a, b = program.starts[i], program.starts[i] + seg.beta
         vals[f"a{i}"], vals[f"b{i}"] = Value("angle", a), Value("angle", b)
         if seg.kind == DWELL:
-            vals[f"h{i}"] = Value("length", program.levels[i])
+            vals[f"h{i}"] = Value(lk, program.levels[i])
             parts.append(f"dwell at $h{i} from $a{i} to $b{i}")
         else:
-            vals[f"h{i}"] = Value("length", seg.lift)
+            vals[f"h{i}"] = Value(lk, seg.lift)
             parts.append(f"{seg.law} {seg.kind} of $h{i} from $a{i} to $b{i}")
     vals["rb"] = Value("length", rb)
     what = {KNIFE: "a knife-edge follower", ROLLER: "a roller follower of radius $rr",
-            FLAT: "a flat-faced follower"}[f.kind]
-    if f.kind == ROLLER:
+            FLAT: "a flat-faced follower",
+            OSCILLATING: "an oscillating roller follower of radius $rr on an arm $l pivoted $a from the cam centre "
+                         "(the lift is the arm's swing)"}[f.kind]
+    if f.kind in (ROLLER, OSCILLATING):
         vals["rr"] = Value("length", rr)
+    if osc:
+        vals["l"], vals["a"] = Value("length", f.arm_length), Value("length", f.pivot_distance)
     off = ""
     if e and f.kind != FLAT:
         vals["e"] = Value("length", abs(e))
@@ -102,7 +108,7 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
                    values={"d": Value("angle", step)})
 
     # 2: the table of s
-    tvals = {f"s{i}": Value("length", float(ev.s[i])) for i in range(n)}
+    tvals = {f"s{i}": Value(lk, float(ev.s[i])) for i in range(n)}
     rows = "; ".join(f"{_deg(th[i])}: $s{i}" for i in range(n))
     rec = rec.then(f"Calculate and tabulate s at every station (cam angle in deg: s) -- {rows}.", values=tvals)
 
@@ -111,7 +117,7 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
                    Pivot("O", Role.GIVEN, CAM, O, "O"),
                    Circle("base circle", Role.CENTRE_LINE, CAM, O, rb, "base circle"),
                    values={"rb": Value("length", rb)})
-    if f.kind == ROLLER:
+    if f.kind in (ROLLER, OSCILLATING):
         rec = rec.then("Draw the prime circle of radius r_b + r_0 = $rp.",
                        Circle("prime circle", Role.CENTRE_LINE, CAM, O, f.prime_radius, "prime circle"),
                        values={"rp": Value("length", f.prime_radius)})
@@ -120,7 +126,82 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
                        Circle("offset circle", Role.CENTRE_LINE, CAM, O, abs(e), "offset circle"),
                        values={"e": Value("length", abs(e))})
 
-    # 6: the follower's lines laid out opposite to the rotation
+    # 6: the follower's lines laid out opposite to the rotation (an oscillating follower: its pivots)
+    if osc:
+        rec, centres = _oscillating_steps(rec, f, th, ev, step, opposite)
+    else:
+        rec, centres = _translating_steps(rec, f, program, cp, th, ev, step, opposite)
+    contacts = ev.profile
+
+    # 8: the envelope
+    prof = cp.trimmed
+    curve = Curve("profile", Role.RESULT, CAM, tuple(Vec(float(x), float(y)) for x, y in zip(prof[0], prof[1])),
+                  True, "cam profile")
+    marks = [Point(f"C{i}", Role.RESULT, CAM, _v(contacts[:, i])) for i in range(n)] if f.kind != KNIFE else []
+    tangent = {OSCILLATING: "tangent to every roller circle (their envelope; its contact points marked)",
+               ROLLER: "tangent to every roller circle (their envelope; its contact points marked)",
+               KNIFE: "through every knife-edge point (the pitch curve itself)",
+               FLAT: "tangent to every face line (their envelope; its contact points marked)"}[f.kind]
+    rec = rec.then(f"Draw the cam profile {tangent}.", curve, *marks)
+
+    # answers read off the construction
+    measured: list[Measured] = []
+    names: dict[str, int] = {}
+    k_max = int(np.argmax(ev.s))
+    join_stations = sorted({int(round(t / step)) % n for t in program.starts
+                            if abs(t / step - round(t / step)) < 1e-9})
+    for i in join_stations:
+        tag = _deg(th[i])
+        measured.append(Measured(f"P_{tag}", "length", _v(centres[:, i])))
+        names[f"P_{tag}"] = i
+        measured.append(Measured(f"C_{tag}", "length", _v(contacts[:, i])))
+        names[f"C_{tag}"] = i
+    if osc:
+        # the angle between the roller centre's path (square to the arm) and the roller's radius to its contact
+        A = np.stack([f.pivot_distance * np.cos(-sg * th), f.pivot_distance * np.sin(-sg * th)])
+        arm = centres - A
+        px, py = arm[1], -arm[0]                         # square to the arm, the way the swing lifts
+        rx, ry = centres[0] - contacts[0], centres[1] - contacts[1]
+        phis = np.arctan2(px * ry - py * rx, px * rx + py * ry) * sg
+        k = int(np.argmax(np.abs(phis)))
+        measured.append(Measured("phi_max", "angle", float(phis[k])))
+        names["phi_max"] = k
+        rec = rec.then("The pressure angle, read at each station between the roller centre's path (square to the arm) "
+                       "and the roller's radius to its contact point, is largest at station $t: $phi.",
+                       values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
+                       kind=StepKind.ANSWER)
+    elif f.kind == ROLLER:
+        # the angle between the follower's line and the roller's radius to its contact point
+        ux, uy = np.sin(sg * th), np.cos(sg * th)      # the follower's axis at each station (cam frame)
+        rx, ry = centres[0] - contacts[0], centres[1] - contacts[1]
+        phis = np.arctan2(ux * ry - uy * rx, ux * rx + uy * ry) * sg
+        k = int(np.argmax(np.abs(phis)))
+        measured.append(Measured("phi_max", "angle", float(phis[k])))
+        names["phi_max"] = k
+        rec = rec.then("The pressure angle, read at each station between the follower's line and the roller's "
+                       "radius to its contact point, is largest at station $t: $phi.",
+                       values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
+                       kind=StepKind.ANSWER)
+    elif f.kind == KNIFE:
+        k = int(np.argmax(np.abs(ev.pressure_angle)))
+        rec = rec.then("The pressure angle is largest at station $t: $phi.",
+                       values={"t": Value("angle", float(th[k])),
+                               "phi": Value("angle", float(abs(ev.pressure_angle[k])))}, kind=StepKind.ANSWER)
+    rec = rec.then("The largest lift in the table: $s.", values={"s": Value(lk, float(ev.s[k_max]))},
+                   kind=StepKind.ANSWER)
+    charts = svaj_charts(program, omega, angular=osc)
+    jn = [j for j in program.joins() if j.consequence]
+    words = ("The s-v-a-j diagrams against the cam angle" + (" with the cam at its given speed" if omega else
+                                                            ", per radian of cam angle (no cam speed given)"))
+    if jn:
+        words += "; at " + "; ".join(f"{degrees(j.theta)} ({j.before} to {j.after}) {j.consequence}" for j in jn)
+    rec = rec.then(words + ".", *charts)
+    return CamConstruction(rec, th, ev.s, centres, contacts, cp, measured, names)
+
+
+def _translating_steps(rec, f, program, cp, th, ev, step, opposite):
+    n, sg = len(th), f.sense
+    rb, rr, e = f.base_radius, f.roller_radius, f.offset
     reach = (f.prime_radius if f.kind != FLAT else rb) + program.lift
     a = -sg * th
     ux, uy = -np.sin(a), np.cos(a)              # the axis direction at each station (cam frame)
@@ -143,7 +224,6 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
 
     # 7: roller circles / face lines / edges
     centres = ev.pitch if f.kind != FLAT else np.stack([(rb + ev.s) * ux, (rb + ev.s) * uy])
-    contacts = ev.profile
     ents = []
     if f.kind == ROLLER:
         for i in range(n):
@@ -169,54 +249,37 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
         wv = {}
     rec = rec.then(words, *ents, values=wv)
 
-    # 8: the envelope
-    prof = cp.trimmed
-    curve = Curve("profile", Role.RESULT, CAM, tuple(Vec(float(x), float(y)) for x, y in zip(prof[0], prof[1])),
-                  True, "cam profile")
-    marks = [Point(f"C{i}", Role.RESULT, CAM, _v(contacts[:, i])) for i in range(n)] if f.kind != KNIFE else []
-    tangent = {ROLLER: "tangent to every roller circle (their envelope; its contact points marked)",
-               KNIFE: "through every knife-edge point (the pitch curve itself)",
-               FLAT: "tangent to every face line (their envelope; its contact points marked)"}[f.kind]
-    rec = rec.then(f"Draw the cam profile {tangent}.", curve, *marks)
+    return rec, centres
 
-    # answers read off the construction
-    measured: list[Measured] = []
-    names: dict[str, int] = {}
-    k_max = int(np.argmax(ev.s))
-    join_stations = sorted({int(round(t / step)) % n for t in program.starts
-                            if abs(t / step - round(t / step)) < 1e-9})
-    for i in join_stations:
-        tag = _deg(th[i])
-        measured.append(Measured(f"P_{tag}", "length", _v(centres[:, i])))
-        names[f"P_{tag}"] = i
-        measured.append(Measured(f"C_{tag}", "length", _v(contacts[:, i])))
-        names[f"C_{tag}"] = i
-    if f.kind == ROLLER:
-        # the angle between the follower's line and the roller's radius to its contact point
-        rx, ry = centres[0] - contacts[0], centres[1] - contacts[1]
-        phis = np.arctan2(ux * ry - uy * rx, ux * rx + uy * ry) * sg
-        k = int(np.argmax(np.abs(phis)))
-        measured.append(Measured("phi_max", "angle", float(phis[k])))
-        names["phi_max"] = k
-        rec = rec.then("The pressure angle, read at each station between the follower's line and the roller's "
-                       "radius to its contact point, is largest at station $t: $phi.",
-                       values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
-                       kind=StepKind.ANSWER)
-    elif f.kind == KNIFE:
-        k = int(np.argmax(np.abs(ev.pressure_angle)))
-        rec = rec.then("The pressure angle is largest at station $t: $phi.",
-                       values={"t": Value("angle", float(th[k])),
-                               "phi": Value("angle", float(abs(ev.pressure_angle[k])))}, kind=StepKind.ANSWER)
-    rec = rec.then("The largest lift in the table: $s.", values={"s": Value("length", float(ev.s[k_max]))},
-                   kind=StepKind.ANSWER)
-    charts = svaj_charts(program, omega)
-    jn = [j for j in program.joins() if j.consequence]
-    words = ("The s-v-a-j diagrams against the cam angle" + (" with the cam at its given speed" if omega else
-                                                            ", per radian of cam angle (no cam speed given)"))
-    if jn:
-        words += "; at " + "; ".join(f"{degrees(j.theta)} ({j.before} to {j.after}) {j.consequence}" for j in jn)
-    rec = rec.then(words + ".", *charts)
-    return CamConstruction(rec, th, ev.s, centres, contacts, cp, measured, names)
+
+def _oscillating_steps(rec, f, th, ev, step, opposite):
+    """The pivot circle, the pivots laid out opposite to the rotation, the arm swung through the table's
+    angle from where its arc meets the prime circle, the roller circles."""
+    n, sg = len(th), f.sense
+    O = Vec(0.0, 0.0)
+    a = -sg * th
+    A = np.stack([f.pivot_distance * np.cos(a), f.pivot_distance * np.sin(a)])
+    pts, notes = [], []
+    label_every = max(1, n // 12)
+    for i in range(n):
+        pts.append(Point(f"A{i}", Role.PATH, CAM, _v(A[:, i])))
+        if i % label_every == 0:
+            notes.append(Note(f"station {i}", Role.LABEL, CAM, _v(A[:, i] * 1.08), f"{_deg(th[i])}\u00b0"))
+    rec = rec.then(f"Draw the pivot circle of radius $a about O and mark the arm's pivot A_i on it every $d, laid out "
+                   f"{opposite} -- opposite to the cam's rotation; A_0 is the pivot at 0 deg.",
+                   Circle("pivot circle", Role.CENTRE_LINE, CAM, O, f.pivot_distance, "pivot circle"), *pts, *notes,
+                   values={"a": Value("length", f.pivot_distance), "d": Value("angle", step)})
+    centres = ev.pitch
+    ents = []
+    for i in range(n):
+        ents.append(Segment(f"arm {i}", Role.AUXILIARY, CAM, _v(A[:, i]), _v(centres[:, i])))
+        ents.append(Point(f"P{i}", Role.PATH, CAM, _v(centres[:, i])))
+        ents.append(Circle(f"roller {i}", Role.AUXILIARY, CAM, _v(centres[:, i]), f.roller_radius))
+    rec = rec.then("From each pivot A_i strike an arc of the arm's length $l: where it meets the prime circle is the "
+                   "roller centre at zero lift; swing the arm about A_i through the tabulated angle, away from O, to "
+                   "the roller centre, and draw a roller circle of radius $rr about it.", *ents,
+                   values={"l": Value("length", f.arm_length), "rr": Value("length", f.roller_radius)})
+    return rec, centres
 
 
 __all__ = ["construct", "CamConstruction", "CAM"]

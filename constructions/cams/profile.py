@@ -40,8 +40,8 @@ import numpy as np
 
 from .laws import TAU, Program
 
-KNIFE, ROLLER, FLAT = "knife-edge", "roller", "flat-faced"
-FOLLOWERS = (KNIFE, ROLLER, FLAT)
+KNIFE, ROLLER, FLAT, OSCILLATING = "knife-edge", "roller", "flat-faced", "oscillating roller"
+FOLLOWERS = (KNIFE, ROLLER, FLAT, OSCILLATING)
 
 
 @dataclass(frozen=True, slots=True)
@@ -55,6 +55,10 @@ class Follower:
     roller_radius: float = 0.0
     offset: float = 0.0
     sense: int = 1
+    pivot_distance: float = 0.0
+    """Oscillating roller: the arm's pivot A at (pivot_distance, 0) from the cam centre."""
+    arm_length: float = 0.0
+    """Oscillating roller: the arm from its pivot to the roller centre; the program's lift is its swing (rad)."""
 
     def __post_init__(self) -> None:
         if self.kind not in FOLLOWERS:
@@ -63,12 +67,27 @@ class Follower:
             raise ValueError("the cam's sense is +1 (CCW) or -1 (CW)")
         if not self.base_radius > 0:
             raise ValueError("the base circle needs a positive radius")
-        if self.kind == ROLLER and not self.roller_radius > 0:
+        if self.kind in (ROLLER, OSCILLATING) and not self.roller_radius > 0:
             raise ValueError("a roller follower needs a positive roller radius")
-        if self.kind != ROLLER and self.roller_radius:
+        if self.kind not in (ROLLER, OSCILLATING) and self.roller_radius:
             raise ValueError(f"a {self.kind} follower has no roller")
         if self.kind != FLAT and abs(self.offset) >= self.prime_radius:
             raise ValueError("the offset must be smaller than the prime circle's radius")
+        if self.kind == OSCILLATING:
+            a, l, rp = self.pivot_distance, self.arm_length, self.prime_radius
+            if not (a > 0 and l > 0):
+                raise ValueError("an oscillating follower needs its pivot distance and arm length")
+            if not abs(a - l) < rp < a + l:
+                raise ValueError("the arm cannot reach the prime circle from its pivot: the prime circle's radius "
+                                 "must lie between |pivot distance - arm| and pivot distance + arm")
+            if self.offset:
+                raise ValueError("an oscillating follower has no offset (its pivot places it)")
+
+    @property
+    def gamma0(self) -> float:
+        """Oscillating roller: the arm's angle at zero lift (from +x, the arm above the line OA)."""
+        a, l, rp = self.pivot_distance, self.arm_length, self.prime_radius
+        return math.acos((rp * rp - a * a - l * l) / (2 * a * l))
 
     @property
     def prime_radius(self) -> float:
@@ -117,10 +136,20 @@ def evaluate(program: Program, f: Follower, theta) -> Evaluation:
         w = _rot(a, np.ones_like(th), np.zeros_like(th))
         prof = r * u + sg * d1 * w
         return Evaluation(th, s, d1, d2, d3, None, prof, np.zeros_like(th), None, f.base_radius + s + d2, u)
-    e, d0 = f.offset, f.d0
-    q = np.stack([np.full_like(th, e), d0 + s])
-    q1 = np.stack([np.zeros_like(th), d1])
-    q2 = np.stack([np.zeros_like(th), d2])
+    if f.kind == OSCILLATING:
+        # the roller centre B = A + l u(gamma0 - psi): the swing psi = s lifts it away from O
+        g = f.gamma0 - s
+        L = f.arm_length
+        u = np.stack([np.cos(g), np.sin(g)])
+        q = np.stack([f.pivot_distance + L * u[0], L * u[1]])
+        bpsi = -L * _J(u)                      # dB/dpsi
+        q1 = bpsi * d1
+        q2 = -L * u * d1 ** 2 + bpsi * d2
+    else:
+        e, d0 = f.offset, f.d0
+        q = np.stack([np.full_like(th, e), d0 + s])
+        q1 = np.stack([np.zeros_like(th), d1])
+        q2 = np.stack([np.zeros_like(th), d2])
     P = _rot(a, q[0], q[1])
     v1 = q1 - sg * _J(q)
     v2 = q2 - 2 * sg * _J(q1) - q
@@ -133,7 +162,13 @@ def evaluate(program: Program, f: Follower, theta) -> Evaluation:
     t = P1 / speed
     n = sg * _J(t)
     prof = P - f.roller_radius * n
-    phi = np.arctan2(d1 - sg * e, d0 + s)
+    if f.kind == OSCILLATING:
+        # between the common normal and the roller centre's path (square to the arm, the way of lift)
+        nf = _rot(-a, n[0], n[1])
+        dirn = -_J(u)
+        phi = sg * np.arctan2(dirn[0] * nf[1] - dirn[1] * nf[0], dirn[0] * nf[0] + dirn[1] * nf[1])
+    else:
+        phi = np.arctan2(d1 - sg * e, d0 + s)
     return Evaluation(th, s, d1, d2, d3, P, prof, phi, rho, rho - f.roller_radius, n)
 
 
@@ -267,7 +302,8 @@ class CamProfile:
 def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     th = np.linspace(0.0, TAU, samples, endpoint=False)
     ev = evaluate(program, f, th)
-    size = f.prime_radius + program.lift if f.kind != FLAT else f.base_radius + program.lift
+    size = (f.prime_radius + program.lift if f.kind in (KNIFE, ROLLER) else f.base_radius + program.lift
+            if f.kind == FLAT else max(f.prime_radius, f.pivot_distance + f.arm_length))
     phi_t, phi = extremum(program, lambda x: np.abs(evaluate(program, f, x).pressure_angle))
     phi = float(evaluate(program, f, np.array([phi_t])).pressure_angle[0])
     rp_t, rp = extremum(program, lambda x: evaluate(program, f, x).rho_profile if f.kind == FLAT else
@@ -291,7 +327,7 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
         lo = min(lo, extremum(program, lambda x: f.sense * program.derivatives(x)[1], largest=False)[1])
         hi = max(hi, extremum(program, lambda x: f.sense * program.derivatives(x)[1])[1])
         width = (lo, hi)
-    elif f.kind == ROLLER:
+    elif f.kind in (ROLLER, OSCILLATING):
         kt, kmax = extremum(program, lambda x: convex_curvature_pitch(program, f, x))
         min_pitch = (kt, 1.0 / kmax) if kmax > 0 else None
         if min_pitch is not None:
@@ -374,7 +410,7 @@ def _cross_point(a0, a1, b0, b1):
 
 
 __all__ = ["Follower", "KNIFE", "ROLLER", "FLAT", "FOLLOWERS", "evaluate", "analyse", "CamProfile", "Evaluation",
-           "extremum", "spans", "trim", "samples_for", "profile_points"]
+           "OSCILLATING", "extremum", "spans", "trim", "samples_for", "profile_points"]
 
 
 def samples_for(program: Program, f: Follower, tolerance: float, coarse: int = 720) -> int:
