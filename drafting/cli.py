@@ -107,34 +107,54 @@ def results_text(study: Study) -> str:
     return "\n".join(lines)
 
 
-def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper: str | None) -> int:
-    """Render every scene; a scene that fails is reported in one line and the others still render."""
+def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None) -> tuple[str | None, str]:
+    """Render one scene: ``(error, text)`` -- the one-line error (None when it rendered) and what to print
+    (its results and the files written)."""
     from .export import ExportError, write_sheets
     from .layout import LayoutError
-    failed = 0
-    for path in scenes:
+    try:
+        study = _solve(_study(path, paper))
         try:
-            study = _solve(_study(path, paper))
-            try:
-                sheet_formats = [f for f in formats if f != PAGE]
-                written = write_sheets(sheets_for(study), out, path.stem, sheet_formats) if sheet_formats else []
-                if PAGE in formats:
-                    from .html_page import write_page
-                    written.append(write_page(study, out, path.stem))
-            except ExportError as e:                  # names the output file it could not write
-                raise UserError(f"{path}: {e}") from None
-            except LayoutError as e:                  # the sheet: the paper is what the user can change
-                raise UserError(f"{path}: drawing.paper: {e}") from None
-            except ConstructionError as e:            # raised while drawing: told at its position
-                raise UserError(f"{path}: {_located(study, e)}") from None
-        except UserError as e:
-            print(f"drafting: error: {e}", file=sys.stderr)
+            sheet_formats = [f for f in formats if f != PAGE]
+            written = write_sheets(sheets_for(study), out, path.stem, sheet_formats) if sheet_formats else []
+            if PAGE in formats:
+                from .html_page import write_page
+                written.append(write_page(study, out, path.stem))
+        except ExportError as e:                  # names the output file it could not write
+            raise UserError(f"{path}: {e}") from None
+        except LayoutError as e:                  # the sheet: the paper is what the user can change
+            raise UserError(f"{path}: drawing.paper: {e}") from None
+        except ConstructionError as e:            # raised while drawing: told at its position
+            raise UserError(f"{path}: {_located(study, e)}") from None
+    except UserError as e:
+        return str(e), ""
+    return None, "\n".join([results_text(study)] + [f"  wrote {w}" for w in written])
+
+
+def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper: str | None) -> int:
+    """Render every scene; a scene that fails is reported in one line and the others still render; a
+    progress bar on a terminal when there are several."""
+    from .progress import Progress
+    bar = Progress(len(scenes), "render")
+    bar.shown = len(scenes) >= 2 and _is_tty(sys.stderr)
+    failed = 0
+    for k, path in enumerate(scenes):
+        err, text = render_one(Path(path), out, formats, paper)
+        if err is not None:
+            print(f"drafting: error: {err}", file=sys.stderr)
             failed += 1
-            continue
-        print(results_text(study))
-        for w in written:
-            print(f"  wrote {w}")
+        else:
+            print(text)
+        bar.update(k + 1)
+    bar.finish()
     return 2 if failed else 0
+
+
+def _is_tty(stream) -> bool:
+    try:
+        return bool(getattr(stream, "unescaped", stream).isatty())
+    except (AttributeError, ValueError):
+        return False
 
 
 def cmd_solve(path: Path, as_json: bool, csv_path: Path | None = None) -> int:

@@ -372,3 +372,14 @@ def test_an_undeclared_fixed_pivot_is_named(tmp_path, capsys):
     code, out, err = run(["solve", str(p)], capsys)
     assert code == 2 and "O2 is held by link 3 only: join it to another link, put it on a slider, or " \
         "declare it a fixed pivot" in err
+
+
+def test_rendering_several_scenes_shows_progress_on_a_terminal_only(tmp_path, capsys, monkeypatch):
+    from drafting import cli as c
+    scenes = [str(GALLERY / "notes-velocity-example-1.toml"), str(GALLERY / "notes-velocity-example-2.toml")]
+    assert main(["render", *scenes, "-o", str(tmp_path), "--format", "svg"]) == 0
+    assert "%" not in capsys.readouterr().err
+    monkeypatch.setattr(c, "_is_tty", lambda stream: True)
+    assert main(["render", *scenes, "-o", str(tmp_path), "--format", "svg"]) == 0
+    err = capsys.readouterr().err
+    assert "\rrender [" in err and "100.0 %" in err
