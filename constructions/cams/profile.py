@@ -194,24 +194,6 @@ def _bisect(g, a: float, b: float, ga: float, it: int = 80) -> float:
     return 0.5 * (a + b)
 
 
-def _golden_max(g, a: float, b: float, it: int = 100) -> float:
-    r = (math.sqrt(5) - 1) / 2
-    c, d = b - r * (b - a), a + r * (b - a)
-    gc, gd = g(c), g(d)
-    for _ in range(it):
-        if gc > gd:
-            b, d, gd = d, c, gc
-            c = b - r * (b - a)
-            gc = g(c)
-        else:
-            a, c, gc = c, d, gd
-            d = a + r * (b - a)
-            gd = g(d)
-        if b - a < 1e-13:
-            break
-    return 0.5 * (a + b)
-
-
 def segment_breaks(program: Program) -> np.ndarray:
     """The cam angles where the program's pieces meet (segment joins and laws' inner joins)."""
     return np.array(sorted({0.0, TAU} | {j.theta for j in program.joins()} | set(program.starts)))
@@ -224,7 +206,7 @@ def _grid(program: Program, per_piece: int) -> list[np.ndarray]:
 
 def extremum(program: Program, fn, *, per_piece: int = 256, largest: bool = True) -> tuple[float, float]:
     """The cam angle and value of the largest (or smallest) of ``fn(theta)`` (a vectorised function)
-    over the turn: a grid in every piece of the program, refined by golden section."""
+    over the turn: a grid in every piece of the program, refined by narrowing grids round the best."""
     best = (None, -math.inf)
     sgn = 1.0 if largest else -1.0
     for g in _grid(program, per_piece):
@@ -232,9 +214,17 @@ def extremum(program: Program, fn, *, per_piece: int = 256, largest: bool = True
         v = np.where(np.isfinite(v), v, -math.inf)
         k = int(np.argmax(v))
         lo, hi = g[max(k - 1, 0)], g[min(k + 1, len(g) - 1)]
-        scalar = lambda x: float(sgn * fn(np.array([x]))[0])   # noqa: E731
-        x = _golden_max(scalar, lo, hi) if hi > lo else g[k]
-        cand = max(((x, scalar(x)), (g[k], v[k])), key=lambda p: p[1])
+        cand = (g[k], v[k])
+        for _ in range(8):                  # each round narrows the bracket 16-fold (vectorised)
+            if not hi > lo:
+                break
+            x = np.linspace(lo, hi, 33)
+            w = sgn * np.asarray(fn(x), dtype=float)
+            w = np.where(np.isfinite(w), w, -math.inf)
+            j = int(np.argmax(w))
+            if w[j] >= cand[1]:
+                cand = (x[j], w[j])
+            lo, hi = x[max(j - 1, 0)], x[min(j + 1, 32)]
         if cand[1] > best[1]:
             best = cand
     return float(best[0]), float(sgn * best[1])
