@@ -142,3 +142,16 @@ def test_oscillating_scene():
     text = BASE.replace('type = "roller"', 'type = "oscillating roller"\npivot_distance = "90 mm"\narm_length = "70 mm"')
     with pytest.raises(SceneError, match="segment\\[1\\].lift"):       # a swing is an angle, not a length
         parse_scene(text, "cam.toml")
+
+
+def test_harmonic_example_knife_edge():
+    s = study("notes-harmonic-example.toml")
+    assert all(c.agrees for c in s.comparisons)
+    m = s.scene.model
+    import numpy as np
+    _, d1, d2, _ = m.program.derivatives(np.array([math.radians(150), math.radians(285)]))
+    assert d1[0] / 0.0254 == pytest.approx(1.2, rel=1e-12) and d1[1] / 0.0254 == pytest.approx(-0.48, rel=1e-12)
+    jumps = {round(math.degrees(j.theta), 6): j.jumps[1] / 0.0254 for j in m.program.joins()}
+    assert jumps[120.0] == pytest.approx(3.6) and jumps[180.0] == pytest.approx(3.6)
+    assert jumps[210.0] == pytest.approx(-0.576) and jumps[0.0] == pytest.approx(-0.576)
+    assert "above the usual 30 deg" in " ".join(s.warnings)
