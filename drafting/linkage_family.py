@@ -49,7 +49,11 @@ def _transmission_at_pose(study) -> float | None:
 
 def _position(study):
     s = study.scene
-    return locate(s.mechanism, s.angle, assembly_plan(s.mechanism), fmt=s.units.format)
+    pose = locate(s.mechanism, s.angle, assembly_plan(s.mechanism), fmt=s.units.format)
+    if s.dimensions:
+        from constructions.dimensions import dimension_links
+        pose = replace(pose, construction=dimension_links(s.mechanism, pose))
+    return pose
 
 
 def _velocity(study):

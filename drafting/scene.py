@@ -69,6 +69,7 @@ class Scene:
     torque: float | None = None   # torque on the crank, N m CCW positive: alpha follows from it (not given)
     model: Any = None
     effects: Effects = NO_EFFECTS
+    dimensions: bool = False   # [drawing] dimensions: the space diagram dimensioned as a drafter would
 
     def _repr_html_(self) -> str:
         """Jupyter: what the scene is (a Study shows what it gives)."""
@@ -259,7 +260,7 @@ class _Reader:
         unknown = sorted(set(self.data) - allowed)
         if unknown:
             raise self.fail(unknown[0], f"unknown key; a {kind} scene has {', '.join(sorted(allowed))}")
-        drawing = self.table("drawing", {"title", "number", "paper", "orientation"})
+        drawing = self.table("drawing", {"title", "number", "paper", "orientation", "dimensions"})
         title = self.text("drawing.title", drawing.get("title", self.path.stem))
         number = self.text("drawing.number", drawing.get("number", "TOM-000"))
         paper = drawing.get("paper", "A4")
@@ -268,6 +269,9 @@ class _Reader:
         orientation = drawing.get("orientation", "landscape")
         if orientation not in ORIENTATIONS:
             raise self.fail("drawing.orientation", f"{orientation!r} must be landscape or portrait")
+        dimensions = drawing.get("dimensions", False)
+        if not isinstance(dimensions, bool):
+            raise self.fail("drawing.dimensions", "must be true or false (dimension the space diagram)")
         units = self.units()
         state = fam.read(self, units)
         ask = self.table("ask", {"analyses", "find"})
@@ -284,7 +288,7 @@ class _Reader:
         if find is not None and (not isinstance(find, list) or not all(isinstance(f, str) for f in find)):
             raise self.fail("ask.find", "must be a list of quantities, e.g. [\"V_C\", \"omega_2\"]")
         return Scene(self.path, title, number, paper, orientation, units, tuple(dict.fromkeys(analyses)),
-                     tuple(find) if find is not None else None, kind, **state)
+                     tuple(find) if find is not None else None, kind, dimensions=dimensions, **state)
 
     def units(self) -> Units:
         t = self.table("units", set(UNIT_KEYS))
