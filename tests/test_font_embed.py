@@ -43,3 +43,18 @@ def test_a_title_beyond_the_repertoire_brings_its_glyphs():
                                         f'title = "{extra}"'))
     faces = _faces(study.sheets()[0].svg())
     assert {ord(c) for c in extra} <= faces["normal"]
+
+
+def test_the_subset_is_the_same_bytes_whatever_the_clock(monkeypatch):
+    """The font keeps its own date (no timestamp of the run): a sheet's SVG is reproducible, and an empty
+    SOURCE_DATE_EPOCH does not break it."""
+    from drafting.font_embed import FONTS, _subset
+    chars = frozenset("Space diagram 1:5")
+    got = []
+    for epoch in ("", "0", "1795392000", None):
+        if epoch is None:
+            monkeypatch.delenv("SOURCE_DATE_EPOCH", raising=False)
+        else:
+            monkeypatch.setenv("SOURCE_DATE_EPOCH", epoch)
+        got.append(_subset(FONTS / "DejaVuSans.ttf", chars))
+    assert len(set(got)) == 1
