@@ -112,7 +112,10 @@ def _notes(study) -> tuple[str, ...]:
         out.append(f"Smallest radius of curvature of the pitch curve (convex): {u.format('length', rho)} at "
                    f"{u.format('angle', t)}; the roller must be smaller.")
     t, rho = cp.min_rho_profile
-    out.append(f"Smallest radius of curvature of the profile: {u.format('length', rho)} at {u.format('angle', t)}.")
+    what = ("where the pitch curve is convex" if f.kind in (ROLLER, OSCILLATING) else "")
+    loops = " (negative: the exact envelope loops back there; the profile drawn is trimmed)" if rho < 0 else ""
+    out.append(f"Smallest radius of curvature of the profile{' ' + what if what else ''}: {u.format('length', rho)} at "
+               f"{u.format('angle', t)}{loops}.")
     if f.kind == FLAT:
         lo, hi = cp.face_width
         out.append(f"Smallest base radius for a flat face (r_b + s + s'' > 0): {u.format('length', cp.min_base_radius)}"

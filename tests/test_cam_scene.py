@@ -45,6 +45,7 @@ def test_undercut_scene_warns_with_angles_and_json(capsys):
     s = study("roller-cam-undercut.toml")
     w = " ".join(s.warnings)
     assert "Undercut" in w and "deg to" in w
+    assert "loops back there" in " ".join(s.notes)
     assert main(["solve", str(GALLERY / "roller-cam-undercut.toml"), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     spans = data["profile"]["undercut"]
