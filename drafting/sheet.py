@@ -243,6 +243,9 @@ def _units_summary(units: Units, construction: Construction, panels: Sequence[Pa
     for s in construction.steps:
         for _, v in s.values:
             present.add(v.kind)
+    for e in construction.entities():                  # charts: the units of their series
+        for series in getattr(e, "series", ()):
+            present.add(series.y_kind)
     if "velocity" in present:
         present.add("angular velocity")
     if "acceleration" in present:
