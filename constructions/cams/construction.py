@@ -156,30 +156,24 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
         names[f"P_{tag}"] = i
         measured.append(Measured(f"C_{tag}", "length", _v(contacts[:, i])))
         names[f"C_{tag}"] = i
-    if osc:
-        # the angle between the roller centre's path (square to the arm) and the roller's radius to its contact
-        A = np.stack([f.pivot_distance * np.cos(-sg * th), f.pivot_distance * np.sin(-sg * th)])
-        arm = centres - A
-        px, py = arm[1], -arm[0]                         # square to the arm, the way the swing lifts
+    if osc or f.kind == ROLLER:
+        # the angle between the direction the roller centre is driven (square to the arm, or along the
+        # follower's line) and the roller's radius to its contact point
+        if osc:
+            A = np.stack([f.pivot_distance * np.cos(-sg * th), f.pivot_distance * np.sin(-sg * th)])
+            arm = centres - A
+            px, py = arm[1], -arm[0]                     # square to the arm, the way the swing lifts
+            path = "the roller centre's path (square to the arm)"
+        else:
+            px, py = np.sin(sg * th), np.cos(sg * th)    # the follower's axis at each station (cam frame)
+            path = "the follower's line"
         rx, ry = centres[0] - contacts[0], centres[1] - contacts[1]
         phis = np.arctan2(px * ry - py * rx, px * rx + py * ry) * sg
         k = int(np.argmax(np.abs(phis)))
         measured.append(Measured("phi_max", "angle", float(phis[k])))
         names["phi_max"] = k
-        rec = rec.then("The pressure angle, read at each station between the roller centre's path (square to the arm) "
-                       "and the roller's radius to its contact point, is largest at station $t: $phi.",
-                       values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
-                       kind=StepKind.ANSWER)
-    elif f.kind == ROLLER:
-        # the angle between the follower's line and the roller's radius to its contact point
-        ux, uy = np.sin(sg * th), np.cos(sg * th)      # the follower's axis at each station (cam frame)
-        rx, ry = centres[0] - contacts[0], centres[1] - contacts[1]
-        phis = np.arctan2(ux * ry - uy * rx, ux * rx + uy * ry) * sg
-        k = int(np.argmax(np.abs(phis)))
-        measured.append(Measured("phi_max", "angle", float(phis[k])))
-        names["phi_max"] = k
-        rec = rec.then("The pressure angle, read at each station between the follower's line and the roller's "
-                       "radius to its contact point, is largest at station $t: $phi.",
+        rec = rec.then(f"The pressure angle, read at each station between {path} and the roller's radius to its "
+                       f"contact point, is largest at station $t: $phi.",
                        values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
                        kind=StepKind.ANSWER)
     elif f.kind == KNIFE:
