@@ -13,22 +13,18 @@ from __future__ import annotations
 
 import csv
 import io
-import itertools
 import math
-import os
 from pathlib import Path
 
 import numpy as np
 
-from . import faults, limits
+from . import limits
 from .progress import Progress
 from .scene import SceneError, load_scene
 from .textsafe import printable
 from .units import UnitError, to_si, unit_symbol
 
 DEFAULT_STEPS = 72
-TEMP_PREFIX = ".drafting-tmp-"
-_counter = itertools.count()
 
 
 class SweepInputError(Exception):
@@ -133,23 +129,13 @@ def write_csv(path: Path, header: list[str], values: np.ndarray) -> None:
             bar.update(i)
     bar.finish()
     data = buf.getvalue().encode("utf-8")
-    tmp = folder / f"{TEMP_PREFIX}{os.getpid()}-{next(_counter)}-{path.name[:40]}.csv"
-    faults.track(tmp)
+    from .export import ExportError, write_outputs
     try:
         if path.is_dir():
-            raise IsADirectoryError(21, "Is a directory")
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0), 0o666)
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-        os.replace(tmp, path)
-    except OSError as e:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise SweepInputError(f"Cannot write {printable(str(path))}: {e.strerror or type(e).__name__}.") from None
-    finally:
-        faults.untrack(tmp)
+            raise ExportError(f"Cannot write {printable(str(path))}: it is a folder.")
+        write_outputs(folder, path.stem, [(path, lambda: data)])
+    except ExportError as e:
+        raise SweepInputError(str(e)) from None
 
 
 def _fmt(v: float) -> str:
