@@ -11,21 +11,20 @@ cam frame at cam angle 0 (the follower's axis along +y), centred on the cam's ax
   on layer ``NOTES``.
 
 Usage: ``python -m drafting.cam_export SCENE -o DIR [--tolerance 1e-6]`` (relative to the cam's size).
-Every file is written atomically (a temporary file in the same folder, then renamed).
+Both files are written together or not at all (drafting.export.write_outputs).
 """
 
 from __future__ import annotations
 
 import argparse
-import os
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from constructions.cams.profile import analyse, profile_points, trim
 
+from .export import ExportError, prepare_folder, write_outputs
 from .scene import SceneError, load_scene
 
 INSUNITS = {"mm": 4, "millimeter": 4, "cm": 5, "centimeter": 5, "m": 6, "meter": 6, "in": 1, "inch": 1,
@@ -44,18 +43,6 @@ def profile_for_export(model, tolerance_rel: float = 1e-6) -> tuple[np.ndarray, 
         cp.samples = evaluate(p, f, np.linspace(0.0, TAU, n, endpoint=False))
         pts = trim(cp)
     return pts, tol
-
-
-def _atomic_write(path: Path, data: bytes) -> None:
-    fd, tmp = tempfile.mkstemp(prefix=".drafting-tmp-", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
 
 
 def csv_text(scene, pts: np.ndarray, tol: float) -> str:
@@ -100,16 +87,10 @@ def export(scene_path: str | Path, out_dir: str | Path, tolerance_rel: float = 1
         raise SceneError(scene.path, "kind", f"is {scene.kind!r}; only a cam scene has a profile to export")
     pts, tol = profile_for_export(scene.model, tolerance_rel)
     out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    stem = Path(scene_path).stem
-    written = []
-    p = out / f"{stem}-profile.csv"
-    _atomic_write(p, csv_text(scene, pts, tol).encode("utf-8"))
-    written.append(p)
-    p = out / f"{stem}-profile.dxf"
-    _atomic_write(p, dxf_bytes(scene, pts, tol))
-    written.append(p)
-    return written
+    prepare_folder(out)
+    stem = f"{Path(scene_path).stem}-profile"
+    return write_outputs(out, stem, [(out / f"{stem}.csv", lambda: csv_text(scene, pts, tol).encode("utf-8")),
+                                     (out / f"{stem}.dxf", lambda: dxf_bytes(scene, pts, tol))])
 
 
 def main(argv=None) -> int:
@@ -123,7 +104,7 @@ def main(argv=None) -> int:
     try:
         for p in export(a.scene, a.out, a.tolerance):
             print(f"wrote {p}")
-    except SceneError as e:
+    except (SceneError, ExportError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     return 0

@@ -164,11 +164,11 @@ def cmd_solve(path: Path, as_json: bool, csv_path: Path | None = None) -> int:
     else:
         print(results_text(study))
     if csv_path is not None:
-        from .export import ExportError, _prepare_folder, write_outputs
+        from .export import ExportError, prepare_folder, write_outputs
         from .study import results_csv
         folder = csv_path.parent if str(csv_path.parent) else Path(".")
         try:
-            _prepare_folder(folder)
+            prepare_folder(folder)
             write_outputs(folder, csv_path.stem, [(csv_path, lambda: results_csv(study).encode("utf-8"))])
         except ExportError as e:
             raise UserError(f"{path}: --csv: {e}") from None

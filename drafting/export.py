@@ -189,7 +189,7 @@ def _show(path: Path) -> str:
 
 # -- writing -------------------------------------------------------------------------------------------
 
-def _prepare_folder(out_dir: Path) -> None:
+def prepare_folder(out_dir: Path) -> None:
     try:
         out_dir.mkdir(parents=True, exist_ok=True)
     except OSError as e:
@@ -237,7 +237,7 @@ def write_sheets(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, format
         raise ExportError(f"Cannot write {_show(out_dir / stem)}: the file stem must be a plain file name.")
     if not sheets:
         raise ExportError(f"Cannot write {_show(out_dir / stem)}: there is no sheet to write.")
-    _prepare_folder(out_dir)
+    prepare_folder(out_dir)
     remove_stale_temporaries(out_dir)
 
     # every final name, checked before anything is written

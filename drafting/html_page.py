@@ -16,7 +16,7 @@ import json
 import re
 from pathlib import Path
 
-from .export import ExportError, _prepare_folder, write_outputs
+from .export import ExportError, prepare_folder, write_outputs
 from .paper import Command
 from .sheet import step_text
 from .svg import sheet_to_svg
@@ -133,7 +133,7 @@ def page_html(study) -> str:
 def write_page(study, out_dir: Path | str, stem: str) -> Path:
     """Write ``out_dir/stem.html`` atomically; raises ExportError naming the path."""
     out_dir = Path(out_dir)
-    _prepare_folder(out_dir)
+    prepare_folder(out_dir)
     final = out_dir / f"{stem}.html"
     (written,) = write_outputs(out_dir, stem, [(final, lambda: page_html(study).encode("utf-8"))])
     return written
