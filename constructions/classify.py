@@ -28,6 +28,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .errors import ConstructionError
 from .geometry import Circle, Contact, Vec, intersect_circles
 from .linkage import CrankTip, Mechanism, TwoCircles, assembly_plan, mobility
 
@@ -170,7 +171,6 @@ def classify_loops(m: Mechanism) -> tuple[Loop, ...]:
     point of a link that turns about a fixed pivot of its own (a rocker driving a second rocker, as in a
     Watt or Stephenson six-bar), classified as a four-bar with that link as its input.  The input's own
     swing may be less than a turn, so "turns fully" is what the loop's lengths allow."""
-    from dataclasses import replace as _replace
     from .linkage import Branch, Link
     out = []
     first = classify_four_bar(m)
@@ -202,8 +202,8 @@ def classify_loops(m: Mechanism) -> tuple[Loop, ...]:
                             {step.joint: Branch(b.sign, b.reference)})
             try:
                 got = classify_four_bar(sub)
-            except Exception:                      # a loop the four-bar rules cannot read: leave it out
+            except ConstructionError:              # a loop the four-bar rules cannot read: leave it out
                 continue
             if got is not None:
-                out.append(Loop(k.number, step.joint, _replace(got)))
+                out.append(Loop(k.number, step.joint, got))
     return tuple(out)
