@@ -19,9 +19,10 @@ How the files are kept whole, whatever happens:
 - Leftovers of an earlier run that was killed (``kill -9``, a power cut) are removed by the next run
   that writes into the folder: temporary files whose process is gone, or that are older than an hour.
 
-cairosvg converts the SVG; the SVG is sized in mm (1 user unit = 1 mm), so the PDF page is exactly the
-paper size and a length of 100 mm on the sheet is 100 mm on the printed PDF.  The pages of a
-multi-page PDF are drawn by cairosvg one after the other onto one cairo PDF surface.
+The SVG is written by :mod:`drafting.svg`; the PDF and PNG are the same commands drawn with cairo by
+:mod:`drafting.cairo_out` (not the SVG parsed back).  Every sheet is sized in mm, so the PDF page is
+exactly the paper size and a length of 100 mm on the sheet is 100 mm on the printed PDF; the pages of
+a multi-page PDF are the pages of one cairo PDF surface.
 """
 
 from __future__ import annotations
@@ -35,7 +36,7 @@ import time
 from pathlib import Path
 from typing import Callable, Sequence
 
-from . import faults
+from . import cairo_out, faults
 from .sheet import Sheet
 from .svg import sheet_to_svg
 from .textsafe import printable
@@ -52,61 +53,27 @@ class ExportError(Exception):
     """An output file or folder cannot be written; the message names the path."""
 
 
-FONTS_CONF = Path(__file__).resolve().parent / "fonts" / "fonts.conf"
+def _convert_pdf_pages(sheets: Sequence[Sheet], fh) -> None:
+    """One PDF with a page per sheet, drawn with cairo straight from the commands (drafting.cairo_out)."""
+    fh.write(cairo_out.sheets_to_pdf(sheets))
 
 
-def _cairosvg():
-    """cairosvg, with fontconfig told about the bundled DejaVu Sans before cairo first looks for fonts,
-    so the PDF/PNG are set in the font the layout measured with (a user's FONTCONFIG_FILE wins)."""
-    os.environ.setdefault("FONTCONFIG_FILE", str(FONTS_CONF))
-    import cairosvg
-    return cairosvg
-
-
-def _convert_pdf(svg: bytes, fh) -> None:
-    fh.write(_reproducible(_cairosvg().svg2pdf(bytestring=svg)))
-
-
-def _convert_pdf_pages(svgs: Sequence[bytes], fh) -> None:
-    """One PDF with a page per SVG: cairosvg draws each onto one shared cairo PDF surface."""
-    if len(svgs) == 1:
-        _convert_pdf(svgs[0], fh)
-        return
-    _cairosvg()
-    from cairosvg.parser import Tree
-    from cairosvg.surface import PDFSurface, cairo
-
-    shared: list = []
-
-    class _Page(PDFSurface):
-        def _create_surface(self, width, height):
-            if not shared:
-                shared.append(cairo.PDFSurface(self.output, width, height))
-            else:
-                shared[0].set_size(width, height)
-            return shared[0], width, height
-
-    out = io.BytesIO()
-    for svg in svgs:
-        page = _Page(Tree(bytestring=svg), out, 96)
-        page.context.show_page()
-    shared[0].finish()
-    fh.write(_reproducible(out.getvalue()))
-
-
-def _reproducible(pdf: bytes) -> bytes:
-    """With SOURCE_DATE_EPOCH set (the reproducible-builds convention), the PDF's creation date is that
-    moment, so the same sheet gives the same bytes; cairo itself stamps the wall clock.  The stamp keeps
-    its length, so the cross-reference offsets stay valid."""
-    epoch = os.environ.get("SOURCE_DATE_EPOCH")
-    if not epoch or not epoch.isdigit():
-        return pdf
+def _dated(pdf: bytes, epoch: int) -> bytes:
+    """The PDF with its creation date set to ``epoch`` (seconds since 1970; a batch passes one moment to
+    every worker, so the same seed gives the same bytes).  The stamp keeps its length, so the
+    cross-reference offsets stay valid."""
     stamp = time.strftime("D:%Y%m%d%H%M%SZ", time.gmtime(int(epoch))).encode()
     return re.sub(rb"/CreationDate \(D:\d{14}Z\)", b"/CreationDate (" + stamp + b")", pdf, count=1)
 
 
-def _convert_png(svg: bytes, fh, dpi: float) -> None:
-    _cairosvg().svg2png(bytestring=svg, write_to=fh, dpi=dpi)
+def source_date_epoch() -> int | None:
+    """SOURCE_DATE_EPOCH (the reproducible-builds convention) as whole seconds, or None when unset."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    return int(epoch) if epoch.isdigit() else None
+
+
+def _convert_png(sheet: Sheet, fh, dpi: float) -> None:
+    fh.write(cairo_out.sheet_to_png(sheet, dpi))
 
 
 # -- temporary files -----------------------------------------------------------------------------------
@@ -222,14 +189,27 @@ def output_names(n_sheets: int, stem: str, formats: Sequence[str]) -> list[str]:
 
 
 def write_sheets(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, formats: Sequence[str] = FORMATS, *,
-                 dpi: float = PNG_DPI) -> list[Path]:
+                 dpi: float = PNG_DPI, epoch: int | None = None) -> list[Path]:
     """Write the sheets of one scene; returns the paths written, in the order of ``formats``.
 
     One sheet gives ``stem.svg`` / ``stem.pdf`` / ``stem.png``; n > 1 sheets give ``stem-1.svg`` ..
     ``stem-n.svg``, one ``stem.pdf`` of n pages and ``stem-1.png`` .. ``stem-n.png`` (``dpi`` sets the
-    PNG resolution).  All files appear together or not at all (module docstring); any failure is an
+    PNG resolution; ``epoch``, seconds since 1970, the PDF's creation date -- else SOURCE_DATE_EPOCH,
+    else the clock).  All files appear together or not at all (module docstring); any failure is an
     :class:`ExportError` naming the path.
     """
+    out_dir = Path(out_dir)
+    plan = sheet_plan(sheets, out_dir, stem, formats, dpi=dpi, epoch=epoch)
+    prepare_folder(out_dir)
+    remove_stale_temporaries(out_dir)
+    return write_outputs(out_dir, stem, plan)
+
+
+def sheet_plan(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, formats: Sequence[str] = FORMATS, *,
+               dpi: float = PNG_DPI, epoch: int | None = None) -> list[tuple[Path, Callable[[], bytes]]]:
+    """The ``(final path, produce)`` pairs :func:`write_sheets` writes for one document, every final name
+    checked first; several documents' plans may go to one :func:`write_outputs` call (a lab sheet, its
+    worked solution and its key are written together or not at all)."""
     out_dir = Path(out_dir)
     sheets = list(sheets)
     fmts = _formats(formats, out_dir, stem)
@@ -237,8 +217,6 @@ def write_sheets(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, format
         raise ExportError(f"Cannot write {_show(out_dir / stem)}: the file stem must be a plain file name.")
     if not sheets:
         raise ExportError(f"Cannot write {_show(out_dir / stem)}: there is no sheet to write.")
-    prepare_folder(out_dir)
-    remove_stale_temporaries(out_dir)
 
     # every final name, checked before anything is written
     n = len(sheets)
@@ -248,10 +226,7 @@ def write_sheets(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, format
             plan.append((f, out_dir / f"{stem}.{f}", None if f == "pdf" else 0))
         else:
             plan += [(f, out_dir / f"{stem}-{k + 1}.{f}", k) for k in range(n)]
-    for _, final, _ in plan:
-        if os.path.isdir(final):
-            raise ExportError(f"Cannot write {_show(final)}: a folder has that name; nothing of "
-                              f"{printable(stem)} was written.")
+    check_names([final for _, final, _ in plan], stem)
 
     svgs = [sheet_to_svg(s).encode("utf-8") for s in sheets]
 
@@ -261,12 +236,21 @@ def write_sheets(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, format
             if f == "svg":
                 buf.write(svgs[page])
             elif f == "pdf":
-                _convert_pdf_pages(svgs, buf)
+                _convert_pdf_pages(sheets, buf)
             else:
-                _convert_png(svgs[page], buf, dpi)
-        return buf.getvalue()
+                _convert_png(sheets[page], buf, dpi)
+        data = buf.getvalue()
+        return _dated(data, epoch) if f == "pdf" and epoch is not None else data
 
-    return write_outputs(out_dir, stem, [(final, (lambda f=f, page=page: produce(f, page))) for f, final, page in plan])
+    return [(final, (lambda f=f, page=page: produce(f, page))) for f, final, page in plan]
+
+
+def check_names(finals: Sequence[Path], stem: str) -> None:
+    """Refuse the whole document when a folder has one of its final names (before anything is written)."""
+    for final in finals:
+        if os.path.isdir(final):
+            raise ExportError(f"Cannot write {_show(final)}: a folder has that name; nothing of "
+                              f"{printable(stem)} was written.")
 
 
 def write_outputs(out_dir: Path, stem: str, plan: Sequence[tuple[Path, Callable[[], bytes]]]) -> list[Path]:
