@@ -186,8 +186,11 @@ def step_text(step: Step, fmt: SheetFormatter) -> str:
 
 
 def _sections(construction: Construction, results: Sequence[ResultRow], notes: Sequence[str],
-              fmt: SheetFormatter) -> list[L.Section]:
+              fmt: SheetFormatter, given: Sequence[str] = ()) -> list[L.Section]:
     secs: list[L.Section] = []
+    if given:
+        secs.append(L.Section("Given", tuple(
+            L.Paragraph(t, label="\u2013", label_chars="\u2013", name=f"given {i + 1}") for i, t in enumerate(given))))
     eqs = construction.equations
     if eqs:
         items: list[L.Item] = [L.EquationItem(eq, name=f"equation {i + 1}") for i, eq in enumerate(eqs)]
@@ -269,20 +272,24 @@ def _units_summary(units: Units, construction: Construction, panels: Sequence[Pa
 # ---- the document ---------------------------------------------------------------------------------
 
 def compose_sheets(construction: Construction, info: SheetInfo, results: Sequence[ResultRow] = (), *,
-                   values: ValueHook | None = None) -> tuple[Sheet, ...]:
+                   values: ValueHook | None = None, panel_hook=None, given: Sequence[str] = ()) -> tuple[Sheet, ...]:
     """Lay out ``construction`` with its ``results`` on as few sheets as hold it legibly.
 
     ``values(value, default)`` may rewrite how a step value is written (``default(value)`` is the
-    worked-solution text), e.g. a blank for answers on a lab sheet.  Raises :class:`LayoutError` only
-    when one block cannot fit an empty sheet of the paper in ``info``.
+    worked-solution text), e.g. a blank for answers on a lab sheet; ``panel_hook(panels)`` may replace the
+    diagram panels before they are packed (a problem sheet frames its polygon panels empty); ``given``
+    lines are set first under "Given" (a problem sheet's data).  Raises
+    :class:`LayoutError` only when one block cannot fit an empty sheet of the paper in ``info``.
     """
     pp = make_paper(info.paper, info.orientation)
     units = info.units
     cache = PanelCache()
     entity_fmt = SheetFormatter(units, {}, values)
     panels = panels_for(construction, units, cache, _entity_text(construction, entity_fmt))
+    if panel_hook is not None:
+        panels = list(panel_hook(panels))
     probe = SheetFormatter(units, {}, values, probe=True)
-    sections = _sections(construction, results, info.notes, probe)
+    sections = _sections(construction, results, info.notes, probe, given)
     summary = _units_summary(units, construction, panels)
     frame = pp.frame
 
@@ -305,7 +312,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     doc = plan_document(pp, panels, sections, tb_height, cache=text_cache)
     scales = {p.key: p.scale(r) for pg in doc.pages for p, r, _ in pg.panels if p.scale(r) is not None}
     fmt = SheetFormatter(units, scales, values)
-    real = _sections(construction, results, info.notes, fmt)
+    real = _sections(construction, results, info.notes, fmt, given)
     text_cmds, size = _reflow(real, doc, text_cache)
     m = doc.count
     first = info.sheet if m == 1 else None
