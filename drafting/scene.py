@@ -29,8 +29,10 @@ PLANNED_KINDS = (
 PAPERS = ("A4", "A3")
 ORIENTATIONS = ("landscape", "portrait")
 
-COMMON_KEYS = frozenset({"kind", "drawing", "units", "ask"})
-"""The sections every scene family shares; each family adds its own (Family.sections)."""
+COMMON_KEYS = frozenset({"kind", "drawing", "units", "ask", "vary"})
+"""The sections every scene family shares; each family adds its own (Family.sections).  ``[vary]`` (the
+ranges a batch of lab sheets draws from: :mod:`drafting.vary`) is checked here and otherwise left to
+``drafting batch``."""
 
 
 class SceneError(Exception):
@@ -273,6 +275,9 @@ class _Reader:
         if not isinstance(dimensions, bool):
             raise self.fail("drawing.dimensions", "must be true or false (dimension the space diagram)")
         units = self.units()
+        if "vary" in self.data:
+            from .vary import read_vary
+            read_vary(self.data, self.path, units)
         state = fam.read(self, units)
         ask = self.table("ask", {"analyses", "find"})
         analyses = ask.get("analyses", list(fam.default_analyses))
