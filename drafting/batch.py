@@ -57,46 +57,59 @@ def variant_stem(stem: str, index: int) -> str:
     return f"{stem}-v{index:03d}"
 
 
-def run_variant(job: VariantJob) -> VariantResult:
-    """Draw, solve and write one variant (runs in a worker)."""
+def variant_study(data: dict, path: Path, seed: int, index: int, notes: list[str] | None = None):
+    """The solved study of variant ``index`` of seed ``seed`` (its scene dimensioned, as a lab draws it)
+    and its varied values ``[(header, value)]``, or ``(None, [])`` when no draw of :data:`TRIES` can be
+    drawn.  Each draw drawn again is told in ``notes``."""
     import numpy as np
     from constructions.errors import ConstructionError
-    from .export import ExportError
-    from .errors import LayoutError
-    from .lab import dimensioned, lab_for, lab_plan
+    from .lab import dimensioned
     from .scene import SceneError, scene_from_data
     from .study import Study
-    from .units import UnitError  # noqa: F401  (the reader's errors arrive as SceneError)
     from .vary import draw, read_vary, variant_data
+
+    base = scene_from_data(_plain_data(data), path)
+    ranges = read_vary(data, path, base.units)
+    rng = np.random.default_rng([seed, index])
+    for attempt in range(1, TRIES + 1):
+        ks = draw(ranges, rng)
+        said = ", ".join(f"{r.key} = {r.text(k)}" for r, k in zip(ranges, ks))
+        try:
+            scene = scene_from_data(variant_data(data, ranges, ks, index), path)
+            study = Study(dimensioned(scene)).run()
+        except (ConstructionError, SceneError) as e:
+            if notes is not None:
+                notes.append(f"variant {index}: draw {attempt} ({said}) drawn again: {_short(e)}")
+            continue
+        return study, [(r.header, r.text(k).split(" ", 1)[0]) for r, k in zip(ranges, ks)]
+    if notes is not None:
+        notes.append(f"variant {index}: skipped, none of {TRIES} draws could be drawn")
+    return None, []
+
+
+def variant_label(index: int) -> str:
+    return f"variant {index}"
+
+
+def run_variant(job: VariantJob) -> VariantResult:
+    """Draw, solve and write one variant (runs in a worker)."""
+    from constructions.errors import ConstructionError
+    from .export import ExportError, write_outputs
+    from .errors import LayoutError
+    from .lab import lab_for, lab_plan
 
     path = Path(job.path)
     res = VariantResult(job.index)
-    base = scene_from_data(_plain_data(job.data), path)
-    ranges = read_vary(job.data, path, base.units)
-    rng = np.random.default_rng([job.seed, job.index])
-    study = None
-    for attempt in range(1, TRIES + 1):
-        ks = draw(ranges, rng)
-        values = [(r.header, r.text(k).split(" ", 1)[0]) for r, k in zip(ranges, ks)]
-        said = ", ".join(f"{r.key} = {r.text(k)}" for r, k in zip(ranges, ks))
-        try:
-            scene = scene_from_data(variant_data(job.data, ranges, ks, job.index), path)
-            study = Study(dimensioned(scene)).run()
-            break
-        except (ConstructionError, SceneError) as e:
-            res.notes.append(f"variant {job.index}: draw {attempt} ({said}) drawn again: {_short(e)}")
-            study = None
+    study, values = variant_study(job.data, path, job.seed, job.index, res.notes)
     if study is None:
-        res.notes.append(f"variant {job.index}: skipped, no draw of {TRIES} could be drawn")
         return res
     res.values = values
     try:
-        lab = lab_for(study, epoch=job.epoch, label=f"variant {job.index}")
+        lab = lab_for(study, epoch=job.epoch, label=variant_label(job.index))
         stem = variant_stem(job.stem, job.index)
         out = Path(job.out)
         extra = [("variant", str(job.index))] + values
         plan = lab_plan(lab, out, stem, job.formats, epoch=job.epoch, csv_extra=extra)
-        from .export import write_outputs
         res.files = [str(p) for p in write_outputs(out, stem, plan)]
     except (ExportError, LayoutError, ConstructionError) as e:
         res.error = f"{path}: variant {job.index}: {e}"

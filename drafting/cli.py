@@ -4,6 +4,9 @@
     drafting render SCENE...      sheets as SVG, PDF and PNG
     drafting solve SCENE --json   results in the scene's units and the analyses that ran
     drafting check SCENE...       graphical against analytic; exit 1 on disagreement
+    drafting check SCENE --answers FILE   a student's values marked at drawing accuracy
+    drafting render SCENE --lab   problem sheet, worked solution and answer key
+    drafting batch SCENE --variants N --seed S -o DIR   N lab-sheet variants from the scene's [vary]
     drafting bench [--peers]      timings of rendering and of the analytic sweep (and its peers)
 
 Exit codes: 0 fine, 1 graphical and analytic disagree, 2 bad input (one sentence on stderr).
@@ -107,16 +110,27 @@ def results_text(study: Study) -> str:
     return "\n".join(lines)
 
 
-def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None) -> tuple[str | None, str]:
+def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
+               lab: bool = False) -> tuple[str | None, str]:
     """Render one scene: ``(error, text)`` -- the one-line error (None when it rendered) and what to print
-    (its results and the files written)."""
+    (its results and the files written).  ``lab``: the problem sheet and the answer key beside the worked
+    solution (drafting.lab), all written together."""
     from .export import ExportError, write_sheets
     from .layout import LayoutError
     try:
-        study = _solve(_study(path, paper))
+        study = _study(path, paper)
+        if lab:
+            from .lab import dimensioned
+            study = Study(dimensioned(study.scene))
+        study = _solve(study)
         try:
             sheet_formats = [f for f in formats if f != PAGE]
-            written = write_sheets(sheets_for(study), out, path.stem, sheet_formats) if sheet_formats else []
+            if lab:
+                from .export import source_date_epoch
+                from .lab import lab_for, write_lab
+                written = write_lab(lab_for(study, epoch=source_date_epoch()), out, path.stem, sheet_formats)
+            else:
+                written = write_sheets(sheets_for(study), out, path.stem, sheet_formats) if sheet_formats else []
             if PAGE in formats:
                 from .html_page import write_page
                 written.append(write_page(study, out, path.stem))
@@ -131,23 +145,41 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None)
     return None, "\n".join([results_text(study)] + [f"  wrote {w}" for w in written])
 
 
-def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper: str | None) -> int:
+def _render_job(job: tuple) -> tuple[str | None, str]:
+    """One scene of a parallel render (runs in a worker; module level, so a process pool can send it)."""
+    path, out, formats, paper, lab = job
+    return render_one(Path(path), Path(out), formats, paper, lab)
+
+
+def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper: str | None, lab: bool = False,
+               executor=None, workers: int | None = None) -> int:
     """Render every scene; a scene that fails is reported in one line and the others still render; a
-    progress bar on a terminal when there are several."""
+    progress bar on a terminal when there are several.  Several scenes render over the cores
+    (drafting.parallel: a process pool from SERIAL_BELOW scenes up, serially below); what each prints
+    comes out in the order the scenes were given."""
+    from . import parallel
     from .progress import Progress
     bar = Progress(len(scenes), "render")
     bar.shown = len(scenes) >= 2 and _is_tty(sys.stderr)
-    failed = 0
-    for k, path in enumerate(scenes):
-        err, text = render_one(Path(path), out, formats, paper)
-        if err is not None:
-            print(f"drafting: error: {err}", file=sys.stderr)
-            failed += 1
-        else:
-            print(text)
-        bar.update(k + 1)
+    failed = [0]
+    ready: dict[int, tuple[str | None, str]] = {}
+    shown = [0]
+
+    def on_done(i: int, result) -> None:
+        ready[i] = result
+        while shown[0] in ready:
+            err, text = ready.pop(shown[0])
+            if err is not None:
+                print(f"drafting: error: {err}", file=sys.stderr)
+                failed[0] += 1
+            else:
+                print(text)
+            shown[0] += 1
+        bar.update(shown[0])
+    jobs = [(str(p), str(out), tuple(formats), paper, lab) for p in scenes]
+    parallel.run(_render_job, jobs, executor=executor, on_done=on_done, folders=[out], workers=workers)
     bar.finish()
-    return 2 if failed else 0
+    return 2 if failed[0] else 0
 
 
 def _is_tty(stream) -> bool:
@@ -196,10 +228,119 @@ def cmd_check(scenes: Sequence[Path]) -> int:
     return status
 
 
+def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int | None) -> int:
+    """Mark a student's values against the scene's key (or a batch variant's) at drawing accuracy: one
+    line per item, right / wrong / missing with the expected value.  Exit 1 unless every item is right."""
+    from .answers import AnswersError, mark, read_answers
+    from .lab import dimensioned, lab_for
+    label = ""
+    if variant is not None:
+        import tomllib
+        from .batch import variant_label, variant_study
+        from .scene import _read_text, parse_scene
+        if seed is None:
+            raise UserError(f"{path}: --variant needs the batch's --seed")
+        try:
+            text = _read_text(path)
+            parse_scene(text, path)
+            data = tomllib.loads(text)
+        except SceneError as e:
+            raise UserError(str(e)) from None
+        if "vary" not in data:
+            raise UserError(f"{path}: vary: is missing, so the scene has no variants")
+        notes: list[str] = []
+        try:
+            study, _ = variant_study(data, path, seed, variant, notes)
+        except SceneError as e:
+            raise UserError(str(e)) from None
+        if study is None:
+            raise UserError(f"{path}: variant {variant} of seed {seed} was skipped by the batch (no draw could "
+                            f"be drawn)")
+        label = variant_label(variant)
+    else:
+        study = _solve(Study(dimensioned(_study(path).scene)))
+    items = lab_for(study, label=label).items
+    if not items:
+        raise UserError(f"{path}: the scene has no answers to mark (it asks for {', '.join(study.scene.analyses)})")
+    try:
+        marks, unknown = mark(items, read_answers(answers), answers, study.scene.units)
+    except AnswersError as e:
+        raise UserError(str(e)) from None
+    width = max(len(m.item.shown) for m in marks)
+    title = study.scene.title + (f" ({label})" if label else "")
+    print(f"{title}: {answers} marked at drawing accuracy")
+    for m in marks:
+        print(m.line(width))
+    counts = {v: sum(1 for m in marks if m.verdict == v) for v in ("right", "wrong", "missing")}
+    print(f"  {counts['right']} right, {counts['wrong']} wrong, {counts['missing']} missing of {len(marks)}")
+    for name in unknown:
+        print(f"  note: {answers}: {name!r} is not a quantity of this scene; it asks for "
+              f"{', '.join(i.shown for i in items)}")
+    return 0 if counts["right"] == len(marks) else EXIT_DISAGREE
+
+
+def cmd_batch(path: Path, variants: int, seed: int, out: Path, formats: Sequence[str], workers: int | None,
+              executor=None) -> int:
+    """N variants of the scene's lab sheets (drafting.batch); each variant's files together or not at all,
+    then every key as one CSV."""
+    from .batch import run_batch
+    from .export import ExportError
+    from .progress import Progress
+    if variants < 1:
+        raise UserError(f"{path}: --variants must be at least 1, not {variants}")
+    if variants > MAX_VARIANTS:
+        raise UserError(f"{path}: --variants may be at most {MAX_VARIANTS}, not {variants}")
+    bar = Progress(variants, "batch")
+    bar.shown = _is_tty(sys.stderr)
+    formats = [f for f in formats if f != PAGE]
+    if not formats:
+        raise UserError(f"{path}: --format: a batch writes svg, pdf or png (the html page is one per scene)")
+    try:
+        results = run_batch(path, variants, seed, out, formats, executor=executor, progress=bar, workers=workers)
+    except SceneError as e:
+        raise UserError(str(e)) from None
+    except ExportError as e:
+        raise UserError(f"{path}: {e}") from None
+    failed = 0
+    for r in results:
+        for n in r.notes:
+            print(f"  note: {n}")
+        if r.error:
+            print(f"drafting: error: {r.error}", file=sys.stderr)
+            failed += 1
+    done = [r for r in results if r.files]
+    print(f"{path}: {len(done)} of {variants} variants (seed {seed}) written to {out}"
+          + (f"; every key in {out / (path.stem + '-keys.csv')}" if done else ""))
+    return 2 if failed else 0
+
+
+MAX_VARIANTS = 10_000
+
+
 def cmd_bench(quick: bool, peers: bool = False) -> int:
     from .bench import run_benchmarks
     print(run_benchmarks(quick=quick, peers=peers))
     return 0
+
+
+def _positive(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} must be at least 1")
+    return n
+
+
+def _seed(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if not 0 <= n < 2 ** 63:
+        raise argparse.ArgumentTypeError(f"{text!r} must be a whole number from 0 to 2^63 - 1")
+    return n
 
 
 def _formats(text: str) -> list[str]:
@@ -228,6 +369,11 @@ def parser() -> argparse.ArgumentParser:
     r.add_argument("--format", type=_formats, default=list(FORMATS),
                    help="comma-separated: svg,pdf,png (default: all), and html for the step-through page")
     r.add_argument("--paper", choices=PAPERS, help="override the scene's paper size")
+    r.add_argument("--lab", action="store_true",
+                   help="also the problem sheet (SCENE-problem.*: given data, empty panels at the stated "
+                        "scales, no answers) and the answer key (SCENE-key.* and SCENE-key.csv)")
+    r.add_argument("--workers", type=_positive, metavar="N",
+                   help="processes for several scenes (default: the cores; 1: one after the other)")
     s = sub.add_parser("solve", help="solve a scene and print its results",
                        description="Solve a scene; with --json print machine-readable results in the "
                                    "scene's units and the list of analyses that ran.")
@@ -238,6 +384,21 @@ def parser() -> argparse.ArgumentParser:
                        description="Compare every graphical result with the analytic (vector-loop) one; "
                                    "exit 1 if any differs by more than 1e-9 relative.")
     c.add_argument("scenes", nargs="+", type=Path, metavar="SCENE")
+    c.add_argument("--answers", type=Path, metavar="FILE",
+                   help="mark a student's values (CSV name,value or TOML name = \"value\") against the "
+                        "scene's key at drawing accuracy; exit 1 unless every item is right")
+    c.add_argument("--variant", type=_positive, metavar="N", help="with --answers: the batch variant N ...")
+    c.add_argument("--seed", type=_seed, metavar="S", help="... of the batch with seed S")
+    a = sub.add_parser("batch", help="N variants of a scene's lab sheets from its [vary] ranges",
+                       description="Draw N variants of the scene from its [vary] ranges (the same seed gives "
+                                   "the same files), each a problem sheet, worked solution and answer key, "
+                                   "rendered over the cores; every key also in one CSV.")
+    a.add_argument("scene", type=Path, metavar="SCENE")
+    a.add_argument("--variants", type=int, required=True, metavar="N", help="how many variants")
+    a.add_argument("--seed", type=_seed, default=0, metavar="S", help="the seed (default 0)")
+    a.add_argument("-o", "--out", type=Path, default=DEFAULT_OUT, help="output folder (default: %(default)s)")
+    a.add_argument("--format", type=_formats, default=["pdf"], help="comma-separated: svg,pdf,png (default: pdf)")
+    a.add_argument("--workers", type=_positive, metavar="N", help="processes (default: the cores)")
     b = sub.add_parser("bench", help="measure rendering and analytic sweep speed",
                        description="Time the default sheet to SVG/PDF/PNG and the analytic sweep over "
                                    "1e3..1e7 crank angles, side by side in one run.")
@@ -291,10 +452,18 @@ def _main(argv: Sequence[str] | None) -> int:
         if args.command is None:
             return cmd_render([builtin_example()], DEFAULT_OUT, FORMATS, None)
         if args.command == "render":
-            return cmd_render(args.scenes, args.out, args.format, args.paper)
+            return cmd_render(args.scenes, args.out, args.format, args.paper, args.lab, workers=args.workers)
+        if args.command == "batch":
+            return cmd_batch(args.scene, args.variants, args.seed, args.out, args.format, args.workers)
         if args.command == "solve":
             return cmd_solve(args.scene, args.json, args.csv)
         if args.command == "check":
+            if args.answers is not None:
+                if len(args.scenes) != 1:
+                    raise UserError("--answers marks the answers to one scene; give one SCENE")
+                return cmd_check_answers(args.scenes[0], args.answers, args.variant, args.seed)
+            if args.variant is not None or args.seed is not None:
+                raise UserError("--variant and --seed go with --answers")
             return cmd_check(args.scenes)
         if args.command == "bench":
             return cmd_bench(args.quick, args.peers)
