@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
 from .errors import LayoutError
 from .paper import Command, Rect, Rectangle, Text
@@ -46,6 +48,13 @@ def _edge(u: Pt, hw: float, hh: float) -> float:
     return min(cands)
 
 
+#: The 16 directions a point's label is tried in (measured CCW as seen on paper), their paper angles and
+#: the small preference for the upper right (45 deg) each carries.
+_DIRS = tuple((math.cos(2 * math.pi * i / 16), -math.sin(2 * math.pi * i / 16)) for i in range(16))
+_DIR_ATAN = tuple(math.atan2(u[1], u[0]) for u in _DIRS)
+_DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in range(16))
+
+
 def _candidates(req: LabelReq, hw: float, hh: float, incident: list[float], relax: int):
     """(centre, cost) candidates for a label box of half sizes hw, hh."""
     dists = (0.7, 1.6, 3.0, 4.5) if relax == 0 else (6.0, 8.0, 11.0, 15.0)
@@ -53,14 +62,12 @@ def _candidates(req: LabelReq, hw: float, hh: float, incident: list[float], rela
     if req.kind in ("point", "polygon"):
         if req.kind == "polygon" and relax == 0:
             yield p, 0.0
-        for di, dist in enumerate(dists):
-            for i in range(16):
-                a = 2 * math.pi * i / 16
-                u = (math.cos(a), -math.sin(a))                # a measured CCW as seen on paper
-                ap = math.atan2(u[1], u[0])
-                gap = min((angle_gap(ap, b) for b in incident), default=math.pi)
-                t = req.r0 + dist + _edge(u, hw, hh)
-                cost = 2.0 * (math.pi - gap) + 0.8 * dist + 0.05 * angle_gap(a, math.pi / 4)
+        gaps = [min((angle_gap(ap, b) for b in incident), default=math.pi) for ap in _DIR_ATAN]
+        edges = [_edge(u, hw, hh) for u in _DIRS]
+        for dist in dists:
+            for u, gap, edge, lean in zip(_DIRS, gaps, edges, _DIR_LEAN):
+                t = req.r0 + dist + edge
+                cost = 2.0 * (math.pi - gap) + 0.8 * dist + lean
                 yield shifted(p, u, t), cost
     elif req.kind == "arrow":
         tail, tip = req.other, req.anchor
@@ -115,27 +122,8 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
         for relax in (0, 1):
-            for centre, cost in _candidates(req, hw, hh, incident, relax):
-                box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
-                if not plot.contains(box):
-                    continue
-                if any(box.overlaps(o, 0.3) for o in near_placed) or any(box.overlaps(o, 0.2) for o in near_hard):
-                    continue
-                thin = thick = 0.0
-                bl, bt, br, bb = box.left, box.top, box.right, box.bottom
-                for a, b, heavy, x0, y0, x1, y1 in near_segs:
-                    if x0 > br or x1 < bl or y0 > bb or y1 < bt:
-                        continue
-                    ln = _clip_len(a, b, box)
-                    if heavy:
-                        thick += ln
-                    else:
-                        thin += ln
-                if thick > 0 and not req.mandatory:
-                    continue                      # an optional label never hides part of a thick line
-                total = cost + 3.0 * thin + 20.0 * thick
-                if best is None or total < best[0]:
-                    best = (total, centre, box)
+            best = _best_candidate([(c[0], c[1], k) for c, k in _candidates(req, hw, hh, incident, relax)], hw, hh, plot,
+                                   near_placed, near_hard, near_segs, req.mandatory)
             if best is not None:
                 break
         if best is None:
@@ -156,6 +144,70 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         y = centre[1] - (ext.top + ext.bottom) / 2
         out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
+    return out
+
+
+def _best_candidate(cands: list, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
+                    near_hard: list[Rect], near_segs: list, mandatory: bool):
+    """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
+    or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
+    part of a thick line.  All candidates are tested at once: the arithmetic is the scalar test's,
+    operation for operation, so the choice is the same to the last bit."""
+    if not cands:
+        return None
+    c = np.array(cands, dtype=float)
+    cx, cy, cost = c[:, 0], c[:, 1], c[:, 2]
+    left, top = cx - hw, cy - hh
+    right, bottom = left + 2 * hw, top + 2 * hh
+    tol = 1e-6
+    ok = ((left >= plot.left - tol) & (right <= plot.right + tol)
+          & (top >= plot.top - tol) & (bottom <= plot.bottom + tol))
+    for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)):
+        for o in rects:
+            ok &= ~((left < o.right + gap) & (o.left < right + gap) & (top < o.bottom + gap) & (o.top < bottom + gap))
+    if not ok.any():
+        return None
+    thin = np.zeros(len(c))
+    thick = np.zeros(len(c))
+    for a, b, heavy, x0, y0, x1, y1 in near_segs:
+        touch = ~((x0 > right) | (x1 < left) | (y0 > bottom) | (y1 < top))
+        if not touch.any():
+            continue
+        ln = _clip_lens(a, b, left, top, right, bottom)
+        ln[~touch] = 0.0
+        if heavy:
+            thick += ln
+        else:
+            thin += ln
+    if not mandatory:
+        ok &= ~(thick > 0)                  # an optional label never hides part of a thick line
+    total = cost + 3.0 * thin + 20.0 * thick
+    total[~ok] = np.inf
+    i = int(np.argmin(total))
+    if not ok[i]:
+        return None
+    centre = (float(cx[i]), float(cy[i]))
+    return float(total[i]), centre, Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
+
+
+def _clip_lens(a: Pt, b: Pt, left, top, right, bottom) -> np.ndarray:
+    """:func:`_clip_len` of segment ab in each of the boxes given by the edge arrays."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    t0 = np.zeros(len(left))
+    t1 = np.ones(len(left))
+    dead = np.zeros(len(left), dtype=bool)
+    for p, q in ((-dx, a[0] - left), (dx, right - a[0]), (-dy, a[1] - top), (dy, bottom - a[1])):
+        if abs(p) < 1e-12:
+            dead |= q < 0
+            continue
+        t = q / p
+        if p < 0:
+            t0 = np.maximum(t0, t)
+        else:
+            t1 = np.minimum(t1, t)
+    dead |= t0 > t1
+    out = (t1 - t0) * math.hypot(dx, dy)
+    out[dead] = 0.0
     return out
 
 

@@ -70,6 +70,7 @@ class Figure:
         self.entities = tuple(entities)
         self.text = text
         self._draws: dict[float, Drawing] = {}
+        self._boxes: dict[float, Rect | None] = {}
         pts = model_points(self.entities)
         if pts:
             self.extent = (max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
@@ -108,7 +109,10 @@ class Figure:
         return d
 
     def bbox(self, k: float) -> Rect | None:
-        return self.drawing(k).bbox()
+        """The drawing's extent at ``k`` (measured once per scale: the packer asks many times)."""
+        if k not in self._boxes:
+            self._boxes[k] = self.drawing(k).bbox()
+        return self._boxes[k]
 
 
 class Panel:
@@ -147,8 +151,7 @@ class Panel:
         raise NotImplementedError
 
 
-def _fit_drawing(d: Drawing) -> Size:
-    bb = d.bbox()
+def _fit_drawing(bb: Rect | None) -> Size:
     w = (bb.w if bb else 0.0) + 2 * VIEW_PAD + 2
     h = (bb.h if bb else 0.0) + 2 * VIEW_PAD + 2
     return w, h
@@ -225,7 +228,7 @@ class SpacePanel(Panel):
         return self.k(rung) / self.per_m                      # paper mm per display length unit
 
     def need(self, rung: int, width: float) -> Size | None:
-        w, h = _fit_drawing(self.figure.drawing(self.k(rung)))
+        w, h = _fit_drawing(self.figure.bbox(self.k(rung)))
         if w > width + 1e-9:
             return None
         hh = self.cache.header_height(width, self.heading(rung), self.ppu(rung), self.unit)
@@ -302,7 +305,7 @@ class VectorPanel(Panel):
         return len(self.values) - 1
 
     def need(self, rung: int, width: float) -> Size | None:
-        w, h = _fit_drawing(self.figure.drawing(self.k(rung)))
+        w, h = _fit_drawing(self.figure.bbox(self.k(rung)))
         w = max(w, VECTOR_MIN_W)
         if w > width + 1e-9:
             return None
