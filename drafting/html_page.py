@@ -120,9 +120,12 @@ def page_html(study) -> str:
     items = "".join(f"<li>{s['caption']}</li>" for s in steps)
     data = json.dumps(steps, ensure_ascii=False).replace("</", "<\\/")
     title = html.escape(study.scene.title)
+    from .html_sweep import STYLE as SWEEP_STYLE, sweep_section
+    sweep = sweep_section(study)                    # None unless the scene asked for the sweep
+    style, section = (STYLE, "") if sweep is None else (STYLE + SWEEP_STYLE, sweep.html)
     return (f"<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{title}</title>"
-            f"<style>{STYLE}</style></head><body>"
-            f"<div id=\"sheets\">{''.join(svgs)}</div>"
+            f"<style>{style}</style></head><body>"
+            f"<div id=\"sheets\">{section}{''.join(svgs)}</div>"
             f"<div id=\"panel\"><h3>{title}</h3><div id=\"controls\"><button id=\"prev\">&#9664; previous</button> "
             f"<span id=\"count\"></span> <button id=\"next\">next &#9654;</button></div>"
             f"<div id=\"caption\"></div><div id=\"equation\"></div><ol id=\"steps\">{items}</ol></div>"
