@@ -1,7 +1,7 @@
 """Export of a cam's profile for machining: CSV and DXF, at a stated tolerance, with the units in the file.
 
 The profile is the exact envelope sampled so that every chord stays within the tolerance of the true
-curve (:func:`constructions.cams.profile.profile_points`; by default 1e-6 of the cam's size, prime circle
+curve (:func:`constructions.cams.profile.profile_samples`; by default 1e-6 of the cam's size, prime circle
 plus lift), trimmed where the follower undercuts it.  Coordinates are in the scene's length unit, in the
 cam frame at cam angle 0 (the follower's axis along +y), centred on the cam's axis.
 
@@ -10,7 +10,8 @@ cam frame at cam angle 0 (the follower's axis along +y), centred on the cam's ax
   drawing's $INSUNITS and $MEASUREMENT set from the unit (mm, cm, m, in, ft), and the tolerance in a TEXT
   on layer ``NOTES``.
 
-Usage: ``python -m drafting.cam_export SCENE -o DIR [--tolerance 1e-6]`` (relative to the cam's size).
+Usage: ``python -m drafting.cam_export SCENE -o DIR [--tolerance 1e-6]`` (relative to the cam's size); a
+command line of its own wires the same with :func:`add_export_arguments` and :func:`run_export`.
 Both files are written together or not at all (drafting.export.write_outputs).
 """
 
@@ -18,11 +19,12 @@ from __future__ import annotations
 
 import argparse
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
-from constructions.cams.profile import analyse, profile_points, trim
+from constructions.cams.profile import analyse, evaluate, profile_samples, trim
 
 from .export import ExportError, prepare_folder, write_outputs
 from .scene import SceneError, load_scene
@@ -32,16 +34,15 @@ INSUNITS = {"mm": 4, "millimeter": 4, "cm": 5, "centimeter": 5, "m": 6, "meter":
 
 
 def profile_for_export(model, tolerance_rel: float = 1e-6) -> tuple[np.ndarray, float]:
-    """(points 2 x N in SI, absolute tolerance in SI) of a cam scene's model."""
+    """(points 2 x N in SI, absolute tolerance in SI) of a cam scene's model: the profile-only path
+    (:func:`constructions.cams.profile.profile_samples`), trimmed where the analysis finds undercut."""
     p, f = model.program, model.follower
     cp = analyse(p, f, samples=1024)
     tol = tolerance_rel * cp.size
-    pts = profile_points(p, f, tol)
-    if not cp.undercut_free and cp.undercut:
-        from constructions.cams.profile import evaluate, TAU
-        n = pts.shape[1]
-        cp.samples = evaluate(p, f, np.linspace(0.0, TAU, n, endpoint=False))
-        pts = trim(cp)
+    theta, pts = profile_samples(p, f, tol)
+    if cp.undercut:
+        # the dense points, against the roller centres (face lines) at their own cam angles
+        pts = trim(cp, replace(evaluate(p, f, theta[np.isfinite(theta)]), profile=pts))
     return pts, tol
 
 
@@ -93,21 +94,38 @@ def export(scene_path: str | Path, out_dir: str | Path, tolerance_rel: float = 1
                                      (out / f"{stem}.dxf", lambda: dxf_bytes(scene, pts, tol))])
 
 
-def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m drafting.cam_export", description=__doc__.splitlines()[0])
-    ap.add_argument("scene")
-    ap.add_argument("-o", "--out", default=".")
-    ap.add_argument("--tolerance", type=float, default=1e-6, help="chord tolerance relative to the cam's size")
-    a = ap.parse_args(argv)
-    if not 0 < a.tolerance < 0.1:
-        ap.error("--tolerance must lie between 0 and 0.1 (a fraction of the cam's size)")
+def add_export_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
+    """The export's arguments on ``parser`` (this module's own command line, or a ``drafting export``
+    subcommand): the scene, the output folder and the relative tolerance."""
+    parser.add_argument("scene", help="a cam scene file (kind = \"cam\")")
+    parser.add_argument("-o", "--out", default=".", help="the folder for SCENE-profile.csv and .dxf")
+    parser.add_argument("--tolerance", type=float, default=1e-6,
+                        help="chord tolerance relative to the cam's size (default 1e-6)")
+    return parser
+
+
+def run_export(args: argparse.Namespace) -> int:
+    """Write the CSV and DXF for parsed ``args`` (:func:`add_export_arguments`): 0 when written, 2 on a
+    scene or export error or a tolerance out of range (the message on stderr)."""
+    if not 0 < args.tolerance < 0.1:
+        print("error: --tolerance must lie between 0 and 0.1 (a fraction of the cam's size)", file=sys.stderr)
+        return 2
     try:
-        for p in export(a.scene, a.out, a.tolerance):
+        for p in export(args.scene, args.out, args.tolerance):
             print(f"wrote {p}")
     except (SceneError, ExportError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     return 0
+
+
+def main(argv=None) -> int:
+    ap = add_export_arguments(argparse.ArgumentParser(prog="python -m drafting.cam_export",
+                                                      description=__doc__.splitlines()[0]))
+    return run_export(ap.parse_args(argv))
+
+
+__all__ = ["export", "profile_for_export", "csv_text", "dxf_bytes", "add_export_arguments", "run_export", "main"]
 
 
 if __name__ == "__main__":

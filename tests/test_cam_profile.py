@@ -193,3 +193,129 @@ def test_oscillating_roller_equals_kennedy(law, swing, a, arm, sense):
     # the roller centre stays on the arm's circle about its laid-out pivot
     A = np.stack([a * np.cos(-sense * c.stations), a * np.sin(-sense * c.stations)])
     assert np.allclose(np.hypot(*(c.centres - A)), arm, rtol=1e-12)
+
+
+def _chord_errors(p, f, th, C, k=24):
+    """The largest distance of the exact profile from each chord between neighbouring samples: the curve
+    evaluated at k - 1 cam angles inside each step; a step of no cam angle (a corner) is a roller's arc about
+    the corner (the chord's sagitta) or a flat face's straight slide (no error)."""
+    n = len(th)
+    t1 = np.append(th[1:], th[0] + 2 * math.pi)
+    C1 = np.roll(C, -1, axis=1)
+    out = np.zeros(n)
+    same = np.isclose(t1, th, rtol=0, atol=1e-13)
+    step = ~same & np.isfinite(th) & np.isfinite(t1)        # a fold's crossing (NaN) is checked apart
+    ab = C1 - C
+    for j in range(1, k):
+        tm = th[step] + (t1[step] - th[step]) * j / k
+        M = evaluate(p, f, tm).profile
+        a, d = C[:, step], ab[:, step]
+        u = np.clip(np.sum((M - a) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
+        out[step] = np.maximum(out[step], np.hypot(*(M - (a + u * d))))
+    if same.any() and f.kind != FLAT:
+        P = evaluate(p, f, th[same]).pitch
+        r0, r1 = C[:, same] - P, C1[:, same] - P
+        assert np.allclose(np.hypot(*r0), f.roller_radius, rtol=1e-12)     # on the roller circle
+        assert np.allclose(np.hypot(*r1), f.roller_radius, rtol=1e-12)
+        half = 0.5 * np.arccos(np.clip(np.sum(r0 * r1, axis=0) / f.roller_radius ** 2, -1, 1))
+        out[same] = f.roller_radius * (1 - np.cos(half))
+    return out
+
+
+def _sampling_cam(law, kind, e, sense, rb):
+    from constructions.cams.profile import OSCILLATING
+    osc = kind == OSCILLATING
+    h = D(18) if osc else 0.02
+    p = Program([Segment(DWELL, D(50)), Segment(RISE, D(100), h, law), Segment(DWELL, D(40)),
+                 Segment(RETURN, D(130), h, law), Segment(DWELL, D(40))])
+    if osc:
+        return p, Follower(OSCILLATING, rb, 0.006, sense=sense, pivot_distance=0.09, arm_length=0.07)
+    if kind == FLAT:
+        return p, Follower(FLAT, rb + 0.02, sense=sense)          # clear of the smallest base radius
+    return p, Follower(kind, rb, 0.008 if kind == ROLLER else 0.0, e, sense)
+
+
+@settings(max_examples=60, deadline=None)
+@given(law=st.sampled_from(LAWS), kind=st.sampled_from([KNIFE, ROLLER, FLAT, "oscillating roller"]),
+       e=st.floats(-0.012, 0.012), sense=st.sampled_from([1, -1]), rb=st.floats(0.03, 0.05),
+       rel=st.sampled_from([1e-4, 1e-6, 1e-7]))
+def test_profile_samples_every_chord_within_the_tolerance(law, kind, e, sense, rb, rel):
+    """The profile-only path (:mod:`constructions.cams.sampling`): every point on the exact envelope (the
+    full evaluation's, at its cam angle), every chord within the tolerance of the exact curve between its
+    ends, for every law (uniform's corners included) and every follower."""
+    from constructions.cams.profile import profile_samples
+    p, f = _sampling_cam(law, kind, e, sense, rb)
+    size = (f.base_radius if kind == FLAT else f.prime_radius) + p.lift if kind != "oscillating roller" else \
+        max(f.prime_radius, f.pivot_distance + f.arm_length)
+    tol = rel * size
+    th, C = profile_samples(p, f, tol)
+    if np.isnan(th).any():       # uniform motion folds a roller's profile at its convex corners: cut there
+        assert law == "uniform" and kind != KNIFE
+    # every point exact: the points with a cam angle of their own equal the full evaluation's
+    own = ~(np.isclose(th, np.roll(th, 1), atol=1e-13) | np.isclose(th, np.roll(th, -1), atol=1e-13))
+    own &= np.isfinite(th)
+    assert np.max(np.hypot(*(evaluate(p, f, th[own]).profile - C[:, own]))) <= 1e-12 * size
+    err = _chord_errors(p, f, th, C)
+    assert np.max(err) <= tol
+    assert np.max(err) > 0.5 * tol            # and not wastefully dense
+    assert LinearRing(C.T).is_simple
+
+
+def test_profile_points_default_on_the_notes_cam():
+    """The benchmark's default: the notes' roller cam at 1e-6 of its size, every chord within it, and fewer
+    points than one even step everywhere would need (2585 at the tightest bend's step)."""
+    from constructions.cams.profile import profile_samples
+    p = notes_program()
+    f = Follower(ROLLER, 1.5 * IN, 0.5 * IN)
+    size = f.prime_radius + p.lift
+    th, C = profile_samples(p, f, 1e-6 * size)
+    err = _chord_errors(p, f, th, C, k=48)
+    assert 0.9e-6 * size < np.max(err) <= 1e-6 * size
+    assert C.shape[1] < 2200
+    # the dwells are arcs about O: radius r_b (at zero lift) and r_b + 0.8 in
+    r = np.hypot(*C)
+    dw = (th < D(120)) | ((th > D(180)) & (th < D(210)))
+    assert np.allclose(r[dw], np.where(th[dw] < D(120), 1.5 * IN, 2.3 * IN), rtol=1e-14)
+
+
+def test_chord_error_rate_is_the_curve_s_own():
+    """g = |C' x C''| / |C'| from s, s', s'' against numerical derivatives of the exact envelope."""
+    from constructions.cams.sampling import chord_error_rate
+    for kind in (KNIFE, ROLLER, FLAT, "oscillating roller"):
+        p, f = _sampling_cam(HARMONIC, kind, 0.007, -1, 0.04)
+        th = np.linspace(D(55), D(140), 30)
+        h = 1e-4
+        a, b, c = (evaluate(p, f, th + k * h).profile for k in (-1, 0, 1))
+        d1, d2 = (c - a) / (2 * h), (c - 2 * b + a) / h ** 2
+        num = np.abs(d1[0] * d2[1] - d1[1] * d2[0]) / np.hypot(*d1)
+        s, ds, dds, _ = p.derivatives(th)
+        assert np.allclose(chord_error_rate(f, s, ds, dds), num, rtol=1e-5)
+
+
+def test_uniform_corners_arcs_and_folds():
+    """Uniform motion: s' jumps at its ends, the pitch curve has corners.  A roller's profile takes the
+    roller circle's arc at a reflex corner (the start of a rise of a CCW cam) and is trimmed where the
+    branches cross (a convex corner); nothing self-intersects."""
+    from constructions.cams.laws import UNIFORM
+    from constructions.cams.profile import profile_samples
+    p, f = _sampling_cam(UNIFORM, ROLLER, 0.0, 1, 0.04)
+    tol = 1e-6 * (f.prime_radius + p.lift)
+    th, C = profile_samples(p, f, tol)
+    assert np.isnan(th).sum() == 2 and LinearRing(C.T).is_simple      # the end of the rise, the start of the return
+    assert np.max(_chord_errors(p, f, th, C)) <= tol
+    # the crossing is where the two branches meet: within the tolerance of both exact branches
+    for k in np.nonzero(np.isnan(th))[0]:
+        X = C[:, k]
+        for t0 in (th[k - 1], th[k + 1]):
+            near = evaluate(p, f, np.linspace(t0 - 0.01, t0 + 0.01, 40001)).profile
+            assert np.min(np.hypot(*(near - X[:, None]))) < tol
+    # the arc at the start of the rise (50 deg): points on the roller circle about the corner's pitch point
+    P = evaluate(p, f, np.array([D(50)])).pitch[:, 0]
+    on = np.abs(np.hypot(*(C - P[:, None])) - f.roller_radius) < 1e-12
+    assert on.sum() > 20
+    # the knife edge keeps the corner itself; the flat face's contact slides along the face line
+    for kind in (KNIFE, FLAT):
+        q, g = _sampling_cam(UNIFORM, kind, 0.0, 1, 0.04)
+        t, pts = profile_samples(q, g, 1e-6 * 0.06)
+        assert LinearRing(pts.T).is_simple and (np.isnan(t).any() == (kind == FLAT))
+        assert np.max(_chord_errors(q, g, t, pts)) <= 1e-6 * 0.06

@@ -102,10 +102,12 @@ def test_base_scene_runs():
 
 
 def test_export_csv_and_dxf_at_the_tolerance(tmp_path):
+    """The files hold the profile-only path's points (every chord within the tolerance: proved in
+    tests/test_cam_profile.py), each on the exact envelope, in the scene's unit."""
     import ezdxf
     import numpy as np
 
-    from constructions.cams.profile import evaluate
+    from constructions.cams.profile import evaluate, profile_samples
     from drafting.cam_export import export
 
     scene = GALLERY / "notes-roller-cam.toml"
@@ -114,22 +116,46 @@ def test_export_csv_and_dxf_at_the_tolerance(tmp_path):
     assert "# units: in" in lines
     rows = np.array([[float(v) for v in r.split(",")] for r in lines if r and r[0] not in "#x"]) * 0.0254
     m = load_scene(scene).model
-    n = len(rows)
-    th = np.linspace(0, 2 * math.pi, n, endpoint=False)
-    exact = evaluate(m.program, m.follower, th).profile.T
-    assert np.max(np.hypot(*(rows - exact).T)) < 1e-9          # every point exact (9 decimals of an inch)
-    # every chord within the tolerance: the exact curve at the middle of each step against the chord
-    mid = evaluate(m.program, m.follower, th + math.pi / n).profile.T
-    a, b = rows, np.roll(rows, -1, axis=0)
-    ab = b - a
-    u = np.clip(np.sum((mid - a) * ab, axis=1) / np.sum(ab * ab, axis=1), 0, 1)
-    dev = np.hypot(*(mid - (a + u[:, None] * ab)).T)
     size = m.follower.prime_radius + m.program.lift
-    assert np.max(dev) <= 1e-6 * size * 1.01
+    theta, pts = profile_samples(m.program, m.follower, 1e-6 * size)
+    assert f"# tolerance: {1e-6 * size / 0.0254:.6g} in (largest distance of a chord from the exact profile)" in lines
+    assert len(rows) == pts.shape[1]
+    exact = evaluate(m.program, m.follower, theta).profile.T
+    assert np.max(np.hypot(*(rows - exact).T)) < 1e-9          # every point exact (9 decimals of an inch)
     doc = ezdxf.readfile(dxf)
     assert doc.header["$INSUNITS"] == 1
     poly = list(doc.modelspace().query("LWPOLYLINE"))
-    assert len(poly) == 1 and poly[0].closed and len(poly[0]) == n
+    assert len(poly) == 1 and poly[0].closed and len(poly[0]) == len(rows)
+
+
+def test_export_undercut_cam_is_trimmed_and_the_cli_pieces(tmp_path, capsys):
+    """An undercut cam exports its trimmed profile (a simple ring, no roller cutting into it); the
+    export's arguments and runner serve any command line; the module still runs on its own."""
+    import argparse
+    import subprocess
+    import sys
+
+    import numpy as np
+    from shapely.geometry import LinearRing
+
+    from constructions.cams.profile import analyse
+    from drafting.cam_export import add_export_arguments, profile_for_export, run_export
+
+    m = load_scene(GALLERY / "roller-cam-undercut.toml").model
+    pts, tol = profile_for_export(m)
+    assert LinearRing(pts.T).is_simple
+    P = analyse(m.program, m.follower, 4096).samples.pitch
+    d = np.min(np.hypot(pts[0][:, None] - P[0][None, :], pts[1][:, None] - P[1][None, :]), axis=1)
+    assert np.min(d) >= m.follower.roller_radius * (1 - 1e-3)
+    ap = add_export_arguments(argparse.ArgumentParser(prog="drafting export"))
+    assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "-o", str(tmp_path)])) == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes-roller-cam-profile.csv", "notes-roller-cam-profile.dxf"]
+    assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "--tolerance", "0.5"])) == 2
+    assert "--tolerance" in capsys.readouterr().err
+    out = tmp_path / "m"
+    r = subprocess.run([sys.executable, "-m", "drafting.cam_export", str(GALLERY / "notes-flat-faced-cam.toml"),
+                        "-o", str(out)], capture_output=True, text=True, cwd=Path(__file__).resolve().parent.parent)
+    assert r.returncode == 0 and (out / "notes-flat-faced-cam-profile.dxf").exists()
 
 
 def test_oscillating_scene():

@@ -101,6 +101,39 @@ NORMALISED: dict[str, Callable] = {UNIFORM: _uniform, PARABOLIC: _parabolic, HAR
                                    CYCLOIDAL: _cycloidal, POLY345: _poly345, POLY4567: _poly4567}
 """law -> f(u) returning (f, f', f'', f''') on an array of u in [0, 1]."""
 
+def _low(law: str, u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(f, f') alone: what a profile's points need (the same formulas as above, fewer operations)."""
+    if law == HARMONIC:
+        x = PI * u
+        return 0.5 - 0.5 * np.cos(x), (PI / 2) * np.sin(x)
+    if law == CYCLOIDAL:
+        x = TAU * u
+        return u - np.sin(x) / TAU, 1.0 - np.cos(x)
+    if law == POLY345:
+        u2 = u * u
+        return u2 * u * (10.0 + u * (-15.0 + 6.0 * u)), u2 * (30.0 + u * (-60.0 + 30.0 * u))
+    if law == POLY4567:
+        u3 = u * u * u
+        return (u3 * u * (35.0 + u * (-84.0 + u * (70.0 - 20.0 * u))),
+                u3 * (140.0 + u * (-420.0 + u * (420.0 - 140.0 * u))))
+    f = NORMALISED[law](u)
+    return f[0], f[1]
+
+
+def normalised_low(law: str, u) -> tuple[np.ndarray, np.ndarray]:
+    """(f, f') of ``law`` at ``u`` (array-like in [0, 1])."""
+    return _low(law, np.asarray(u, dtype=float))
+
+
+END_SLOPES = {UNIFORM: {0.0: 1.0, 1.0: 1.0}, PARABOLIC: {0.0: 0.0, 0.5: 2.0, 1.0: 0.0}}
+"""f'(u) exactly at a law's ends and inner joins where it is not 0 (every other law starts and ends at rest)."""
+
+
+def end_slope(law: str, u: float) -> float:
+    """f'(u) of ``law`` at one of its ends or inner joins (u = 0, 1/2 for a parabola, 1): exact, no arrays."""
+    return END_SLOPES.get(law, {}).get(u, 0.0)
+
+
 INNER_JOINS = {PARABOLIC: (0.5,)}
 """Points inside a law where a derivative jumps (the parabolas meet at the middle: f'' from +4 to -4)."""
 
@@ -294,4 +327,4 @@ def segments_from_angles(parts) -> list[Segment]:
 
 
 __all__ = ["LAWS", "UNIFORM", "PARABOLIC", "HARMONIC", "CYCLOIDAL", "POLY345", "POLY4567", "DWELL", "RISE",
-           "RETURN", "Segment", "Program", "Join", "normalised", "law_name", "segments_from_angles"]
+           "RETURN", "Segment", "Program", "Join", "normalised", "normalised_low", "end_slope", "law_name", "segments_from_angles"]

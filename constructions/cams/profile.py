@@ -289,11 +289,20 @@ class CamProfile:
         return not self.undercut and not self.cusp_at
 
 
+def cam_size(program: Program, f: Follower) -> float:
+    """The cam's size, the length every relative tolerance scales: the prime circle plus the lift (a flat
+    face: the base circle plus the lift; an oscillating arm: its reach from the cam centre)."""
+    if f.kind in (KNIFE, ROLLER):
+        return f.prime_radius + program.lift
+    if f.kind == FLAT:
+        return f.base_radius + program.lift
+    return max(f.prime_radius, f.pivot_distance + f.arm_length)
+
+
 def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     th = np.linspace(0.0, TAU, samples, endpoint=False)
     ev = evaluate(program, f, th)
-    size = (f.prime_radius + program.lift if f.kind in (KNIFE, ROLLER) else f.base_radius + program.lift
-            if f.kind == FLAT else max(f.prime_radius, f.pivot_distance + f.arm_length))
+    size = cam_size(program, f)
     phi_t, phi = extremum(program, lambda x: np.abs(evaluate(program, f, x).pressure_angle))
     phi = float(evaluate(program, f, np.array([phi_t])).pressure_angle[0])
     rp_t, rp = extremum(program, lambda x: evaluate(program, f, x).rho_profile if f.kind == FLAT else
@@ -331,14 +340,20 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     return out
 
 
-def trim(cp: CamProfile) -> np.ndarray:
+def trim(cp: CamProfile, samples: Evaluation | None = None) -> np.ndarray:
     """The valid profile: envelope points that no roller position cuts into (a roller's centre is on the
     pitch curve, so a point nearer than rr to it is cut away), with each removed loop replaced by the
-    crossing of the two branches.  A flat-faced cam with rho <= 0 is trimmed likewise by the face lines."""
-    ev, f = cp.samples, cp.follower
+    crossing of the two branches.  A flat-faced cam with rho <= 0 is trimmed likewise by the face lines.
+    ``samples`` (default: the analysis's own ``cp.samples``) gives the points to trim (its ``profile``, e.g.
+    the denser set of an export) and the roller centres (its ``pitch``; a flat face: its ``normal`` and
+    ``s``) that cut them; the two need not be as many.  ``cp`` is left as it is."""
+    return _trim(cp.follower, cp.samples if samples is None else samples, cp.size)
+
+
+def _trim(f: Follower, ev: Evaluation, size: float) -> np.ndarray:
     C = ev.profile
     n = C.shape[1]
-    tol = 1e-9 * cp.size
+    tol = 1e-9 * size
     keep = np.ones(n, dtype=bool)
     if f.kind == FLAT:
         # a point is cut if some face line lies between it and the centre: p . u_j > rb + s_j
@@ -400,32 +415,8 @@ def _cross_point(a0, a1, b0, b1):
 
 
 __all__ = ["Follower", "KNIFE", "ROLLER", "FLAT", "FOLLOWERS", "evaluate", "analyse", "CamProfile", "Evaluation",
-           "OSCILLATING", "extremum", "spans", "trim", "samples_for", "profile_points"]
+           "OSCILLATING", "extremum", "spans", "trim", "cam_size", "profile_samples", "profile_points", "chord_error_rate"]
 
 
-def samples_for(program: Program, f: Follower, tolerance: float, coarse: int = 720) -> int:
-    """How many equal steps of cam angle keep every chord of the analytic envelope within ``tolerance``
-    (SI length) of the curve: a chord of length l on a bend of curvature k strays l^2 k / 8 from it, so
-    from a coarse pass (chord lengths, the larger |curvature| at either end) the step is shortened by
-    sqrt(max(l^2 k) / (8 tol))."""
-    if not tolerance > 0:
-        raise ValueError("the tolerance must be positive")
-    th = np.linspace(0.0, TAU, coarse + 1)
-    ev = evaluate(program, f, th)
-    C = ev.profile
-    seg = np.hypot(np.diff(C[0]), np.diff(C[1]))
-    with np.errstate(divide="ignore"):
-        k = np.abs(1.0 / ev.rho_profile)
-    k = np.where(np.isfinite(k), k, 0.0)
-    kk = np.maximum(k[:-1], k[1:])
-    worst = float(np.max(seg ** 2 * kk))
-    n = coarse * math.sqrt(worst / (8.0 * tolerance)) if worst > 0 else coarse
-    return int(max(coarse, math.ceil(n)))
-
-
-def profile_points(program: Program, f: Follower, tolerance: float) -> np.ndarray:
-    """The exact envelope at equal steps of cam angle, dense enough that the polyline through the points
-    stays within ``tolerance`` of the true profile (2 x N, closed: the last point is not repeated).
-    Every point is exact; only the chords between them approximate."""
-    n = samples_for(program, f, tolerance)
-    return evaluate(program, f, np.linspace(0.0, TAU, n, endpoint=False)).profile
+# the profile alone (export, machining, the benchmark): :mod:`.sampling`, imported last (it uses the above)
+from .sampling import chord_error_rate, profile_points, profile_samples  # noqa: E402
