@@ -42,7 +42,7 @@ from .layout import text_at, viewport_header
 from .paper import Circle, Command, Line, Paper, Polygon, Polyline, Rect, Rectangle
 from .scales import ISO_5455, ratio_factor, ratio_text
 from .sheet import Sheet
-from .style import LABEL, rich
+from .style import LABEL, measure, rich
 from .svg import sheet_to_svg
 
 WIDTH, HEIGHT = 310.0, 150.0          # the card's drawing, mm
@@ -112,7 +112,7 @@ function show(i) {
   for (const q of D.labels) {
     const el = $(q.id), c = P(q.at, cur);
     el.style.visibility = c ? '' : 'hidden';
-    if (c) { el.setAttribute('x', f(c[0] + q.dx)); el.setAttribute('y', f(c[1] + q.dy)); }
+    if (c) { el.setAttribute('x', f(c[0] + q.off[cur][0])); el.setAttribute('y', f(c[1] + q.off[cur][1])); }
   }
   for (const t of D.traces) {
     const pts = [];
@@ -173,6 +173,12 @@ if (hash.includes('selftest-sweep')) window.addEventListener('load', () => {
     if (gaps === 'FAILED') problems.push('gap');
     show(start);
   }
+  // play turns the crank on, pause stops it
+  play.click();
+  const playing = timer !== null && play.textContent.includes('pause');
+  play.click();
+  if (!playing || timer !== null || !play.textContent.includes('play')) problems.push('play');
+  show(start);
   const before = D.readout[cur].join('|'), shown0 = $('sweep-v0').textContent;
   const target = (cur + Math.round(D.count / 4)) % D.count;
   slider.value = target;
@@ -289,6 +295,24 @@ def _away_from(p: tuple[float, float], others: list[tuple[float, float]]) -> tup
         if gap(c) > best_gap + 1e-9:
             best, best_gap = c, gap(c)
     return best
+
+
+LABEL_DIRECTIONS = tuple(-math.pi / 4 + j * math.pi / 4 for j in range(8))
+"""Where a joint's name may stand (paper angles, y down), up-right first: the drafter's habit."""
+
+
+def label_offset(spans, incident: list[float]) -> tuple[float, float]:
+    """Where the name ``spans`` of a point starts (baseline, from the point, paper mm): centred on the
+    direction furthest from the ``incident`` directions (paper angles of the lines leaving the point),
+    just clear of its pin."""
+    def gap(a: float) -> float:
+        return min((abs((a - b + math.pi) % (2 * math.pi) - math.pi) for b in incident), default=math.pi)
+    best = max(LABEL_DIRECTIONS, key=lambda a: (round(gap(a), 9), -LABEL_DIRECTIONS.index(a)))
+    ext = measure(spans)
+    d = (math.cos(best), math.sin(best))
+    r = PIN_R + 0.7 + abs(d[0]) * ext.width / 2 + abs(d[1]) * ext.height / 2
+    cx, cy = r * d[0], r * d[1]
+    return round(cx - ext.width / 2, 3), round(cy - (ext.top + ext.bottom) / 2, 3)
 
 
 def _sub_digits(n: int) -> str:
@@ -470,8 +494,11 @@ class _Card:
             away = _away_from(p, [self.at(lk.other(gname)) for lk in m.links
                                   if gname in lk.joints and lk.other(gname) in pos])
             self.static += _ground_symbol(p, away, f"sweep pivot {gname}")
-            self.static.append(text_at(p[0] + LABEL_OFFSET[0] + 1.0, p[1] + LABEL_OFFSET[1],
-                                       rich(gname, LABEL, pivot_digits=True), style="label", region="sweep",
+            spans = rich(gname, LABEL, pivot_digits=True)
+            others = [self.at(lk.other(gname)) for lk in m.links if gname in lk.joints and lk.other(gname) in pos]
+            incident = [math.atan2(q[1] - p[1], q[0] - p[0]) for q in others if q != p]
+            dx, dy = label_offset(spans, incident + [math.atan2(away[1], away[0]) + t for t in (-0.6, 0.0, 0.6)])
+            self.static.append(text_at(p[0] + dx, p[1] + dy, spans, style="label", region="sweep",
                                        name=f"sweep label {gname}"))
         joints = {j for lk in m.links for j in lk.joints} | {sl.joint for sl in m.slides}
         for name in pos:
@@ -481,11 +508,31 @@ class _Card:
             self.tag(Circle(*self.at(name), PIN_R, "pin", f"sweep pin {name}") if name in joints
                      else Circle(*self.at(name), DOT_R, "dot", f"sweep pin {name}"), pid)
             pins.append({"id": pid, "at": name})
+            spans = rich(name, LABEL, pivot_digits=True)
+            offsets = [self._label_at(name, i, spans, blocks) for i in range(self.count)]
             x, y = self.at(name)
-            self.tag(text_at(x + LABEL_OFFSET[0], y + LABEL_OFFSET[1], rich(name, LABEL, pivot_digits=True),
-                             style="label", region="sweep", name=f"sweep label {name}"), lid)
-            labels.append({"id": lid, "at": name, "dx": LABEL_OFFSET[0], "dy": LABEL_OFFSET[1]})
+            dx, dy = offsets[self.first]
+            self.tag(text_at(x + dx, y + dy, spans, style="label", region="sweep", name=f"sweep label {name}"), lid)
+            labels.append({"id": lid, "at": name, "off": offsets})
         return {"links": links, "blocks": blocks, "pins": pins, "labels": labels}
+
+    def _label_at(self, name: str, i: int, spans, blocks: list[dict]) -> tuple[float, float]:
+        """The offset of ``name``'s label at slider angle ``i``: away from the links and blocks there."""
+        p = self.pos[name][i]
+        if p is None:
+            return LABEL_OFFSET
+        incident = []
+        for lk in self.m.links:
+            local = self.m.local(lk.number)
+            if name in local:
+                for other in local:
+                    q = self.pos[other][i] if other in self.pos and other != name else None
+                    if q is not None and (q[0], q[1]) != (p[0], p[1]):
+                        incident.append(math.atan2(-(q[1] - p[1]), q[0] - p[0]))
+        for b in blocks:
+            if b["at"] == name and b["dir"][i] is not None:
+                incident += [-b["dir"][i], math.pi - b["dir"][i]]
+        return label_offset(spans, incident)
 
     # -- the charts and the readout -----------------------------------------------------------------------
     def charts(self) -> tuple[list[dict], list[str], list[list[str]]]:

@@ -186,25 +186,25 @@ def _chromium(url: str, *args: str) -> subprocess.Popen:
 def test_in_headless_chromium_the_slider_moves_the_mechanism(tmp_path, cycle, gap):
     """The self-test moves the slider a quarter turn through its input event: every pin then stands where
     the analytic solution puts it (paper mm, to 1e-3), the readout changed, an arrow key on the slider left
-    the construction's steps alone, and at a gap only the crank is drawn.  The screenshot is of the same
-    run: the mechanism at 150 deg beside the charts."""
+    the construction's steps alone, play and pause work, and at a gap only the crank is drawn.  The
+    screenshot is of the same run: the mechanism at 190 deg beside the charts."""
     study, page, d = cycle
     (tmp_path / "cycle.html").write_text(page, encoding="utf-8")
     (tmp_path / "gap.html").write_text(gap[1], encoding="utf-8")
     shot = tmp_path / "shot.png"
-    runs = [_chromium(f"{(tmp_path / 'cycle.html').as_uri()}#selftest-sweep", "--dump-dom", f"--screenshot={shot}",
+    runs = [_chromium(f"{(tmp_path / 'cycle.html').as_uri()}#selftest-sweep&angle=100", "--dump-dom", f"--screenshot={shot}",
                       "--window-size=1600,1000"),
             _chromium(f"{(tmp_path / 'gap.html').as_uri()}#selftest-sweep", "--dump-dom")]
     out = [r.communicate(timeout=120)[0] for r in runs]
     title = re.search(r"<title>([^<]*)</title>", out[0]).group(1)
-    assert title.startswith("selftest-sweep ok i=90 gaps=none"), title
+    assert title.startswith("selftest-sweep ok i=130 gaps=none"), title          # from 100 deg a quarter on
     sc = study.scene
-    a = analytic_solution(sc.mechanism, sc.angle + math.radians(90), sc.omega)
+    a = analytic_solution(sc.mechanism, sc.angle + math.radians(130), sc.omega)
     for name in ("B", "C", "D"):
         x, y = map(float, re.search(rf" {name}=([-0-9.]+),([-0-9.]+)", title).groups())
         p = a.positions[name]
         assert abs(x - (d["ox"] + d["k"] * 1000 * p.x)) < 1e-3 and abs(y - (d["oy"] - d["k"] * 1000 * p.y)) < 1e-3
-    assert title.endswith("readout=150.0 deg")
+    assert title.endswith("readout=190.0 deg")
     gap_title = re.search(r"<title>([^<]*)</title>", out[1]).group(1)
     assert gap_title.startswith("selftest-sweep ok") and " gaps=ok:O2B " in gap_title, gap_title
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
