@@ -19,25 +19,6 @@ from .style import LABEL, measure, rich
 LABEL_PAD = 0.4         # white margin of a label's background
 
 
-def _clip_len(a: Pt, b: Pt, r: Rect) -> float:
-    """Length of segment ab inside rectangle r (Liang-Barsky)."""
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, a[0] - r.left), (dx, r.right - a[0]), (-dy, a[1] - r.top), (dy, r.bottom - a[1])):
-        if abs(p) < 1e-12:
-            if q < 0:
-                return 0.0
-            continue
-        t = q / p
-        if p < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-        if t0 > t1:
-            return 0.0
-    return (t1 - t0) * math.hypot(dx, dy)
-
-
 def _edge(u: Pt, hw: float, hh: float) -> float:
     """Distance from a box centre to its edge along unit ``u``."""
     cands = []
@@ -107,7 +88,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     out: list[Command] = []
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
                                                         ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
-    seg_boxes = [(min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1])) for a, b, _ in d.segments]
+    segs = _Segments(d.segments)
     for i in order:
         req = d.labels[i]
         spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
@@ -116,8 +97,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         incident = incident_directions(req.anchor, d.segments) if req.kind == "point" else []
         # the neighbourhood every candidate box lies in: only what is in it can collide
         reach = _reach(req, hw, hh)
-        near_segs = [(s[0], s[1], s[2]) + b for s, b in zip(d.segments, seg_boxes)
-                     if b[0] <= reach.right and b[2] >= reach.left and b[1] <= reach.bottom and b[3] >= reach.top]
+        near_segs = segs.near(reach)
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
@@ -148,7 +128,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
 
 
 def _best_candidate(cands: list, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
-                    near_hard: list[Rect], near_segs: list, mandatory: bool):
+                    near_hard: list[Rect], near_segs: "_Segments", mandatory: bool):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
     or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
     part of a thick line.  All candidates are tested at once: the arithmetic is the scalar test's,
@@ -167,18 +147,7 @@ def _best_candidate(cands: list, hw: float, hh: float, plot: Rect, near_placed: 
             ok &= ~((left < o.right + gap) & (o.left < right + gap) & (top < o.bottom + gap) & (o.top < bottom + gap))
     if not ok.any():
         return None
-    thin = np.zeros(len(c))
-    thick = np.zeros(len(c))
-    for a, b, heavy, x0, y0, x1, y1 in near_segs:
-        touch = ~((x0 > right) | (x1 < left) | (y0 > bottom) | (y1 < top))
-        if not touch.any():
-            continue
-        ln = _clip_lens(a, b, left, top, right, bottom)
-        ln[~touch] = 0.0
-        if heavy:
-            thick += ln
-        else:
-            thin += ln
+    thin, thick = near_segs.covered(left, top, right, bottom)
     if not mandatory:
         ok &= ~(thick > 0)                  # an optional label never hides part of a thick line
     total = cost + 3.0 * thin + 20.0 * thick
@@ -190,25 +159,52 @@ def _best_candidate(cands: list, hw: float, hh: float, plot: Rect, near_placed: 
     return float(total[i]), centre, Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
 
 
-def _clip_lens(a: Pt, b: Pt, left, top, right, bottom) -> np.ndarray:
-    """:func:`_clip_len` of segment ab in each of the boxes given by the edge arrays."""
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    t0 = np.zeros(len(left))
-    t1 = np.ones(len(left))
-    dead = np.zeros(len(left), dtype=bool)
-    for p, q in ((-dx, a[0] - left), (dx, right - a[0]), (-dy, a[1] - top), (dy, bottom - a[1])):
-        if abs(p) < 1e-12:
-            dead |= q < 0
-            continue
-        t = q / p
-        if p < 0:
-            t0 = np.maximum(t0, t)
-        else:
-            t1 = np.minimum(t1, t)
-    dead |= t0 > t1
-    out = (t1 - t0) * math.hypot(dx, dy)
-    out[dead] = 0.0
-    return out
+class _Segments:
+    """The line segments of a drawing as arrays: ends, bounding boxes, lengths and weights."""
+
+    def __init__(self, segments) -> None:
+        self.ends = np.array([(a[0], a[1], b[0], b[1]) for a, b, _ in segments], dtype=float).reshape(-1, 4)
+        e = self.ends
+        self.boxes = np.stack([np.minimum(e[:, 0], e[:, 2]), np.minimum(e[:, 1], e[:, 3]),
+                               np.maximum(e[:, 0], e[:, 2]), np.maximum(e[:, 1], e[:, 3])], axis=1)
+        self.heavy = np.array([bool(h) for _, _, h in segments], dtype=bool)
+        self.length = np.array([math.hypot(b[0] - a[0], b[1] - a[1]) for a, b, _ in segments], dtype=float)
+
+    def near(self, reach: Rect) -> "_Segments":
+        """The segments whose boxes meet ``reach``, in their order."""
+        b = self.boxes
+        keep = (b[:, 0] <= reach.right) & (b[:, 2] >= reach.left) & (b[:, 1] <= reach.bottom) & (b[:, 3] >= reach.top)
+        sub = object.__new__(_Segments)
+        sub.ends, sub.boxes, sub.heavy, sub.length = self.ends[keep], b[keep], self.heavy[keep], self.length[keep]
+        return sub
+
+    def covered(self, left, top, right, bottom) -> tuple[np.ndarray, np.ndarray]:
+        """(thin, thick): the length of thin and of thick line inside each box (boxes by their edge
+        arrays; Liang-Barsky clipping), summed segment after segment in order."""
+        n = len(left)
+        if not len(self.length):
+            return np.zeros(n), np.zeros(n)
+        L, T, R, B = left[:, None], top[:, None], right[:, None], bottom[:, None]
+        bx = self.boxes
+        touch = ~((bx[:, 0] > R) | (bx[:, 2] < L) | (bx[:, 1] > B) | (bx[:, 3] < T))
+        a0, a1, b0, b1 = self.ends.T
+        dx, dy = b0 - a0, b1 - a1
+        t0 = np.zeros(touch.shape)
+        t1 = np.ones(touch.shape)
+        dead = ~touch
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for p, q in ((-dx, a0 - L), (dx, R - a0), (-dy, a1 - T), (dy, B - a1)):
+                flat = np.abs(p) < 1e-12                      # parallel to this edge: outside or no limit
+                dead |= flat & (q < 0)
+                t = q / np.where(flat, 1.0, p)
+                t0 = np.where(~flat & (p < 0), np.maximum(t0, t), t0)
+                t1 = np.where(~flat & (p >= 0), np.minimum(t1, t), t1)
+        dead |= t0 > t1
+        ln = (t1 - t0) * self.length
+        ln[dead] = 0.0
+        thin = np.cumsum(np.where(self.heavy, 0.0, ln), axis=1)[:, -1]      # cumsum: in order, one by one
+        thick = np.cumsum(np.where(self.heavy, ln, 0.0), axis=1)[:, -1]
+        return thin, thick
 
 
 _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin
