@@ -5,7 +5,7 @@ own, the cycle charts of the sweep beside it (output motion, angular velocities 
 transmission angle with its 40-140 deg band), each with a cursor, and a readout of the charts' values at
 the slider's angle in the scene's units.  A range slider (the arrow keys when it has focus, Home/End), a
 play/pause button and a jump list of the positions the sweep names (limit positions, change points, the
-transmission angle's extremes, the ends of gaps) move the crank.
+transmission angle's extremes, where gaps begin) move the crank.
 
 Every state is computed here, in Python, from the study's own sweep (one turn in steps of 1 deg,
 :data:`drafting.linkage_family.SWEEP_STEPS`): the positions of every point in the scene's length unit,
@@ -13,10 +13,12 @@ the slider blocks' directions, the chart cursor and dot positions on paper, the 
 travel as JSON; the page's script only moves elements.  At a gap (the linkage cannot be assembled) only
 the crank is drawn, greyed, with a note; nothing is borrowed from a neighbouring angle.
 
-``#angle=150`` opens at crank angle 150 (scene's angle unit); ``#selftest-sweep`` moves the slider once
-(through its input event), checks that every moved pin stands where the JSON puts it and that the
-readout changed, and writes the outcome and the pins' SVG coordinates into the page title for a headless
-browser to read.
+``#angle=150`` opens at crank angle 150 (scene's angle unit).  ``#selftest-sweep`` (after the page has
+loaded) checks that an arrow key on the slider leaves the construction's steps alone, that play and pause
+start and stop the crank, that at the first gap only the crank stands with the note, then moves the
+slider a quarter turn through its input event and checks that every moved pin stands where the JSON
+puts it, the first chart's cursor has moved and the readout changed; it writes the outcome and the
+pins' SVG coordinates into the page title for a headless browser to read.
 """
 
 from __future__ import annotations
@@ -616,10 +618,12 @@ class _Card:
         k = self.study.get("classification")
         if k is not None:
             c = k.joints[2]
+            turns_back = k.grashof != "change point" and "rocker" not in k.turns_fully
             for lp, mark in zip(k.limit_positions, ("'", "''")):
                 named.append((lp.crank_angle, f"{c}{mark} at {angle(lp.crank_angle)}",
                               f"Limit position {c}{mark} at {angle(lp.crank_angle)}: crank and coupler in line "
-                              f"({'extended' if lp.extended else 'folded'}); the rocker stops and turns back."))
+                              f"({'extended' if lp.extended else 'folded'})"
+                              + ("; the rocker stops and turns back." if turns_back else ".")))
             for a, val, word in ((k.transmission_min_at, k.transmission_min, "least"),
                                  (k.transmission_max_at, k.transmission_max, "greatest")):
                 if a is not None and val is not None:

@@ -136,7 +136,7 @@ def test_the_mechanism_has_its_own_panel_and_the_cursors_sit_on_the_curves(cycle
     assert 'type="range" id="sweep-slider" min="0" max="359"' in page and 'id="sweep-play"' in page
     assert "C&#x27; at 36.87 deg" in page and "\u03bc least at 0 deg" in page
     i = next(j for j, t in enumerate(d["status"]) if t.startswith("Limit position C'' "))
-    assert "crank and coupler in line (folded)" in d["status"][i]
+    assert "crank and coupler in line (folded); the rocker stops and turns back." in d["status"][i]
     assert not re.search(r"<(link|img|iframe)\b|\bsrc=|url\((?!data:)", page)
 
 
@@ -168,6 +168,7 @@ def test_change_points_are_named(tmp_path):
     i = round((180 - 30) / 360 * d["count"])
     assert "Change point at 180.0 deg: all the links lie in line" in d["status"][i]
     assert f'<option value="{i}">' in page
+    assert not any("turns back" in t for t in d["status"])        # on its branch the rocker turns on
 
 
 def test_a_page_without_a_sweep_has_no_slider():
