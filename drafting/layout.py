@@ -45,34 +45,45 @@ def with_region(cmds: Sequence[Command], region: str) -> list[Command]:
 
 
 def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]:
-    """Greedy word wrap of rich text into lines no wider than ``width`` mm."""
+    """Greedy word wrap of rich text into lines no wider than ``width`` mm; neighbouring runs of one
+    size, shift and slant are joined into one span as the line is built."""
     words = markup.split()
     if not words:
         return []
     space = text_width(" ", size)
-    lines: list[list[Span]] = []
-    cur: list[Span] = []
+    lines: list[list[list]] = []
+    cur: list[list] = []                   # runs [text, size, shift, italic], merged as they come
     cur_w = 0.0
+
+    def add(run: list[list], s: Span) -> None:
+        if run and run[-1][1] == s.size and run[-1][2] == s.shift and run[-1][3] == s.italic:
+            run[-1][0] += s.text
+        else:
+            run.append([s.text, s.size, s.shift, s.italic])
+
     for word in words:
         spans, w = _word(word, size)
-        spans = list(spans)
         if w > width:                                   # a word longer than the line: split it
             for piece in _split_long(word, width, size):
                 if cur:
                     lines.append(cur)
-                cur, cur_w = list(rich(piece, size)), measure(rich(piece, size)).width
+                cur = []
+                for sp in rich(piece, size):
+                    add(cur, sp)
+                cur_w = measure(rich(piece, size)).width
             continue
         if cur and cur_w + space + w > width:
             lines.append(cur)
             cur, cur_w = [], 0.0
         if cur:
-            cur.append(Span(" ", size))
+            add(cur, Span(" ", size))
             cur_w += space
-        cur.extend(spans)
+        for sp in spans:
+            add(cur, sp)
         cur_w += w
     if cur:
         lines.append(cur)
-    return [tuple(_merge_spans(line)) for line in lines]
+    return [tuple(Span(*r) for r in line) for line in lines]
 
 
 @functools.lru_cache(maxsize=16384)
@@ -91,23 +102,6 @@ def _split_long(word: str, width: float, size: float) -> list[str]:
         cur += ch
     if cur:
         out.append(cur)
-    return out
-
-
-def _merge_spans(spans: Sequence[Span]) -> list[Span]:
-    """Neighbouring spans of one size, shift and slant joined into one."""
-    out: list[Span] = []
-    run: list[str] = []
-    last: Span | None = None
-    for s in spans:
-        if last is not None and (last.size, last.shift, last.italic) == (s.size, s.shift, s.italic):
-            run.append(s.text)
-            continue
-        if last is not None:
-            out.append(Span("".join(run), last.size, last.shift, last.italic) if len(run) > 1 else last)
-        last, run = s, [s.text]
-    if last is not None:
-        out.append(Span("".join(run), last.size, last.shift, last.italic) if len(run) > 1 else last)
     return out
 
 
