@@ -7,7 +7,6 @@ README; they are never asserted in tests.
 from __future__ import annotations
 
 import statistics
-import tempfile
 import time
 from pathlib import Path
 from typing import Callable
@@ -34,12 +33,15 @@ RENDER_SCENES = (("velocity, slider-crank (default sheet)", None),
 
 
 def render_rows(repeats: int = 7) -> list[dict]:
-    """Median wall time of each stage (solve, layout of every sheet, SVG/PDF/PNG) for each sheet of
-    :data:`RENDER_SCENES` that exists in this checkout."""
+    """Median wall time of each stage (solve, layout of every sheet, SVG/PDF/PNG in memory) for each
+    sheet of :data:`RENDER_SCENES` that exists in this checkout, and the same sheets' line art drawn
+    through matplotlib when it is installed (``mpl_svg`` ...)."""
+    from . import bench_matplotlib as mpl, cairo_out
+    from .export import PNG_DPI
     from .worked import builtin_example, sheets_for
-    from .export import write_sheets
     from .scene import load_scene
     from .study import Study
+    from .svg import sheet_to_svg
 
     rows = []
     for label, name in RENDER_SCENES:
@@ -53,28 +55,49 @@ def render_rows(repeats: int = 7) -> list[dict]:
         study = solve()
         sheets = sheets_for(study)
         row = {"scene": label, "sheets": len(sheets), "solve": _median_seconds(solve, repeats),
-               "layout": _median_seconds(lambda: sheets_for(study), repeats)}
-        with tempfile.TemporaryDirectory() as tmp:
+               "layout": _median_seconds(lambda: sheets_for(study), repeats),
+               "svg": _median_seconds(lambda: [sheet_to_svg(s) for s in sheets], repeats),
+               "pdf": _median_seconds(lambda: cairo_out.sheets_to_pdf(sheets), repeats),
+               "png": _median_seconds(lambda: [cairo_out.sheet_to_png(s, PNG_DPI) for s in sheets], repeats),
+               "commands": mpl.command_count(sheets)}
+        if mpl.available():
+            row["artists"] = mpl.artists(sheets)
             for fmt in ("svg", "pdf", "png"):
-                row[fmt] = _median_seconds(lambda: write_sheets(sheets, Path(tmp), "bench", [fmt]), repeats)
+                row["mpl_" + fmt] = _median_seconds(lambda: [mpl.save(s, fmt, PNG_DPI) for s in sheets], repeats)
         rows.append(row)
     return rows
 
 
 def format_render_rows(rows: list[dict]) -> str:
-    head = f"  {'sheet':<50} {'pages':>5} {'solve':>8} {'layout':>8} {'SVG':>8} {'PDF':>8} {'PNG':>8}"
+    def ms(v: float) -> str:
+        return f"{v * 1e3:6.1f}ms"
+    head = (f"  {'sheet':<50} {'pages':>5} {'solve':>8} {'layout':>8} {'SVG':>8} {'PDF':>8} {'PNG':>8}"
+            f"   {'to SVG':>8} {'to PDF':>8}")
     lines = [head]
     for r in rows:
-        lines.append(f"  {r['scene']:<50} {r['sheets']:>5} " + " ".join(
-            f"{r[k] * 1e3:6.1f}ms" for k in ("solve", "layout", "svg", "pdf", "png")))
+        base = r["solve"] + r["layout"]
+        lines.append(f"  {r['scene']:<50} {r['sheets']:>5} " + " ".join(ms(r[k]) for k in ("solve", "layout", "svg", "pdf", "png"))
+                     + f"   {ms(base + r['svg'])} {ms(base + r['pdf'])}")
+    from .bench_matplotlib import available
+    version = available()
+    lines.append("")
+    if version is None:
+        lines.append("  The same line art through matplotlib: not installed (pip install '.[bench]').")
+        return "\n".join(lines)
+    lines.append(f"  The same line art through matplotlib {version} (each command an artist, saved by its SVG, PDF "
+                 f"and Agg back ends; no solving, no layout):")
+    lines.append(f"  {'sheet':<50} {'drawn':>7} {'':>26} {'SVG':>8} {'PDF':>8} {'PNG':>8}")
+    for r in rows:
+        lines.append(f"  {r['scene']:<50} {r['artists']:>7} {'':>26} " + " ".join(ms(r['mpl_' + k]) for k in ("svg", "pdf", "png")))
     return "\n".join(lines)
 
 
 def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
     repeats = 3 if quick else 7
     sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
-    lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; "
-             "layout = every page's drawing commands):" % repeats, format_render_rows(render_rows(repeats))]
+    lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; layout = "
+             "every page's drawing commands; SVG, PDF and PNG (150 dpi) made in memory; to SVG = solve + layout + "
+             "SVG):" % repeats, format_render_rows(render_rows(repeats))]
     lines.append("")
     lines.append("Analytic sweep, full states -- positions, velocities and accelerations of every joint "
                  "(one core, numpy):")
