@@ -1,5 +1,6 @@
 """The cam family: a disk cam with a translating follower (knife-edge, roller -- radial or offset -- or
-flat-faced) driven by a motion program of dwells, rises and returns.  The profile is constructed as the
+flat-faced) or an oscillating one (roller or flat-faced) driven by a motion program of dwells, rises and
+returns.  The profile is constructed as the
 notes draw it (:mod:`constructions.cams.construction`), its exact envelope and curvature found
 analytically (:mod:`constructions.cams.profile`), and the points read off the construction checked against
 textbook closed forms (:mod:`constructions.cams.check`).  Registered in :mod:`drafting.families`; its scene
@@ -12,7 +13,7 @@ from typing import Any
 
 from constructions.cams import check as cam_check
 from constructions.cams.construction import construct
-from constructions.cams.profile import FLAT, KNIFE, OSCILLATING, ROLLER
+from constructions.cams.profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER
 from constructions.geometry import Vec
 
 from .cam_scene import SECTIONS, read_cam
@@ -80,6 +81,14 @@ def _warnings(study) -> tuple[str, ...]:
                        f"smallest radius of curvature {u.format('length', rho)} (at {u.format('angle', t)}); the "
                        f"envelope loops back from {_spans(u, cp.undercut)}: the profile drawn is trimmed there and "
                        f"the follower will not follow its program.")
+    if f.kind == OSC_FLAT:
+        if cp.cusp_at:
+            out.append(f"Cusp: the profile's radius of curvature comes to zero at {u.format('angle', cp.cusp_at[0])}; "
+                       f"the flat face is at its limit there.")
+        elif cp.undercut:
+            out.append(f"The flat face cannot follow: the profile's radius of curvature goes negative from "
+                       f"{_spans(u, cp.undercut)} (a larger base circle or a slower swing helps); the profile drawn is "
+                       f"trimmed.")
     if f.kind == FLAT:
         if cp.cusp_at:
             out.append(f"Cusp: the base radius is exactly the smallest for a flat face (r_b + s + s'' = 0 at "
@@ -88,7 +97,7 @@ def _warnings(study) -> tuple[str, ...]:
             out.append(f"The flat face cannot follow: r_b + s + s'' < 0 from {_spans(u, cp.undercut)} (needs a base "
                        f"radius above {u.format('length', cp.min_base_radius)}); the profile drawn is trimmed.")
     phi = abs(cp.max_pressure_angle[1])
-    limit = 35 if f.kind == OSCILLATING else 30
+    limit = 35 if f.kind in (OSCILLATING, OSC_FLAT) else 30
     if f.kind != FLAT and phi > math.radians(limit):
         out.append(f"The pressure angle reaches {u.format('angle', phi)} at {u.format('angle', cp.max_pressure_angle[0])}"
                    f", above the usual {limit} deg for {'an oscillating' if limit == 35 else 'a translating'} "
@@ -116,6 +125,11 @@ def _notes(study) -> tuple[str, ...]:
     loops = " (negative: the exact envelope loops back there; the profile drawn is trimmed)" if rho < 0 else ""
     out.append(f"Smallest radius of curvature of the profile{' ' + what if what else ''}: {u.format('length', rho)} at "
                f"{u.format('angle', t)}{loops}.")
+    if f.kind == OSC_FLAT:
+        lo, hi = cp.face_width
+        out.append(f"The face must reach from {u.format('length', lo)} to {u.format('length', hi)} along the arm from "
+                   f"the foot of the pivot (length {u.format('length', hi - lo)}); at zero lift the arm makes "
+                   f"{u.format('angle', f.beta0)} with the line of centres.")
     if f.kind == FLAT:
         lo, hi = cp.face_width
         out.append(f"Smallest base radius for a flat face (r_b + s + s'' > 0): {u.format('length', cp.min_base_radius)}"
@@ -138,14 +152,16 @@ def _json(study) -> dict[str, Any]:
         a = m.program.starts[i]
         row = {"motion": seg.kind, "from": A(a), "to": A(a + seg.beta)}
         if seg.kind != "dwell":
-            row.update(lift=A(seg.lift) if f.kind == OSCILLATING else L(seg.lift), law=seg.law)
+            row.update(lift=A(seg.lift) if f.kind in (OSCILLATING, OSC_FLAT) else L(seg.lift), law=seg.law)
         prog.append(row)
     out: dict[str, Any] = {"cam": {"base_radius": L(f.base_radius), "sense": "ccw" if f.sense > 0 else "cw",
                                    "divisions": m.divisions,
                                    "speed": u.convert("angular velocity", m.omega) if m.omega else None},
                            "follower": {"type": f.kind, "roller_radius": L(f.roller_radius), "offset": L(f.offset),
                                         **({"pivot_distance": L(f.pivot_distance), "arm_length": L(f.arm_length)}
-                                           if f.kind == OSCILLATING else {})},
+                                           if f.kind == OSCILLATING else {}),
+                                        **({"pivot_distance": L(f.pivot_distance), "face_offset": L(f.face_offset)}
+                                           if f.kind == OSC_FLAT else {})},
                            "program": prog,
                            "joins": [{"at": A(j.theta), "before": j.before, "after": j.after,
                                       "consequence": j.consequence or "continuous"} for j in m.program.joins()]}
@@ -153,7 +169,8 @@ def _json(study) -> dict[str, Any]:
     if c is not None:
         cp = c.profile
         out["profile"] = {
-            "table": [{"theta": A(t), "s": A(v) if f.kind == OSCILLATING else L(v)} for t, v in zip(c.stations, c.table)],
+            "table": [{"theta": A(t), "s": A(v) if f.kind in (OSCILLATING, OSC_FLAT) else L(v)}
+                      for t, v in zip(c.stations, c.table)],
             "max_pressure_angle": {"at": A(cp.max_pressure_angle[0]), "value": A(abs(cp.max_pressure_angle[1]))},
             "min_radius_of_curvature_pitch": ({"at": A(cp.min_rho_pitch[0]), "value": L(cp.min_rho_pitch[1])}
                                               if cp.min_rho_pitch else None),
@@ -162,6 +179,7 @@ def _json(study) -> dict[str, Any]:
             "cusps": [A(t) for t in cp.cusp_at],
             "min_base_radius_flat": L(cp.min_base_radius) if cp.min_base_radius is not None else None,
             "face_width": L(cp.face_width[1] - cp.face_width[0]) if cp.face_width else None,
+            **({"face_reach_along_arm": [L(cp.face_width[0]), L(cp.face_width[1])]} if f.kind == OSC_FLAT else {}),
         }
     return out
 

@@ -4,11 +4,13 @@
     [cam]          base_radius, sense ("cw" or "ccw"), speed (optional: the cam's steady angular speed, for
                    v, a and j; without it the s-v-a-j diagrams are per radian), divisions (how many equal
                    portions of the turn the construction draws, 4..72; default 12) or step (e.g. "10 deg")
-    [follower]     type ("knife-edge", "roller", "flat-faced", "oscillating roller"), roller_radius or
-                   roller_diameter (a roller), offset (optional: the axis to the right of the cam centre,
-                   negative to the left; translating knife-edge or roller only), pivot_distance and
-                   arm_length (an oscillating roller: its arm's pivot to the right of the cam centre; the
-                   segments' lifts are then the arm's swing, an angle)
+    [follower]     type ("knife-edge", "roller", "flat-faced", "oscillating roller", "oscillating
+                   flat-faced"), roller_radius or roller_diameter (a roller), offset (optional: the axis to the
+                   right of the cam centre, negative to the left; translating knife-edge or roller only),
+                   pivot_distance (an oscillating follower: its arm's pivot to the right of the cam centre; the
+                   segments' lifts are then the arm's swing, an angle), arm_length (an oscillating roller),
+                   face_offset (optional, an oscillating flat face: its distance from the line through the
+                   pivot along the arm, towards the cam; default 0)
     [[segment]]    motion ("dwell", "rise", "return"), from, to (cam angles; the segments run on from 0 to
                    360 deg), lift (a rise or return), law ("simple harmonic", "cycloidal", "uniform",
                    "parabolic", "3-4-5 polynomial", "4-5-6-7 polynomial")
@@ -22,13 +24,13 @@ import math
 from dataclasses import dataclass
 
 from constructions.cams.laws import DWELL, RETURN, RISE, SEGMENT_KINDS, Program, Segment, law_name
-from constructions.cams.profile import FLAT, FOLLOWERS, KNIFE, OSCILLATING, ROLLER, Follower
+from constructions.cams.profile import FLAT, FOLLOWERS, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower, check_face
 
 from .unitset import Units
 
 SECTIONS = frozenset({"cam", "follower", "segment"})
 CAM_KEYS = {"base_radius", "sense", "speed", "divisions", "step"}
-FOLLOWER_KEYS = {"type", "roller_radius", "roller_diameter", "offset", "pivot_distance", "arm_length"}
+FOLLOWER_KEYS = {"type", "roller_radius", "roller_diameter", "offset", "pivot_distance", "arm_length", "face_offset"}
 SEGMENT_KEYS = {"motion", "from", "to", "lift", "law"}
 MAX_DIVISIONS = 72
 
@@ -78,17 +80,23 @@ def read_cam(r, units: Units) -> dict:
     ft = r.table("follower", FOLLOWER_KEYS, {"type"})
     kind = ft["type"]
     if kind not in FOLLOWERS:
-        raise r.fail("follower.type", f"{r.shown(kind)} is not a follower; choose from {', '.join(FOLLOWERS)} "
-                                      f"(an oscillating flat-faced follower is not available yet)")
+        raise r.fail("follower.type", f"{r.shown(kind)} is not a follower; choose from {', '.join(FOLLOWERS)}")
     rr = 0.0
-    osc = kind == OSCILLATING
-    for k in ("pivot_distance", "arm_length"):
-        if osc and k not in ft:
-            raise r.fail(f"follower.{k}", "is missing: an oscillating roller needs its pivot distance and arm length")
-        if not osc and k in ft:
-            raise r.fail(f"follower.{k}", "only an oscillating follower has a pivot and an arm")
+    osc = kind in (OSCILLATING, OSC_FLAT)          # the lift is the arm's swing
+    needs = {"pivot_distance": osc, "arm_length": kind == OSCILLATING}
+    for k, needed in needs.items():
+        if needed and k not in ft:
+            raise r.fail(f"follower.{k}", f"is missing: an {kind} follower needs its "
+                                          f"{'pivot distance and arm length' if kind == OSCILLATING else 'pivot distance'}")
+        if not needed and k in ft:
+            raise r.fail(f"follower.{k}", "only an oscillating roller has an arm length (an oscillating flat face runs "
+                                          "along its arm)" if k == "arm_length" and osc else
+                                          "only an oscillating follower has a pivot and an arm")
+    if "face_offset" in ft and kind != OSC_FLAT:
+        raise r.fail("follower.face_offset", "only an oscillating flat-faced follower has a face offset")
     pivot = r.quantity("follower.pivot_distance", ft["pivot_distance"], "length", units) if osc else 0.0
-    arm = r.quantity("follower.arm_length", ft["arm_length"], "length", units) if osc else 0.0
+    arm = r.quantity("follower.arm_length", ft["arm_length"], "length", units) if kind == OSCILLATING else 0.0
+    face = r.quantity("follower.face_offset", ft["face_offset"], "length", units) if "face_offset" in ft else 0.0
     if kind in (ROLLER, OSCILLATING):
         if "roller_radius" in ft and "roller_diameter" in ft:
             raise r.fail("follower.roller_diameter", "give roller_radius or roller_diameter, not both")
@@ -157,13 +165,25 @@ def read_cam(r, units: Units) -> dict:
         program = Program(segments)
     except ValueError as err:
         raise r.fail("segment", str(err)) from None
-    if osc:
+    if kind == OSCILLATING:
         if not (pivot > 0 and arm > 0):
             raise r.fail("follower.arm_length", "the pivot distance and the arm must be positive")
         if not abs(pivot - arm) < rb + rr < pivot + arm:
             raise r.fail("follower.arm_length", "the arm cannot reach the prime circle from its pivot: base + roller "
                                                 "must lie between |pivot_distance - arm_length| and their sum")
-    follower = Follower(kind, rb, rr, e, sg, pivot, arm)
+    if kind == OSC_FLAT:
+        if not pivot > 0:
+            raise r.fail("follower.pivot_distance", "must be positive")
+        if not -pivot < rb + face < pivot:
+            raise r.fail("follower.face_offset" if face else "follower.pivot_distance",
+                         "the face cannot touch the base circle: base_radius + face_offset must lie within "
+                         "the pivot distance of zero")
+    follower = Follower(kind, rb, rr, e, sg, pivot, arm, face)
+    if kind == OSC_FLAT:
+        try:
+            check_face(program, follower)
+        except ValueError as err:
+            raise r.fail("follower.pivot_distance", str(err)) from None
     return {"model": CamModel(program, follower, omega, divisions)}
 
 

@@ -12,7 +12,7 @@ from shapely.geometry import LinearRing, Polygon
 from constructions.cams.check import closed_form_point, min_base_radius_flat
 from constructions.cams.construction import construct
 from constructions.cams.laws import CYCLOIDAL, DWELL, HARMONIC, LAWS, POLY345, RETURN, RISE, Program, Segment
-from constructions.cams.profile import FLAT, KNIFE, ROLLER, Follower, analyse, evaluate
+from constructions.cams.profile import FLAT, KNIFE, OSC_FLAT, ROLLER, Follower, analyse, cam_size, evaluate
 
 D = math.radians
 IN = 0.0254
@@ -212,7 +212,7 @@ def _chord_errors(p, f, th, C, k=24):
         a, d = C[:, step], ab[:, step]
         u = np.clip(np.sum((M - a) * d, axis=0) / np.sum(d * d, axis=0), 0, 1)
         out[step] = np.maximum(out[step], np.hypot(*(M - (a + u * d))))
-    if same.any() and f.kind != FLAT:
+    if same.any() and f.kind not in (FLAT, OSC_FLAT):
         P = evaluate(p, f, th[same]).pitch
         r0, r1 = C[:, same] - P, C1[:, same] - P
         assert np.allclose(np.hypot(*r0), f.roller_radius, rtol=1e-12)     # on the roller circle
@@ -230,13 +230,18 @@ def _sampling_cam(law, kind, e, sense, rb):
                  Segment(RETURN, D(130), h, law), Segment(DWELL, D(40))])
     if osc:
         return p, Follower(OSCILLATING, rb, 0.006, sense=sense, pivot_distance=0.09, arm_length=0.07)
+    if kind == OSC_FLAT:
+        p = Program([Segment(DWELL, D(50)), Segment(RISE, D(100), D(10), law), Segment(DWELL, D(40)),
+                     Segment(RETURN, D(130), D(10), law), Segment(DWELL, D(40))])
+        # clear of undercut: the smallest radius of the profile stays above 17 mm for every law, sense, offset
+        return p, Follower(OSC_FLAT, rb + 0.05, sense=sense, pivot_distance=0.15, face_offset=e / 2)
     if kind == FLAT:
         return p, Follower(FLAT, rb + 0.02, sense=sense)          # clear of the smallest base radius
     return p, Follower(kind, rb, 0.008 if kind == ROLLER else 0.0, e, sense)
 
 
 @settings(max_examples=60, deadline=None)
-@given(law=st.sampled_from(LAWS), kind=st.sampled_from([KNIFE, ROLLER, FLAT, "oscillating roller"]),
+@given(law=st.sampled_from(LAWS), kind=st.sampled_from([KNIFE, ROLLER, FLAT, "oscillating roller", OSC_FLAT]),
        e=st.floats(-0.012, 0.012), sense=st.sampled_from([1, -1]), rb=st.floats(0.03, 0.05),
        rel=st.sampled_from([1e-4, 1e-6, 1e-7]))
 def test_profile_samples_every_chord_within_the_tolerance(law, kind, e, sense, rb, rel):
@@ -245,8 +250,7 @@ def test_profile_samples_every_chord_within_the_tolerance(law, kind, e, sense, r
     ends, for every law (uniform's corners included) and every follower."""
     from constructions.cams.profile import profile_samples
     p, f = _sampling_cam(law, kind, e, sense, rb)
-    size = (f.base_radius if kind == FLAT else f.prime_radius) + p.lift if kind != "oscillating roller" else \
-        max(f.prime_radius, f.pivot_distance + f.arm_length)
+    size = cam_size(p, f)
     tol = rel * size
     th, C = profile_samples(p, f, tol)
     if np.isnan(th).any():       # uniform motion folds a roller's profile at its convex corners: cut there
@@ -281,7 +285,7 @@ def test_profile_points_default_on_the_notes_cam():
 def test_chord_error_rate_is_the_curve_s_own():
     """g = |C' x C''| / |C'| from s, s', s'' against numerical derivatives of the exact envelope."""
     from constructions.cams.sampling import chord_error_rate
-    for kind in (KNIFE, ROLLER, FLAT, "oscillating roller"):
+    for kind in (KNIFE, ROLLER, FLAT, "oscillating roller", OSC_FLAT):
         p, f = _sampling_cam(HARMONIC, kind, 0.007, -1, 0.04)
         th = np.linspace(D(55), D(140), 30)
         h = 1e-4
@@ -319,3 +323,67 @@ def test_uniform_corners_arcs_and_folds():
         t, pts = profile_samples(q, g, 1e-6 * 0.06)
         assert LinearRing(pts.T).is_simple and (np.isnan(t).any() == (kind == FLAT))
         assert np.max(_chord_errors(q, g, t, pts)) <= 1e-6 * 0.06
+
+
+@settings(max_examples=30, deadline=None)
+@given(law=st.sampled_from(LAWS), swing=st.floats(5, 20), a=st.floats(0.08, 0.14), ef=st.floats(-0.015, 0.015),
+       sense=st.sampled_from([1, -1]))
+def test_oscillating_flat_face_equals_kennedy(law, swing, a, ef, sense):
+    """The oscillating flat face: its envelope (support-function form) against the contact found through the
+    instant centre of cam and arm (Kennedy), at every construction station, to 1e-9 of the cam's size; the
+    contact on its face line, the profile's tangent square to the face's normal, and its radius of curvature
+    against the numerical one."""
+    rb = 0.035
+    p = Program([Segment(RISE, D(120), D(swing), law), Segment(DWELL, D(40)), Segment(RETURN, D(120), D(swing), law),
+                 Segment(DWELL, D(80))])
+    f = Follower(OSC_FLAT, rb, sense=sense, pivot_distance=a, face_offset=ef)
+    assert math.sin(f.beta0) * a == pytest.approx(rb + ef, rel=1e-15)
+    c = construct(p, f, 18, samples=256)
+    size = c.profile.size
+    for i, t in enumerate(c.stations):
+        cf = closed_form_point(p, f, float(t))
+        assert np.hypot(*(c.centres[:, i] - cf["P"])) <= 1e-9 * size
+        assert np.hypot(*(c.contacts[:, i] - cf["C"])) <= 1e-9 * size
+    k = c.station_names["phi_max"]
+    phi = next(m for m in c.measured if m.name == "phi_max").value
+    assert phi == pytest.approx(closed_form_point(p, f, float(c.stations[k]))["phi"], rel=1e-9, abs=1e-12)
+    th = np.linspace(0.02, 2 * math.pi - 0.02, 150)
+    ev = evaluate(p, f, th)
+    assert np.allclose(np.sum(ev.profile * ev.normal, axis=0), ev.support, rtol=0, atol=1e-15)
+    h = 1e-6
+    tang = (evaluate(p, f, th + h).profile - evaluate(p, f, th - h).profile) / (2 * h)
+    assert np.max(np.abs(np.sum(tang * ev.normal, axis=0)) / np.hypot(*tang)) < 1e-6    # an envelope
+    h = 1e-4
+    q0, q1, q2 = (evaluate(p, f, th + j * h).profile for j in (-1, 0, 1))
+    d1, d2 = (q2 - q0) / (2 * h), (q2 - 2 * q1 + q0) / h ** 2
+    rho = np.hypot(*d1) ** 3 / np.abs(d1[0] * d2[1] - d1[1] * d2[0])
+    joins = np.array([0, D(120), D(160), D(280), 2 * math.pi])
+    away = (np.min(np.abs(th[:, None] - joins[None, :]), axis=1) > 3 * h) & (ev.rho_profile > 1e-3)
+    assert np.allclose(rho[away], ev.rho_profile[away], rtol=1e-4)
+    # the face's reach: the contact's distance along the arm from the pivot's foot, a cos(beta) sigma / (sigma + s')
+    s, ds = p.derivatives(th)[:2]
+    assert np.allclose(ev.along, a * np.cos(f.beta0 + s) * sense / (sense + ds), rtol=1e-12)
+
+
+def test_oscillating_flat_face_limits():
+    """A dwell is an arc of the base circle (the face tangent to it); the face that would stop turning against
+    the cam, or swing past square, is refused with the reason; undercut is found and trimmed."""
+    from constructions.cams.profile import check_face
+    p = Program([Segment(RISE, D(120), D(15), CYCLOIDAL), Segment(DWELL, D(40)), Segment(RETURN, D(120), D(15),
+                 CYCLOIDAL), Segment(DWELL, D(80))])
+    f = Follower(OSC_FLAT, 0.04, sense=-1, pivot_distance=0.1, face_offset=0.01)
+    ev = evaluate(p, f, np.linspace(D(290), D(350), 7))
+    assert np.allclose(np.hypot(*ev.profile), 0.04, rtol=1e-14) and np.allclose(ev.rho_profile, 0.04, rtol=1e-14)
+    fast = Program([Segment(RISE, D(10), D(15), CYCLOIDAL), Segment(DWELL, D(40)), Segment(RETURN, D(120), D(15),
+                    CYCLOIDAL), Segment(DWELL, D(190))])       # s' up to 3: the arm outruns a CW cam
+    with pytest.raises(ValueError, match="stops turning"):
+        check_face(fast, f)
+    with pytest.raises(ValueError, match="90 deg"):
+        check_face(Program([Segment(RISE, D(180), D(70), CYCLOIDAL), Segment(RETURN, D(180), D(70), CYCLOIDAL)]), f)
+    with pytest.raises(ValueError):
+        Follower(OSC_FLAT, 0.04, pivot_distance=0.03)                               # the face cannot reach
+    small = Follower(OSC_FLAT, 0.004, sense=-1, pivot_distance=0.1, face_offset=0.0)
+    cp = analyse(p, small)
+    assert cp.undercut and cp.min_rho_profile[1] < 0 and LinearRing(cp.trimmed.T).is_simple
+    big = analyse(p, f)
+    assert big.undercut_free and big.face_width[0] < f.pivot_distance * math.cos(f.beta0) < big.face_width[1]

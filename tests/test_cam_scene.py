@@ -182,3 +182,30 @@ def test_harmonic_example_knife_edge():
     assert jumps[120.0] == pytest.approx(3.6) and jumps[180.0] == pytest.approx(3.6)
     assert jumps[210.0] == pytest.approx(-0.576) and jumps[0.0] == pytest.approx(-0.576)
     assert "above the usual 30 deg" in " ".join(s.warnings)
+
+
+def test_oscillating_flat_faced_scene():
+    """The oscillating flat face through the pipeline: construction points = Kennedy's closed form, the face's
+    reach along the arm in the notes, the swing charted as an angle with named units, the scene's errors."""
+    s = study("oscillating-flat-faced-cam.toml")
+    assert all(c.agrees for c in s.comparisons) and len(s.comparisons) == 9
+    f = s.scene.model.follower
+    assert math.degrees(f.beta0) == pytest.approx(30.0, rel=1e-12)                  # asin((40 + 10) / 100)
+    assert "The face must reach from" in " ".join(s.notes) and not s.warnings
+    labels = {e.series[0].label for e in s.construction.entities() if hasattr(e, "series")}
+    assert "d\u03b1/dt (rad/s\u00b3)" in labels
+    osc = BASE.replace('type = "roller"\nroller_radius = "10 mm"',
+                       'type = "oscillating flat-faced"\npivot_distance = "100 mm"').replace('"20 mm"', '"10 deg"')
+    m = parse_scene(osc, "cam.toml").model
+    assert m.follower.kind == "oscillating flat-faced" and m.follower.face_offset == 0
+    for old, new, key in (('pivot_distance = "100 mm"', 'pivot_distance = "100 mm"\narm_length = "70 mm"',
+                           "follower.arm_length"),
+                          ('pivot_distance = "100 mm"', 'face_offset = "5 mm"', "follower.pivot_distance"),
+                          ('pivot_distance = "100 mm"', 'pivot_distance = "100 mm"\nface_offset = "70 mm"',
+                           "follower.face_offset"),
+                          ('"10 deg"', '"70 deg"', "follower.pivot_distance")):      # swings past square
+        with pytest.raises(SceneError) as e:
+            parse_scene(osc.replace(old, new), "cam.toml")
+        assert f"cam.toml: {key}" in str(e.value)
+    with pytest.raises(SceneError, match="follower.face_offset"):
+        parse_scene(BASE.replace('roller_radius = "10 mm"', 'roller_radius = "10 mm"\nface_offset = "1 mm"'), "cam.toml")

@@ -62,7 +62,7 @@ def svaj_charts(program: Program, omega: float | None, angular: bool = False) ->
                  "angular velocity" if omega else "number"),
                 ("\u03b1 (rad/s\u00b2)" if omega else "d\u00b2\u03c8/d\u03b8\u00b2", "Angular acceleration" if omega
                  else "d\u00b2\u03c8/d\u03b8\u00b2", "angular acceleration" if omega else "number"),
-                ("(rad/s\u00b3)" if omega else "d\u00b3\u03c8/d\u03b8\u00b3", "Angular jerk" if omega
+                ("d\u03b1/dt (rad/s\u00b3)" if omega else "d\u00b3\u03c8/d\u03b8\u00b3", "Angular jerk" if omega
                  else "d\u00b3\u03c8/d\u03b8\u00b3", "number"))
     elif omega:
         spec = (("s", "Displacement s", "length"), ("v", "Velocity v", "velocity"),

@@ -9,7 +9,11 @@ s, s' alone (never the construction's rotations or the envelope's derivative for
 - a flat face touches at ``sigma s'`` from the axis: ``(sigma s', rb + s)`` in the fixed frame (the
   notes' ``x = -(rb + s) sin theta - s' cos theta``, ``y = (rb + s) cos theta - s' sin theta`` for a
   CW cam);
-- the smallest base radius of a flat-faced follower: ``max(-(s + s''))`` over a dense grid of the turn.
+- the smallest base radius of a flat-faced follower: ``max(-(s + s''))`` over a dense grid of the turn;
+- an oscillating flat face by Kennedy's theorem: the face at ``beta = asin((rb + e_f) / a) + psi`` from the
+  line of centres, the common normal square to it through the instant centre of cam and arm on the line
+  of centres (``x_I = s' a / (sigma + s')``), so the contact is the foot of the perpendicular from that
+  centre to the face.
 """
 
 from __future__ import annotations
@@ -19,7 +23,7 @@ import math
 import numpy as np
 
 from .laws import TAU, Program
-from .profile import FLAT, OSCILLATING, Follower
+from .profile import FLAT, OSC_FLAT, OSCILLATING, Follower
 
 
 def _turn_back(theta: float, sense: int, x: float, y: float) -> tuple[float, float]:
@@ -37,6 +41,8 @@ def closed_form_point(program: Program, f: Follower, theta: float) -> dict[str, 
                 "C": _turn_back(theta, sg, sg * ds, f.base_radius + s), "phi": 0.0, "s": s}
     if f.kind == OSCILLATING:
         return _oscillating(f, theta, s, ds)
+    if f.kind == OSC_FLAT:
+        return _oscillating_face(f, theta, s, ds)
     e = f.offset
     d0 = math.sqrt(f.prime_radius ** 2 - e * e)
     phi = math.atan((ds - sg * e) / (d0 + s))
@@ -66,6 +72,22 @@ def _oscillating(f: Follower, theta: float, s: float, ds: float) -> dict:
     dirn = (math.sin(g), -math.cos(g))     # the roller centre's path as the swing grows
     phi = sg * math.atan2(dirn[0] * ny - dirn[1] * nx, dirn[0] * nx + dirn[1] * ny)
     return {"P": _turn_back(theta, sg, *B), "C": _turn_back(theta, sg, *C), "phi": phi, "s": s}
+
+
+def _oscillating_face(f: Follower, theta: float, s: float, ds: float) -> dict:
+    """An oscillating flat face by Kennedy's theorem: the face line at the swung angle, the instant centre I
+    of cam and arm where both move alike on the line of centres, and the contact where the normal to the
+    face through I meets it.  ``P`` is the foot of the perpendicular from O to the face."""
+    a, sg = f.pivot_distance, f.sense
+    beta = math.asin((f.base_radius + f.face_offset) / a) + s
+    nx, ny = math.sin(beta), math.cos(beta)            # the face's normal, away from the cam centre
+    c = a * math.sin(beta) - f.face_offset             # the face's distance from O
+    xi = ds * a / (sg + ds)
+    C = (xi + (c - nx * xi) * nx, (c - nx * xi) * ny)
+    # the pressure angle: between the normal and the way the arm drives its point at the contact
+    vx, vy = C[1], -(C[0] - a)
+    phi = sg * math.atan2(vx * ny - vy * nx, vx * nx + vy * ny)
+    return {"P": _turn_back(theta, sg, c * nx, c * ny), "C": _turn_back(theta, sg, *C), "phi": phi, "s": s}
 
 
 def min_base_radius_flat(program: Program, start: float = 0.0, end: float = TAU, n: int = 200001) -> float:

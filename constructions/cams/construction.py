@@ -32,7 +32,7 @@ from ..quantities import Measured
 from ..record import Circle, Construction, Curve, Diagram, Note, Pivot, Point, Role, Segment, StepKind, Value
 from .charts import svaj_charts
 from .laws import DWELL, TAU, Program
-from .profile import FLAT, KNIFE, OSCILLATING, ROLLER, CamProfile, Follower, analyse, evaluate
+from .profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, CamProfile, Follower, analyse, evaluate
 
 CAM = Diagram("cam", "profile")
 
@@ -74,7 +74,8 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     opposite = "clockwise" if sg > 0 else "counter-clockwise"
     rb, rr, e = f.base_radius, f.roller_radius, f.offset
     osc = f.kind == OSCILLATING
-    lk = "angle" if osc else "length"          # an oscillating follower's lift is its swing
+    swing = f.kind in (OSCILLATING, OSC_FLAT)
+    lk = "angle" if swing else "length"        # an oscillating follower's lift is its swing
 
     # the program in words (given)
     parts = []
@@ -92,11 +93,19 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     what = {KNIFE: "a knife-edge follower", ROLLER: "a roller follower of radius $rr",
             FLAT: "a flat-faced follower",
             OSCILLATING: "an oscillating roller follower of radius $rr on an arm $l pivoted $a from the cam centre "
-                         "(the lift is the arm's swing)"}[f.kind]
+                         "(the lift is the arm's swing)",
+            OSC_FLAT: "an oscillating flat-faced follower pivoted $a from the cam centre, its face "
+                      + ("$ef from the line through the pivot along the arm, towards the cam" if f.face_offset > 0 else
+                         "$ef from the line through the pivot along the arm, away from the cam" if f.face_offset else
+                         "along the line through the pivot") + " (the lift is the arm's swing)"}[f.kind]
     if f.kind in (ROLLER, OSCILLATING):
         vals["rr"] = Value("length", rr)
     if osc:
         vals["l"], vals["a"] = Value("length", f.arm_length), Value("length", f.pivot_distance)
+    if f.kind == OSC_FLAT:
+        vals["a"] = Value("length", f.pivot_distance)
+        if f.face_offset:
+            vals["ef"] = Value("length", abs(f.face_offset))
     off = ""
     if e and f.kind != FLAT:
         vals["e"] = Value("length", abs(e))
@@ -129,6 +138,8 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     # 6: the follower's lines laid out opposite to the rotation (an oscillating follower: its pivots)
     if osc:
         rec, centres = _oscillating_steps(rec, f, th, ev, step, opposite)
+    elif f.kind == OSC_FLAT:
+        rec, centres = _oscillating_face_steps(rec, f, cp, th, ev, step, opposite)
     else:
         rec, centres = _translating_steps(rec, f, program, cp, th, ev, step, opposite)
     contacts = ev.profile
@@ -141,7 +152,8 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     tangent = {OSCILLATING: "tangent to every roller circle (their envelope; its contact points marked)",
                ROLLER: "tangent to every roller circle (their envelope; its contact points marked)",
                KNIFE: "through every knife-edge point (the pitch curve itself)",
-               FLAT: "tangent to every face line (their envelope; its contact points marked)"}[f.kind]
+               FLAT: "tangent to every face line (their envelope; its contact points marked)",
+               OSC_FLAT: "tangent to every face line (their envelope; its contact points marked)"}[f.kind]
     rec = rec.then(f"Draw the cam profile {tangent}.", curve, *marks)
 
     # answers read off the construction
@@ -176,6 +188,21 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
                        f"contact point, is largest at station $t: $phi.",
                        values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
                        kind=StepKind.ANSWER)
+    elif f.kind == OSC_FLAT:
+        # the angle between the face's normal and the way the arm drives its point at the contact (square to
+        # the line from the pivot A_i to the contact point C_i), both read off the drawn lines
+        A = np.stack([f.pivot_distance * np.cos(-sg * th), f.pivot_distance * np.sin(-sg * th)])
+        r = contacts - A
+        px, py = r[1], -r[0]
+        nx, ny = ev.normal                                    # square to the drawn face line, away from O
+        phis = np.arctan2(px * ny - py * nx, px * nx + py * ny) * sg
+        k = int(np.argmax(np.abs(phis)))
+        measured.append(Measured("phi_max", "angle", float(phis[k])))
+        names["phi_max"] = k
+        rec = rec.then("The pressure angle, read at each station between the face's normal and the contact point's "
+                       "path (square to the line from the pivot to the contact), is largest at station $t: $phi.",
+                       values={"t": Value("angle", float(th[k])), "phi": Value("angle", float(abs(phis[k])))},
+                       kind=StepKind.ANSWER)
     elif f.kind == KNIFE:
         k = int(np.argmax(np.abs(ev.pressure_angle)))
         rec = rec.then("The pressure angle is largest at station $t: $phi.",
@@ -183,7 +210,7 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
                                "phi": Value("angle", float(abs(ev.pressure_angle[k])))}, kind=StepKind.ANSWER)
     rec = rec.then("The largest lift in the table: $s.", values={"s": Value(lk, float(ev.s[k_max]))},
                    kind=StepKind.ANSWER)
-    charts = svaj_charts(program, omega, angular=osc)
+    charts = svaj_charts(program, omega, angular=swing)
     jn = [j for j in program.joins() if j.consequence]
     words = ("The s-v-a-j diagrams against the cam angle" + (" with the cam at its given speed" if omega else
                                                             ", per radian of cam angle (no cam speed given)"))
@@ -273,6 +300,50 @@ def _oscillating_steps(rec, f, th, ev, step, opposite):
                    "roller centre at zero lift; swing the arm about A_i through the tabulated angle, away from O, to "
                    "the roller centre, and draw a roller circle of radius $rr about it.", *ents,
                    values={"l": Value("length", f.arm_length), "rr": Value("length", f.roller_radius)})
+    return rec, centres
+
+
+def _pivots(rec, f, th, step, opposite):
+    """The pivot circle and the arm's pivots A_i laid out opposite to the cam's rotation."""
+    n, sg = len(th), f.sense
+    a = -sg * th
+    A = np.stack([f.pivot_distance * np.cos(a), f.pivot_distance * np.sin(a)])
+    pts, notes = [], []
+    label_every = max(1, n // 12)
+    for i in range(n):
+        pts.append(Point(f"A{i}", Role.PATH, CAM, _v(A[:, i])))
+        if i % label_every == 0:
+            notes.append(Note(f"station {i}", Role.LABEL, CAM, _v(A[:, i] * 1.08), f"{_deg(th[i])}\u00b0"))
+    rec = rec.then(f"Draw the pivot circle of radius $a about O and mark the arm's pivot A_i on it every $d, laid out "
+                   f"{opposite} -- opposite to the cam's rotation; A_0 is the pivot at 0 deg.",
+                   Circle("pivot circle", Role.CENTRE_LINE, CAM, Vec(0.0, 0.0), f.pivot_distance, "pivot circle"),
+                   *pts, *notes, values={"a": Value("length", f.pivot_distance), "d": Value("angle", step)})
+    return rec, A
+
+
+def _oscillating_face_steps(rec, f, cp, th, ev, step, opposite):
+    """The pivots laid out opposite to the rotation; from each, the face at the arm's angle beta0 + psi_i to
+    the line A_i O (beta0: the face tangent to the base circle at zero lift), drawn over the reach the
+    contact needs."""
+    n, sg = len(th), f.sense
+    rec, A = _pivots(rec, f, th, step, opposite)
+    N = ev.normal                                  # the face's normal in the cam frame, away from O
+    T = np.stack([-N[1], N[0]])                   # along the face, from the pivot's foot towards the cam
+    foot = A - f.face_offset * N                  # the foot of the perpendicular from A_i on the face
+    lo, hi = cp.face_width
+    pad = 0.08 * (hi - lo) + 0.02 * f.pivot_distance
+    ents = []
+    for i in range(n):
+        p0, p1 = foot[:, i] + (lo - pad) * T[:, i], foot[:, i] + (hi + pad) * T[:, i]
+        ents.append(Segment(f"arm {i}", Role.AUXILIARY, CAM, _v(A[:, i]), _v(p0)))     # the arm, to the face
+        ents.append(Segment(f"face {i}", Role.AUXILIARY, CAM, _v(p0), _v(p1)))
+    off = " and the face $ef from it" if f.face_offset else ""
+    rec = rec.then(f"From each pivot A_i draw the arm at beta_0 + psi_i to the line A_i O{off}, where beta_0 = $b0 "
+                   f"puts the face tangent to the base circle at zero lift (a sin beta_0 = r_b + e_f) and psi_i is "
+                   f"the tabulated swing: the face line at station i.", *ents,
+                   values={"b0": Value("angle", f.beta0), **({"ef": Value("length", abs(f.face_offset))}
+                                                            if f.face_offset else {})})
+    centres = np.stack([ev.support * N[0], ev.support * N[1]])   # the foot of the perpendicular from O
     return rec, centres
 
 

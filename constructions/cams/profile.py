@@ -41,7 +41,10 @@ import numpy as np
 from .laws import TAU, Program
 
 KNIFE, ROLLER, FLAT, OSCILLATING = "knife-edge", "roller", "flat-faced", "oscillating roller"
-FOLLOWERS = (KNIFE, ROLLER, FLAT, OSCILLATING)
+OSC_FLAT = "oscillating flat-faced"
+FOLLOWERS = (KNIFE, ROLLER, FLAT, OSCILLATING, OSC_FLAT)
+FACES = (FLAT, OSC_FLAT)
+"""The followers whose profile is the envelope of face lines (support function), not of roller circles."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -59,6 +62,9 @@ class Follower:
     """Oscillating roller: the arm's pivot A at (pivot_distance, 0) from the cam centre."""
     arm_length: float = 0.0
     """Oscillating roller: the arm from its pivot to the roller centre; the program's lift is its swing (rad)."""
+    face_offset: float = 0.0
+    """Oscillating flat face: the face's distance from the line through the pivot along the arm, towards the
+    cam (0: the face runs through the pivot)."""
 
     def __post_init__(self) -> None:
         if self.kind not in FOLLOWERS:
@@ -71,8 +77,20 @@ class Follower:
             raise ValueError("a roller follower needs a positive roller radius")
         if self.kind not in (ROLLER, OSCILLATING) and self.roller_radius:
             raise ValueError(f"a {self.kind} follower has no roller")
-        if self.kind != FLAT and abs(self.offset) >= self.prime_radius:
+        if self.kind not in FACES and abs(self.offset) >= self.prime_radius:
             raise ValueError("the offset must be smaller than the prime circle's radius")
+        if self.kind != OSC_FLAT and self.face_offset:
+            raise ValueError("only an oscillating flat face has a face offset")
+        if self.kind == OSC_FLAT:
+            a = self.pivot_distance
+            if not a > 0:
+                raise ValueError("an oscillating flat-faced follower needs its pivot distance")
+            if self.arm_length or self.offset:
+                raise ValueError("an oscillating flat face has no arm length or axis offset (its pivot and face "
+                                 "offset place it)")
+            if not -a < self.base_radius + self.face_offset < a:
+                raise ValueError("the face cannot touch the base circle: base radius + face offset must lie "
+                                 "between -pivot distance and the pivot distance")
         if self.kind == OSCILLATING:
             a, l, rp = self.pivot_distance, self.arm_length, self.prime_radius
             if not (a > 0 and l > 0):
@@ -88,6 +106,12 @@ class Follower:
         """Oscillating roller: the arm's angle at zero lift (from +x, the arm above the line OA)."""
         a, l, rp = self.pivot_distance, self.arm_length, self.prime_radius
         return math.acos((rp * rp - a * a - l * l) / (2 * a * l))
+
+    @property
+    def beta0(self) -> float:
+        """Oscillating flat face: the angle at the pivot between the line to the cam centre and the arm at
+        zero lift, where the face touches the base circle: ``a sin beta0 - e_f = rb``."""
+        return math.asin((self.base_radius + self.face_offset) / self.pivot_distance)
 
     @property
     def prime_radius(self) -> float:
@@ -123,6 +147,9 @@ class Evaluation:
     rho_pitch: np.ndarray | None      # radius of curvature of the pitch curve (convex +)
     rho_profile: np.ndarray           # radius of curvature of the profile (convex +)
     normal: np.ndarray                # outward unit normal of the profile at the contact
+    support: np.ndarray | None = None  # a face's distance from O (the face line p . normal = support)
+    along: np.ndarray | None = None   # oscillating flat face: the contact's distance along the face from the
+                                      # foot of the pivot (towards the cam)
 
 
 def evaluate(program: Program, f: Follower, theta) -> Evaluation:
@@ -136,6 +163,8 @@ def evaluate(program: Program, f: Follower, theta) -> Evaluation:
         w = _rot(a, np.ones_like(th), np.zeros_like(th))
         prof = r * u + sg * d1 * w
         return Evaluation(th, s, d1, d2, d3, None, prof, np.zeros_like(th), None, f.base_radius + s + d2, u)
+    if f.kind == OSC_FLAT:
+        return _oscillating_face(f, th, s, d1, d2, d3)
     if f.kind == OSCILLATING:
         # the roller centre B = A + l u(gamma0 - psi): the swing psi = s lifts it away from O
         g = f.gamma0 - s
@@ -170,6 +199,48 @@ def evaluate(program: Program, f: Follower, theta) -> Evaluation:
     else:
         phi = np.arctan2(d1 - sg * e, d0 + s)
     return Evaluation(th, s, d1, d2, d3, P, prof, phi, rho, rho - f.roller_radius, n)
+
+
+def face_terms(f: Follower, s, d1, d2=None):
+    """An oscillating flat face in the fixed frame, from the swing s = psi and its derivatives:
+    ``(beta, c, t, rho, turn)`` -- the arm's angle beta = beta0 + psi at the pivot from the line to O, the
+    face's distance c = a sin beta - e_f from O, the contact's place t along the face from the foot of the
+    perpendicular from O, the profile's radius of curvature rho (None without s'') and the face's turning
+    rate relative to the cam, ``-(sigma + s')`` (see :func:`_oscillating_face`)."""
+    sg, a = f.sense, f.pivot_distance
+    beta = f.beta0 + s
+    cb, sb = np.cos(beta), np.sin(beta)
+    c = a * sb - f.face_offset
+    k = sg + d1
+    t = -a * cb * d1 / k
+    rho = None
+    if d2 is not None:
+        rho = c + a * (sg * cb * d2 - sb * d1 * d1 * k) / (k * k * k)
+    return beta, c, t, rho, -k
+
+
+def _oscillating_face(f: Follower, th, s, d1, d2, d3) -> Evaluation:
+    """The oscillating flat face's envelope.  The arm is pivoted at A = (a, 0); at swing psi it makes beta =
+    beta0 + psi with the line AO, its face's unit normal (away from O) ``n = (sin beta, cos beta)`` and the face
+    ``p . n = c``, ``c = a sin beta - e_f``; in the cam frame the normal's angle is ``phi = pi/2 - beta -
+    sigma theta``.  The envelope of the lines ``p . N(phi) = c`` is ``C = c N + (dc/dphi) T`` (T = J N: the
+    support-function form), with ``dc/dphi = c' / phi' = -a cos(beta) s' / (sigma + s')``; its radius of
+    curvature is ``rho = c + d2c/dphi2 = c + a (sigma cos(beta) s'' - sin(beta) s'^2 (sigma + s')) / (sigma + s')^3``."""
+    sg = f.sense
+    beta, c, t, rho, _ = face_terms(f, s, d1, d2)
+    n = np.stack([np.sin(beta), np.cos(beta)])
+    jn = _J(n)
+    cf = c * n + t * jn                               # the contact in the fixed frame
+    a = -sg * th
+    N = _rot(a, n[0], n[1])
+    prof = _rot(a, cf[0], cf[1])
+    # the pressure angle: between the common normal n and the way the follower's point at the contact is
+    # driven (the swing turns the arm clockwise about A in the fixed frame: v ~ -J (C - A))
+    rx, ry = cf[0] - f.pivot_distance, cf[1]
+    vx, vy = ry, -rx
+    phi = sg * np.arctan2(vx * n[1] - vy * n[0], vx * n[0] + vy * n[1])
+    along = t + f.pivot_distance * np.cos(beta)
+    return Evaluation(th, s, d1, d2, d3, None, prof, phi, None, rho, N, c, along)
 
 
 def convex_curvature_pitch(program: Program, f: Follower, theta) -> np.ndarray:
@@ -296,6 +367,8 @@ def cam_size(program: Program, f: Follower) -> float:
         return f.prime_radius + program.lift
     if f.kind == FLAT:
         return f.base_radius + program.lift
+    if f.kind == OSC_FLAT:
+        return max(f.base_radius, f.pivot_distance)
     return max(f.prime_radius, f.pivot_distance + f.arm_length)
 
 
@@ -305,26 +378,35 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     size = cam_size(program, f)
     phi_t, phi = extremum(program, lambda x: np.abs(evaluate(program, f, x).pressure_angle))
     phi = float(evaluate(program, f, np.array([phi_t])).pressure_angle[0])
-    rp_t, rp = extremum(program, lambda x: evaluate(program, f, x).rho_profile if f.kind == FLAT else
+    if f.kind == OSC_FLAT:
+        check_face(program, f)
+    rp_t, rp = extremum(program, lambda x: evaluate(program, f, x).rho_profile if f.kind in FACES else
                         np.where(evaluate(program, f, x).rho_pitch > 0, evaluate(program, f, x).rho_profile, np.inf),
                         largest=False)
     undercut: list[tuple[float, float]] = []
     cusps: list[float] = []
     min_pitch = None
     rb_min = width = None
-    if f.kind == FLAT:
-        # rho = rb + s + s'' must stay positive: rb > max(-(s + s''))
-        q_t, negq = extremum(program, lambda x: -(program.derivatives(x)[0] + program.derivatives(x)[2]))
-        rb_min = max(negq, 0.0)
+    if f.kind in FACES:
+        # rho = rb + s + s'' must stay positive: rb > max(-(s + s'')) (a translating face)
+        if f.kind == FLAT:
+            q_t, negq = extremum(program, lambda x: -(program.derivatives(x)[0] + program.derivatives(x)[2]))
+            rb_min = max(negq, 0.0)
         tol = CUSP_REL * size
         g = lambda x: -evaluate(program, f, x).rho_profile      # noqa: E731
         if abs(rp) <= tol:
             cusps.append(rp_t)
         elif rp < 0:
             undercut = spans(program, g)
-        lo = float(np.min(f.sense * ev.ds)); hi = float(np.max(f.sense * ev.ds))
-        lo = min(lo, extremum(program, lambda x: f.sense * program.derivatives(x)[1], largest=False)[1])
-        hi = max(hi, extremum(program, lambda x: f.sense * program.derivatives(x)[1])[1])
+        if f.kind == FLAT:
+            lo = float(np.min(f.sense * ev.ds)); hi = float(np.max(f.sense * ev.ds))
+            lo = min(lo, extremum(program, lambda x: f.sense * program.derivatives(x)[1], largest=False)[1])
+            hi = max(hi, extremum(program, lambda x: f.sense * program.derivatives(x)[1])[1])
+        else:
+            # along the face from the foot of the pivot: a cos(beta) sigma / (sigma + s')
+            lo = min(float(np.min(ev.along)), extremum(program, lambda x: evaluate(program, f, x).along,
+                                                       largest=False)[1])
+            hi = max(float(np.max(ev.along)), extremum(program, lambda x: evaluate(program, f, x).along)[1])
         width = (lo, hi)
     elif f.kind in (ROLLER, OSCILLATING):
         kt, kmax = extremum(program, lambda x: convex_curvature_pitch(program, f, x))
@@ -338,6 +420,21 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     out = CamProfile(program, f, ev, size, (phi_t, phi), min_pitch, (rp_t, rp), undercut, cusps, rb_min, width)
     out.trimmed = trim(out) if undercut else ev.profile
     return out
+
+
+def check_face(program: Program, f: Follower) -> None:
+    """An oscillating flat face must turn against the cam all the turn (sigma + s' keeps the sign of sigma:
+    else the face stands still relative to the cam and the envelope runs off) and lift away from it (the
+    arm below square to the line of centres: beta0 + psi < 90 deg)."""
+    t, k = extremum(program, lambda x: f.sense * program.derivatives(x)[1], largest=False)
+    if 1.0 + k <= 1e-9:
+        raise ValueError(f"the arm turns as fast as the cam at {math.degrees(t):.4g} deg (d psi / d theta = "
+                         f"{-f.sense:+d}): the face stops turning relative to the cam and has no envelope; swing "
+                         f"more slowly (a longer rise) or turn the cam the other way")
+    top = f.beta0 + program.lift
+    if not top < math.pi / 2:
+        raise ValueError(f"the arm swings to {math.degrees(top):.4g} deg from the line of centres; beyond 90 deg the "
+                         f"face comes back towards the cam: a longer pivot distance or a smaller swing")
 
 
 def trim(cp: CamProfile, samples: Evaluation | None = None) -> np.ndarray:
@@ -355,9 +452,9 @@ def _trim(f: Follower, ev: Evaluation, size: float) -> np.ndarray:
     n = C.shape[1]
     tol = 1e-9 * size
     keep = np.ones(n, dtype=bool)
-    if f.kind == FLAT:
+    if f.kind in FACES:
         # a point is cut if some face line lies between it and the centre: p . u_j > rb + s_j
-        U, r = ev.normal, f.base_radius + ev.s
+        U, r = ev.normal, (f.base_radius + ev.s if ev.support is None else ev.support)
         for lo in range(0, n, 512):
             d = C[:, lo:lo + 512].T @ U - r[None, :]
             keep[lo:lo + 512] = np.max(d, axis=1) <= tol
@@ -372,7 +469,7 @@ def _trim(f: Follower, ev: Evaluation, size: float) -> np.ndarray:
         return C
     if not keep.any():
         raise ValueError("no point of the profile survives: the follower cuts the whole cam away")
-    if f.kind == FLAT:
+    if f.kind in FACES:
         # the cam a flat face leaves is the intersection of the half-planes behind its face lines: convex,
         # so its boundary is the convex hull of the envelope points no face line cuts (shapely; a corner
         # where the envelope folds becomes the chord across it)
@@ -415,7 +512,7 @@ def _cross_point(a0, a1, b0, b1):
 
 
 __all__ = ["Follower", "KNIFE", "ROLLER", "FLAT", "FOLLOWERS", "evaluate", "analyse", "CamProfile", "Evaluation",
-           "OSCILLATING", "extremum", "spans", "trim", "cam_size", "profile_samples", "profile_points", "chord_error_rate"]
+           "OSCILLATING", "OSC_FLAT", "FACES", "face_terms", "check_face", "extremum", "spans", "trim", "cam_size", "profile_samples", "profile_points", "chord_error_rate"]
 
 
 # the profile alone (export, machining, the benchmark): :mod:`.sampling`, imported last (it uses the above)

@@ -13,7 +13,8 @@ rad^2; ``|C'|^2`` times the curvature).  Rotation leaves ``|C'|`` and ``C' x C''
   ``r = d0 + s``: ``v1 = (sigma r, s' - sigma e)``, ``v2 = (2 sigma s' - e, s'' - r)``.  In a dwell ``g`` is
   the radius of the profile's arc, ``|sqrt(e^2 + r^2) - rr|``.
 - Flat face: ``C = (rb + s) u + sigma s' w`` gives ``C' = sigma rho w`` and ``C'' = sigma rho' w - rho u``
-  (``rho = rb + s + s''``, :mod:`.profile`), so ``g = |rho|``.
+  (``rho = rb + s + s''``, :mod:`.profile`), so ``g = |rho|``.  An oscillating flat face's normal turns at
+  ``phi' = -(sigma + s')`` against the cam, so ``|C'| = |rho phi'|`` and ``g = |rho| (sigma + s')^2``.
 
 The sampling.  The program is cut into its smooth pieces (segments; a parabola's two halves), each stepped
 evenly on its own with its ends as samples (a join, where s'' and the curvature jump, is always a point):
@@ -38,7 +39,7 @@ import math
 import numpy as np
 
 from .laws import DWELL, INNER_JOINS, NORMALISED, Program, end_slope, normalised_low
-from .profile import FLAT, KNIFE, OSCILLATING, Follower, _J
+from .profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, Follower, _J, face_terms
 
 CHORD_MARGIN = 1.05
 """The largest chord-error rate found on a piece's grid is raised by this factor before its step is chosen."""
@@ -86,6 +87,9 @@ def chord_error_rate(f: Follower, s, d1, d2) -> np.ndarray:
     sg = f.sense
     if f.kind == FLAT:
         return np.abs(f.base_radius + s + d2)
+    if f.kind == OSC_FLAT:
+        _, _, _, rho, turn = face_terms(f, s, d1, d2)
+        return np.abs(rho) * turn * turn
     if f.kind == OSCILLATING:
         q, q1, q2 = _fixed_frame(f, s, d1, d2)
         v1 = q1 - sg * _J(q)
@@ -105,6 +109,8 @@ def _dwell_rate(f: Follower, level: float) -> float:
     """A dwell's profile is an arc about O: its radius."""
     if f.kind == FLAT:
         return abs(f.base_radius + level)
+    if f.kind == OSC_FLAT:
+        return abs(f.pivot_distance * math.sin(f.beta0 + level) - f.face_offset)
     if f.kind == OSCILLATING:
         a, L, g = f.pivot_distance, f.arm_length, f.gamma0 - level
         return abs(math.sqrt(a * a + L * L + 2 * a * L * math.cos(g)) - f.roller_radius)
@@ -179,6 +185,10 @@ def profile_samples(program: Program, f: Follower, tolerance: float) -> tuple[np
     # the contact point in the fixed frame (x, y), then turned back through the cam angle
     if f.kind == FLAT:
         x, y = sg * d1, f.base_radius + s
+    elif f.kind == OSC_FLAT:
+        beta, c, t, _, _ = face_terms(f, s, d1)
+        cb, sb = np.cos(beta), np.sin(beta)
+        x, y = c * sb - t * cb, c * cb + t * sb          # c n + t J n, n = (sin beta, cos beta)
     elif f.kind == OSCILLATING:
         q, q1, _ = _fixed_frame(f, s, d1)
         v1 = q1 - sg * _J(q)
@@ -215,6 +225,11 @@ def _corners(program, f, tol, th, C, s, d1, first, corner):
         e, j = hi - 1, hi % N                       # the piece's end and the next piece's start
         if f.kind == FLAT:
             if d1[j] < d1[e]:                       # the contact slides back along the face
+                folds.append(len(parts) - 1)
+            continue
+        if f.kind == OSC_FLAT:
+            t = face_terms(f, s[[e, j]], d1[[e, j]])[2]
+            if sg * (t[1] - t[0]) > 0:              # the contact slides back along the face
                 folds.append(len(parts) - 1)
             continue
         q, q1, _ = _fixed_frame(f, s[[e, j]], d1[[e, j]])
