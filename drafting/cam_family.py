@@ -74,8 +74,10 @@ def _warnings(study) -> tuple[str, ...]:
     if f.kind in (ROLLER, OSCILLATING) and cp.min_rho_pitch is not None:
         t, rho = cp.min_rho_pitch
         if cp.cusp_at:
-            out.append(f"Cusp: the roller radius {u.format('length', f.roller_radius)} equals the pitch curve's "
-                       f"smallest radius of curvature at {u.format('angle', t)}; the profile comes to a point there.")
+            out.append(f"Cusp, at the undercut limit: the roller radius {u.format('length', f.roller_radius)} equals the "
+                       f"pitch curve's smallest radius of curvature ({u.format('length', rho)}, to 1e-9 of the cam's "
+                       f"size) at {u.format('angle', t)}; the profile comes to a point there, and any larger roller "
+                       f"would undercut it.")
         elif cp.undercut:
             out.append(f"Undercut: the roller radius {u.format('length', f.roller_radius)} exceeds the pitch curve's "
                        f"smallest radius of curvature {u.format('length', rho)} (at {u.format('angle', t)}); the "
@@ -122,7 +124,8 @@ def _notes(study) -> tuple[str, ...]:
                    f"{u.format('angle', t)}; the roller must be smaller.")
     t, rho = cp.min_rho_profile
     what = ("where the pitch curve is convex" if f.kind in (ROLLER, OSCILLATING) else "")
-    loops = " (negative: the exact envelope loops back there; the profile drawn is trimmed)" if rho < 0 else ""
+    loops = (" (zero to rounding: the profile's cusp at the undercut limit)" if cp.cusp_at and abs(rho) <= 1e-9 * cp.size
+             else " (negative: the exact envelope loops back there; the profile drawn is trimmed)" if rho < 0 else "")
     out.append(f"Smallest radius of curvature of the profile{' ' + what if what else ''}: {u.format('length', rho)} at "
                f"{u.format('angle', t)}{loops}.")
     if f.kind == OSC_FLAT:

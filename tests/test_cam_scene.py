@@ -209,3 +209,22 @@ def test_oscillating_flat_faced_scene():
         assert f"cam.toml: {key}" in str(e.value)
     with pytest.raises(SceneError, match="follower.face_offset"):
         parse_scene(BASE.replace('roller_radius = "10 mm"', 'roller_radius = "10 mm"\nface_offset = "1 mm"'), "cam.toml")
+
+
+def test_gallery_cam_exactly_at_the_undercut_limit():
+    """The gallery's limit cam: its roller equals the pitch curve's smallest radius of curvature (the sheet
+    warns of the cusp, at the limit, with the angle), the profile is not trimmed, and the same pitch curve
+    with the undercut gallery cam's 18 mm roller does undercut."""
+    s = study("roller-cam-undercut-limit.toml")
+    cp = s.get("profile").profile
+    f = s.scene.model.follower
+    assert f.roller_radius == pytest.approx(cp.min_rho_pitch[1], rel=1e-12)
+    assert f.prime_radius == pytest.approx(0.030, rel=1e-15)
+    assert cp.cusp_at and not cp.undercut and cp.trimmed is cp.samples.profile
+    w = " ".join(s.warnings)
+    assert "Cusp, at the undercut limit" in w and "49.42 deg" in w
+    assert "zero to rounding" in " ".join(s.notes)
+    assert all(c.agrees for c in s.comparisons)
+    past = study("roller-cam-undercut.toml").get("profile").profile
+    assert past.follower.prime_radius == pytest.approx(0.030, rel=1e-15) and past.undercut
+    assert past.min_rho_pitch[1] == pytest.approx(cp.min_rho_pitch[1], rel=1e-12)

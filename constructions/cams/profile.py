@@ -1,4 +1,4 @@
-"""The exact cam profile of a disk cam with a translating follower: the analytic envelope.
+"""The exact cam profile of a disk cam with a translating or oscillating follower: the analytic envelope.
 
 Frames.  In the *fixed frame* the cam turns about the origin O; the follower's axis is parallel to +y at
 the signed offset ``e`` along +x; the roller centre (the *pitch point*) is at ``q = (e, d0 + s)`` with
@@ -24,6 +24,31 @@ lines are ``p . u = rb + s`` with ``u = R(-sigma theta) (0, 1)``; their envelope
 each face at ``sigma s'`` from the axis's foot: ``C = (rb + s) u + sigma s' w``, ``w = R(-sigma theta)(1, 0)``
 (for a CW cam this is the notes' ``x = -(rb + s) sin theta - s' cos theta``, ``y = (rb + s) cos theta -
 s' sin theta``), with radius of curvature ``rb + s + s''`` (needs > 0: rb > max(-(s + s''))).
+
+The oscillating flat face.  The arm is pivoted at A = (a, 0); its face is a straight line fixed to it,
+parallel to the arm's line through A and ``e_f`` from it towards the cam.  With ``beta`` the angle at A
+between the line AO and the arm (the arm above OA), the face's unit normal away from O is ``n = (sin beta,
+cos beta)`` (square to the arm's direction ``J n = (-cos beta, sin beta)``, which points from A over the
+cam), and the face is the line ``p . n = c`` with ``c = n . A - e_f = a sin beta - e_f``, its distance from
+O.  At zero lift it touches the base circle: ``a sin beta0 = rb + e_f``; the swing ``psi = s`` lifts it,
+``beta = beta0 + psi`` (``c`` grows while ``beta < 90 deg``).  In the cam frame the normal's angle is
+``phi = pi/2 - beta - sigma theta``, so the faces are the lines ``p . N(phi) = c`` with ``N = (cos phi, sin
+phi)``.  A family of lines ``p . N = h`` has the envelope ``C = h N + (dh/dphi) T`` (``T = J N``; from
+``C . N = h`` and, differentiating, ``C . T = dh/dphi`` since ``C' . N = 0`` on the envelope), and its radius
+of curvature is ``h + d2h/dphi2`` (the support function's).  Here ``phi' = -(sigma + s')`` and ``c' = a cos
+beta s'``, so the contact lies ``t = c'/phi' = -a cos(beta) s' / (sigma + s')`` along the face from the foot
+of the perpendicular from O, and
+
+    rho = c + t'/phi' = c + a (sigma cos(beta) s'' - sin(beta) s'^2 (sigma + s')) / (sigma + s')^3
+
+(checked against numerical derivatives in the tests).  Along the face from the foot of the perpendicular
+from A (``A - e_f n``) the contact is ``t + a cos beta = sigma a cos(beta) / (sigma + s')`` away: the face's
+reach.  ``sigma + s'`` must keep the sign of sigma (the arm never turns as fast as the cam, else the face
+stands still against it and has no envelope).  Independently, by Kennedy's theorem the common normal (n,
+through the contact) passes through the instant centre of cam and arm on the line of centres, where both
+move alike: ``sigma x_I = -s' (x_I - a)`` (the arm turns at ``-s'`` times the cam's speed), ``x_I = s' a /
+(sigma + s')``; the contact is the foot of the perpendicular from ``(x_I, 0)`` to the face, whose place along
+it, ``J n . (x_I, 0) = -x_I cos beta``, is ``t`` again (:mod:`.check` uses this form).
 
 Pressure angle (the angle between the follower's axis and the common normal at the contact): relative to
 the cam the pitch point moves along ``(sigma (d0 + s), s' - sigma e)``, so ``tan phi = (s' - sigma e) /
