@@ -90,10 +90,10 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
                        Chart("chart rocker angle", Role.GIVEN, chart_diagram("Output angle"), "angle", "crank angle",
                              (series(f"rocker {k.joints[3]}{k.joints[2]}", _rocker_angle(k, s), "angle"),)),
                        kind=StepKind.CONSTRUCTION)
-    elif blocks:
-        sl = next(iter(blocks.values()))
+    elif any(b.on is None for b in blocks.values()):
+        sl = next(b for b in blocks.values() if b.on is None)    # the output: a block on a fixed guide
         x, y = (np.asarray(a) for a in s.positions[sl.joint])
-        d = sl.line.direction if sl.on is None else None
+        d = sl.line.direction
         if d is not None:
             travel = (x - sl.line.point.x) * d.x + (y - sl.line.point.y) * d.y
             rec = rec.then("The slider's travel along its guide against the crank angle (from the point the "

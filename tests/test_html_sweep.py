@@ -209,3 +209,18 @@ def test_in_headless_chromium_the_slider_moves_the_mechanism(tmp_path, cycle, ga
     gap_title = re.search(r"<title>([^<]*)</title>", out[1]).group(1)
     assert gap_title.startswith("selftest-sweep ok") and " gaps=ok:O2B " in gap_title, gap_title
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
+
+
+def test_a_slotted_lever_charts_its_slider_travel():
+    """The quick-return's first block rides in the slotted lever; the output is the block on the fixed
+    guide, and the cycle charts its travel (the position of Q along the guide) for the slider's cursor."""
+    from constructions.cycle import cycle_record
+    from drafting.scene import load_scene
+    sc = load_scene(GALLERY / "quick-return-slotted-lever.toml")
+    th = sc.angle + 2 * math.pi * np.arange(37) / 36
+    s = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    rec = cycle_record(sc.mechanism, s, None, str)
+    (chart,) = [e for e in rec.entities() if getattr(e, "name", "") == "chart slider travel"]
+    guide = next(sl for sl in sc.mechanism.slides if sl.number == 5)
+    assert chart.series[0].label == "block 5 at Q" and guide.on is None and guide.angle == 0
+    assert np.allclose(chart.series[0].y, np.asarray(s.positions["Q"][0]) - guide.through.x, rtol=0, atol=1e-12)
