@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass, replace
-from typing import MutableMapping, Sequence
+from dataclasses import dataclass, field, replace
+from typing import Callable, MutableMapping, Sequence
 
 from constructions.record import Term, VectorEquation
 
@@ -47,9 +47,18 @@ def with_region(cmds: Sequence[Command], region: str) -> list[Command]:
 def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]:
     """Greedy word wrap of rich text into lines no wider than ``width`` mm; neighbouring runs of one
     size, shift and slant are joined into one span as the line is built."""
+    return wrap_range(markup, width, size)[0]
+
+
+def wrap_range(markup: str, width: float, size: float) -> tuple[list[tuple[Span, ...]], float, float]:
+    """:func:`wrap_words`, and the widths ``[lo, hi)`` that give exactly the same lines: every test the
+    greedy wrap makes comes out the same for any width in it (a line's words fit while ``lo <= width``,
+    every break still happens while ``width < hi``).  A word split for being longer than the line
+    gives the empty range ``(width, width)``: nothing else is promised then."""
     words = markup.split()
     if not words:
-        return []
+        return [], 0.0, math.inf
+    lo, hi = 0.0, math.inf
     space = text_width(" ", size)
     lines: list[list[list]] = []
     cur: list[list] = []                   # runs [text, size, shift, italic], merged as they come
@@ -64,6 +73,7 @@ def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]
     for word in words:
         spans, w = _word(word, size)
         if w > width:                                   # a word longer than the line: split it
+            lo = hi = width
             for piece in _split_long(word, width, size):
                 if cur:
                     lines.append(cur)
@@ -73,6 +83,7 @@ def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]
                 cur_w = measure(rich(piece, size)).width
             continue
         if cur and cur_w + space + w > width:
+            hi = min(hi, cur_w + space + w)
             lines.append(cur)
             cur, cur_w = [], 0.0
         if cur:
@@ -81,9 +92,12 @@ def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]
         for sp in spans:
             add(cur, sp)
         cur_w += w
+        lo = max(lo, w, cur_w)
     if cur:
         lines.append(cur)
-    return [tuple(Span(*r) for r in line) for line in lines]
+    if hi <= lo:                                         # a split word (or rounding): this width only
+        lo = hi = width
+    return [tuple(Span(*r) for r in line) for line in lines], lo, hi
 
 
 @functools.lru_cache(maxsize=16384)
@@ -136,8 +150,13 @@ class TooWide(Exception):
 
 @dataclass(frozen=True)
 class Placed:
+    """An item set at one width: its commands (from its top-left corner) and height.  ``same(width)``,
+    when given, says whether setting the item at ``width`` gives exactly this again (a paragraph wraps
+    the same over a range of widths), so a plan trying other widths need not set it again."""
+
     commands: tuple[Command, ...]
     height: float
+    same: Callable[[float], bool] | None = field(default=None, compare=False)
 
 
 class Item:
@@ -159,12 +178,19 @@ class Heading(Item):
     def layout(self, width: float, size: float) -> Placed:
         hs = heading_size(size)
         spans = plain(self.text, hs)
-        if measure(spans).width > width:
-            lines = wrap_words(self.text, width, hs)
+        one = measure(spans).width
+        if one > width:
+            lines, lo, hi = wrap_range(self.text, width, hs)
+
+            def same(w: float) -> bool:
+                return one > w and lo <= w < hi
         else:
             lines = [spans]
+
+            def same(w: float) -> bool:
+                return not one > w
         texts, bottom = stack_lines(lines, 0.0, 0.0, hs, style="heading", name=f"heading {self.text}")
-        return Placed(tuple(texts), bottom)
+        return Placed(tuple(texts), bottom, same)
 
 
 @dataclass(frozen=True)
@@ -183,14 +209,17 @@ class Paragraph(Item):
             indent = text_width(self.label_chars or self.label, size) + 0.6 * size
         if width - indent < 8 * size:
             raise TooWide(self.markup)
-        lines = wrap_words(self.markup, width - indent, size)
+        lines, lo, hi = wrap_range(self.markup, width - indent, size)
+
+        def same(w: float) -> bool:
+            return not w - indent < 8 * size and lo <= w - indent < hi
         texts, bottom = stack_lines(lines, indent, 0.0, size, name=self.name)
         cmds.extend(texts)
         if self.label:
             y = texts[0].y if texts else -measure(plain(self.label, size)).top
             cmds.append(text_at(indent - 0.6 * size, y, plain(self.label, size), anchor="end",
                                 name=f"{self.name} number"))
-        return Placed(tuple(cmds), bottom)
+        return Placed(tuple(cmds), bottom, same)
 
 
 MARK_YES = "\u2713"   # check mark: known
@@ -349,10 +378,15 @@ def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None
     key = (item, round(width, 6), size)
     got = cache.get(key)
     if got is None:
-        try:
-            got = item.layout(width, size)
-        except TooWide as e:
-            got = e
+        ranged = cache.setdefault(("same", item, size), [])
+        got = next((p for p in ranged if p.same(width)), None)   # set already at a width giving the same
+        if got is None:
+            try:
+                got = item.layout(width, size)
+            except TooWide as e:
+                got = e
+            if isinstance(got, Placed) and got.same is not None:
+                ranged.append(got)
         cache[key] = got
     if isinstance(got, TooWide):
         raise got
