@@ -1,0 +1,105 @@
+"""drafting check SCENE --answers FILE (issue 11): a student's values marked item by item at drawing
+accuracy -- right, wrong and missing, each with the expected value; exit 1 unless all are right."""
+
+from __future__ import annotations
+
+import csv
+import io
+from pathlib import Path
+
+import pytest
+
+from drafting.answers import PAPER_MM
+from drafting.cli import main
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLE_1 = ROOT / "gallery" / "notes-velocity-example-1.toml"
+# the notes' velocity Example 1: V_B 500 mm/s at 160 deg, V_C 568.5 mm/s at 180 deg, V_CB 197.4 mm/s at
+# 240 deg, omega_2 2.100 rad/s CW; the velocity polygon is drawn at 1 mm = 10 mm/s
+
+
+def check(tmp_path, text: str, name: str = "answers.csv", scene: Path = EXAMPLE_1, extra=()):
+    f = tmp_path / name
+    f.write_text(text)
+    return main(["check", str(scene), "--answers", str(f), *extra]), f
+
+
+def verdicts(out: str) -> dict[str, str]:
+    got = {}
+    for line in out.splitlines()[1:]:
+        parts = line.split()
+        if len(parts) >= 2 and parts[1] in ("right", "wrong", "missing"):
+            got[parts[0]] = parts[1]
+    return got
+
+
+def test_right_wrong_and_missing_items(tmp_path, capsys):
+    code, _ = check(tmp_path, "quantity,value\nV_B,502 mm/s at 161 deg\nV_C,590 mm/s at 180 deg\n"
+                              "omega_2,2.1 rad/s ccw\n")
+    out = capsys.readouterr().out
+    assert code == 1
+    assert verdicts(out) == {"V_B": "right", "V_C": "wrong", "V_CB": "missing", "ω_2": "wrong"}
+    lines = {l.split()[0]: l for l in out.splitlines()[1:] if l.strip()}
+    assert "expected 568.5 mm/s at 180.0°" in lines["V_C"] and "magnitude off by 21.46 mm/s" in lines["V_C"]
+    assert "expected 197.4 mm/s at 240.0°" in lines["V_CB"]
+    assert "the sense is CW" in lines["ω_2"]
+    assert "1 right, 2 wrong, 1 missing of 4" in out
+
+
+def test_all_right_exits_0_and_toml_reads_too(tmp_path, capsys):
+    code, _ = check(tmp_path, 'V_B = "500 mm/s at 160 deg"\nV_C = "0.57 m/s at 180°"\nV_CB = "195 mm/s at 241 deg"\n'
+                              '"ω_2" = "-2.09 rad/s"\n', name="answers.toml")
+    out = capsys.readouterr().out
+    assert code == 0, out
+    assert set(verdicts(out).values()) == {"right"}
+
+
+def test_drawing_accuracy_is_one_millimetre_at_the_polygon_scale(tmp_path, capsys):
+    # 1 mm = 10 mm/s: 568.5 +- 10 mm/s is right, 11 mm/s off is wrong
+    assert PAPER_MM == 1.0
+    code, _ = check(tmp_path, "V_C,578.4 mm/s at 180 deg\nV_B,500 mm/s at 160 deg\nV_CB,197.4 mm/s at 240 deg\n"
+                              "omega_2,2.1 rad/s cw\n")
+    assert code == 0, capsys.readouterr().out
+    capsys.readouterr()
+    code, _ = check(tmp_path, "V_C,579.6 mm/s at 180 deg\n")
+    assert verdicts(capsys.readouterr().out)["V_C"] == "wrong" and code == 1
+    code, _ = check(tmp_path, "V_C,568.5 mm/s at 183 deg\n")       # the direction within 1 deg only
+    assert verdicts(capsys.readouterr().out)["V_C"] == "wrong"
+
+
+def test_a_bad_answers_file_is_one_sentence(tmp_path, capsys):
+    code, f = check(tmp_path, "V_C,568 furlongs\n")
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and err.startswith(f"drafting: error: {f}: V_C: ")
+    code, f = check(tmp_path, "V_C\n")
+    err = capsys.readouterr().err
+    assert code == 2 and f"{f}: line 1: needs a name and a value" in err
+    assert main(["check", str(EXAMPLE_1), "--answers", str(tmp_path / "none.csv")]) == 2
+    assert "none.csv: no such answers file" in capsys.readouterr().err
+
+
+def test_marking_a_batch_variant(tmp_path, capsys):
+    from test_batch import scene_file
+    scene = scene_file(tmp_path)
+    out = tmp_path / "out"
+    assert main(["batch", str(scene), "--variants", "2", "--seed", "9", "-o", str(out), "--format", "svg"]) == 0
+    capsys.readouterr()
+    key = list(csv.DictReader(io.StringIO((out / "slider-v002-key.csv").read_text())))
+    lines = []
+    for row in key:                       # the key's own values, as a student who drew exactly would write
+        at = f" at {row['direction (deg)']} deg" if row["direction (deg)"] else ""
+        lines.append(f"{row['quantity']},{row['answer']} {row['unit']}{at} {row['sense']}".rstrip())
+    code, _ = check(tmp_path, "\n".join(lines) + "\n", scene=scene, extra=("--variant", "2", "--seed", "9"))
+    said = capsys.readouterr().out
+    assert code == 0, said
+    assert "(variant 2)" in said.splitlines()[0]
+    code, _ = check(tmp_path, "\n".join(lines) + "\n", scene=scene, extra=("--variant", "1", "--seed", "9"))
+    assert code == 1                                # another variant's key: not these values
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--variant", "2"], "--variant needs the batch's --seed"),
+])
+def test_variant_needs_its_seed(tmp_path, capsys, args, words):
+    code, _ = check(tmp_path, "V_C,568 mm/s\n", extra=args)
+    assert code == 2 and words in capsys.readouterr().err

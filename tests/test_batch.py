@@ -1,0 +1,172 @@
+"""Batches of lab-sheet variants (issue 11): [vary] read strictly, the same seed gives byte-identical files
+whatever the executor, a draw that cannot be drawn is drawn again, every key in one CSV, a progress bar."""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import csv
+import io
+from pathlib import Path
+
+import pytest
+
+from drafting.batch import run_batch
+from drafting.cli import main
+from drafting.progress import Progress
+from drafting.scene import SceneError, parse_scene
+
+SCENE = """
+[drawing]
+title = "Slider-crank: velocity polygon"
+number = "LAB-V-001"
+
+[units]
+length = "mm"
+velocity = "mm/s"
+angle = "deg"
+
+[frame]
+O1 = [0, 0]
+
+[[link]]
+number = 1
+joints = ["O1", "B"]
+length = 50
+
+[[link]]
+number = 2
+joints = ["B", "C"]
+length = 94
+
+[[slider]]
+number = 3
+joint = "C"
+through = [0, 0]
+angle = "0 deg"
+
+[input]
+link = 1
+angle = "70 deg"
+omega = "10 rad/s"
+
+[assembly]
+C = "ahead of B"
+
+[ask]
+analyses = ["velocity"]
+"""
+
+VARY = """
+[vary]
+crank_angle = ["30 deg", "150 deg"]
+omega = { from = "5 rad/s", to = "15 rad/s", step = "0.5 rad/s" }
+length.BC = ["80 mm", "120 mm"]
+"""
+
+
+def scene_file(tmp_path: Path, vary: str = VARY, name: str = "slider.toml", text: str = SCENE) -> Path:
+    p = tmp_path / name
+    p.write_text(text + vary)
+    return p
+
+
+def files(folder: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
+
+
+def test_the_same_seed_gives_byte_identical_files_over_any_executor(tmp_path):
+    scene = scene_file(tmp_path)
+    a = run_batch(scene, 3, 11, tmp_path / "a", ("svg", "pdf"))              # the default process pool
+    b = run_batch(scene, 3, 11, tmp_path / "b", ("svg", "pdf"), workers=1)   # one after the other
+    c = run_batch(scene, 3, 12, tmp_path / "c", ("svg",), executor=cf.ThreadPoolExecutor(2))
+    fa, fb = files(tmp_path / "a"), files(tmp_path / "b")
+    assert len(fa) == 3 * 7 + 1                       # per variant 3 SVGs, 3 PDFs, the key CSV; all keys
+    assert fa == fb
+    assert [r.values for r in a] == [r.values for r in b]
+    assert [r.values for r in a] != [r.values for r in c]          # another seed, other values
+    assert len({tuple(r.values) for r in a}) == 3                  # the variants differ
+
+
+def test_every_key_in_one_csv_with_units_in_the_headers(tmp_path):
+    scene = scene_file(tmp_path)
+    results = run_batch(scene, 2, 5, tmp_path / "out", ("svg",), executor=cf.ThreadPoolExecutor(2))
+    rows = list(csv.DictReader(io.StringIO((tmp_path / "out" / "slider-keys.csv").read_text())))
+    assert [r["variant"] for r in rows] == ["1", "2"]
+    header = list(rows[0])
+    assert header[:4] == ["variant", "crank_angle (deg)", "omega (rad/s)", "length.BC (mm)"]
+    assert "V_C (mm/s)" in header and "V_C direction (deg)" in header and "omega_2 (rad/s, CCW +)" in header
+    for r, res in zip(rows, results):
+        one = list(csv.DictReader(io.StringIO((tmp_path / "out" / f"slider-v00{r['variant']}-key.csv").read_text())))
+        v_c = next(x for x in one if x["quantity"] == "V_C")
+        assert float(r["V_C (mm/s)"]) == pytest.approx(float(v_c["answer"]), rel=1e-9)
+        assert dict(res.values)["crank_angle (deg)"] == r["crank_angle (deg)"]
+        assert float(r["crank_angle (deg)"]) % 5 == 0                # on the grid: 30 .. 150 every 5 deg
+
+
+def test_a_draw_that_cannot_be_drawn_is_drawn_again_the_same_way(tmp_path):
+    # the guide 60 mm above O1: a coupler shorter than 60 - 50 sin(angle) cannot reach it
+    text = SCENE.replace('through = [0, 0]', 'through = [0, 60]')
+    scene = scene_file(tmp_path, '[vary]\nlength.BC = ["10 mm", "100 mm"]\ncrank_angle = ["0 deg", "350 deg"]\n',
+                       text=text)
+    a = run_batch(scene, 6, 3, tmp_path / "a", ("svg",), workers=1)
+    b = run_batch(scene, 6, 3, tmp_path / "b", ("svg",), executor=cf.ThreadPoolExecutor(2))
+    notes = [n for r in a for n in r.notes]
+    assert notes and all("drawn again" in n or "skipped" in n for n in notes)
+    assert notes == [n for r in b for n in r.notes]
+    assert files(tmp_path / "a") == files(tmp_path / "b")
+    assert all(r.files for r in a)
+
+
+def test_a_progress_bar_on_a_terminal(tmp_path):
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+    stream = Tty()
+    bar = Progress(4, "batch", stream)
+    bar.shown = stream.isatty()
+    run_batch(scene_file(tmp_path), 4, 1, tmp_path / "out", ("svg",), executor=cf.ThreadPoolExecutor(2),
+              progress=bar)
+    text = stream.getvalue()
+    assert "\rbatch [" in text and "100.0 %" in text and text.endswith("\n")
+
+
+def test_batch_command(tmp_path, capsys):
+    scene = scene_file(tmp_path)
+    out = tmp_path / "out"
+    assert main(["batch", str(scene), "--variants", "2", "--seed", "4", "-o", str(out), "--format", "svg"]) == 0
+    said = capsys.readouterr()
+    assert "2 of 2 variants (seed 4)" in said.out and said.err == ""   # no bar: stderr is not a terminal
+    assert (out / "slider-v002-problem.svg").exists() and (out / "slider-keys.csv").exists()
+
+
+def test_batch_of_a_scene_without_ranges_is_one_sentence(tmp_path, capsys):
+    scene = scene_file(tmp_path, vary="")
+    assert main(["batch", str(scene), "--variants", "2", "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{scene}: vary: is missing" in err
+
+
+@pytest.mark.parametrize("vary, key, words", [
+    ('[vary]\ncrank_speed = ["1 rad/s", "2 rad/s"]', "vary.crank_speed", "unknown key; choose from crank_angle"),
+    ('[vary]\ncrank_angle = ["150 deg", "30 deg"]', "vary.crank_angle", "the range must go up"),
+    ('[vary]\ncrank_angle = ["30 mm", "150 mm"]', "vary.crank_angle", "is not a value of angle"),
+    ('[vary]\ncrank_angle = ["30 deg"]', "vary.crank_angle", "must be a range [from, to]"),
+    ('[vary]\ncrank_angle = { from = "30 deg", to = "40 deg", step = "20 deg" }', "vary.crank_angle.step",
+     "is larger than the range"),
+    ('[vary]\ncrank_angle = { from = "30 deg", upto = "40 deg" }', "vary.crank_angle.upto", "unknown key"),
+    ('[vary]\nlength.BD = ["80 mm", "90 mm"]', "vary.length.BD", "no link joins the joints 'BD'; the links are O1B, BC"),
+    ('[vary]\ntip_speed = ["400 mm/s", "600 mm/s"]', "vary.tip_speed",
+     "varies input.tip_speed, which the scene does not give; the scene gives input.omega"),
+    ('vary = 3', "vary", "must be a table of ranges"),
+])
+def test_bad_ranges_are_one_sentence_naming_file_and_key(vary, key, words):
+    with pytest.raises(SceneError) as e:
+        parse_scene(SCENE + vary if vary.startswith("[") else vary + "\n" + SCENE, "lab.toml")
+    text = str(e.value)
+    assert text.startswith(f"lab.toml: {key}: ") and words in text and "\n" not in text, text
+
+
+def test_ranges_belong_to_linkage_scenes():
+    cam = (Path(__file__).resolve().parents[1] / "gallery" / "notes-roller-cam.toml").read_text()
+    with pytest.raises(SceneError, match=r"cam.toml: vary: is read for linkage scenes"):
+        parse_scene(cam + '\n[vary]\ncrank_angle = ["30 deg", "150 deg"]\n', "cam.toml")

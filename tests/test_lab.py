@@ -1,0 +1,107 @@
+"""Lab sheets (issue 11): the problem sheet holds no answer, its polygon panels are empty but framed at
+the worked sheet's scales, its space diagram is dimensioned; the key is one compact page and a CSV."""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from drafting.cli import main
+from drafting.lab import BLANK, dimensioned, lab_for, problem_construction
+from drafting.scene import load_scene
+from drafting.study import Study
+
+ROOT = Path(__file__).resolve().parents[1]
+SCENES = ["notes-velocity-example-1", "notes-velocity-example-4", "notes-acceleration-example-1",
+          "notes-static-force-sample"]
+
+
+def svg_texts(svg: str) -> list[str]:
+    """Every text element of an SVG as it reads (its tspans joined)."""
+    root = ET.fromstring(svg)
+    return ["".join(t.itertext()) for t in root.iter() if t.tag.endswith("}text") or t.tag == "text"]
+
+
+def found(item, texts: list[str]) -> list[str]:
+    """The texts where a key item shows: its printed value, its magnitude with unit, or its number as a
+    number of its own (not part of a longer one)."""
+    number = re.compile(rf"(?<![\d.]){re.escape(item.number_text)}(?![\d])")
+    return [t for t in texts if item.text in t or item.magnitude_text in t or number.search(t)]
+
+
+@pytest.fixture(scope="module", params=SCENES)
+def lab(request):
+    study = Study(dimensioned(load_scene(ROOT / "gallery" / f"{request.param}.toml"))).run()
+    return lab_for(study)
+
+
+def test_the_problem_sheet_holds_no_value_of_the_key(lab):
+    assert lab.items
+    problem = [t for s in lab.problem for t in svg_texts(s.svg())]
+    worked = [t for s in lab.worked for t in svg_texts(s.svg())]
+    for item in lab.items:
+        assert found(item, worked), f"the search cannot see {item.text} even on the worked sheet"
+        assert found(item, problem) == [], (item.name, item.text, found(item, problem))
+
+
+def test_the_problem_sheet_writes_blanks_where_answers_go(lab):
+    texts = [t for s in lab.problem for t in svg_texts(s.svg())]
+    assert any(BLANK in t for t in texts)
+    assert any(t.startswith("Find:") or "Find:" in t for t in texts)
+    assert not any("clockwise" in t and t.startswith("The trial lines meet") for t in texts)
+
+
+def test_polygon_panels_are_empty_and_framed_at_the_worked_scales(lab):
+    worked = {k: v for s in lab.worked for k, v in s.diagram_scales.items()}
+    problem = {k: v for s in lab.problem for k, v in s.diagram_scales.items()}
+    assert set(problem) == set(worked)
+    for key, scale in worked.items():
+        assert problem[key].units_per_mm == pytest.approx(scale.units_per_mm, rel=1e-12), key
+    for sheet in lab.problem:
+        for key in sheet.diagram_scales:
+            if key == "space":
+                continue
+            region = f"viewport:{key}"
+            texts = ["".join(sp.text for sp in t.spans) for t in sheet.texts() if t.region == region]
+            heading = [t for t in texts if not re.fullmatch(r"[\d.]+|[A-Za-z/²·]+", t)]
+            assert len(heading) == 1, (key, texts)               # the heading and the scale bar only
+            frames = [c for c in sheet.commands if c.name == f"{key} drawing area"]
+            assert len(frames) == 1
+            assert sheet.regions[region].w >= frames[0].w
+
+
+def test_the_space_diagram_is_dimensioned_and_keeps_only_the_given():
+    study = Study(dimensioned(load_scene(ROOT / "gallery" / "notes-velocity-example-1.toml"))).run()
+    lab = lab_for(study)
+    texts = [t for s in lab.problem for t in svg_texts(s.svg())]
+    assert "94.00 mm" in texts and "50.00 mm" in texts                  # the links' dimensions
+    def space_roles(c):
+        return {e.role.value for st in c.steps for e in st.entities if e.diagram.kind == "space"}
+    assert "path" in space_roles(study.construction)                 # the locus of C, on the worked sheet ...
+    shown, _ = problem_construction(study.construction)
+    assert space_roles(shown) == {"given", "label", "dimension"}     # ... not on the problem sheet
+
+
+def test_the_key_is_one_page_and_a_csv_with_units(lab):
+    assert len(lab.key) == 1
+    rows = list(csv.reader(io.StringIO(lab.key_csv())))
+    assert rows[0][:4] == ["quantity", "kind", "unit", "answer"]
+    assert [r[0] for r in rows[1:]] == [i.name for i in lab.items]
+    assert all(r[2] for r in rows[1:])                                # every answer has its unit
+    key_texts = [t for t in svg_texts(lab.key[0].svg())]
+    for item in lab.items:
+        assert any(item.text in t for t in key_texts), item.text
+
+
+def test_render_lab_writes_the_three_documents_and_the_key_csv(tmp_path, capsys):
+    scene = ROOT / "gallery" / "notes-velocity-example-1.toml"
+    assert main(["render", str(scene), "--lab", "--format", "svg", "-o", str(tmp_path)]) == 0
+    stem = scene.stem
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        [f"{stem}-problem.svg", f"{stem}.svg", f"{stem}-key.svg", f"{stem}-key.csv"])
+    assert "wrote" in capsys.readouterr().out
