@@ -277,19 +277,6 @@ def convex_curvature_pitch(program: Program, f: Follower, theta) -> np.ndarray:
 
 # -- searching along the cam angle ---------------------------------------------------------------------------
 
-def _bisect(g, a: float, b: float, ga: float, it: int = 80) -> float:
-    for _ in range(it):
-        m = 0.5 * (a + b)
-        gm = g(m)
-        if (gm > 0) == (ga > 0):
-            a, ga = m, gm
-        else:
-            b = m
-        if b - a < 1e-15:
-            break
-    return 0.5 * (a + b)
-
-
 def segment_breaks(program: Program) -> np.ndarray:
     """The cam angles where the program's pieces meet (segment joins and laws' inner joins)."""
     return np.array(sorted({0.0, TAU} | {j.theta for j in program.joins()} | set(program.starts)))
@@ -302,46 +289,70 @@ def _grid(program: Program, per_piece: int) -> list[np.ndarray]:
 
 def extremum(program: Program, fn, *, per_piece: int = 256, largest: bool = True) -> tuple[float, float]:
     """The cam angle and value of the largest (or smallest) of ``fn(theta)`` (a vectorised function)
-    over the turn: a grid in every piece of the program, refined by narrowing grids round the best."""
-    best = (None, -math.inf)
+    over the turn: a grid in every piece of the program, refined by narrowing grids round each piece's best
+    (every piece at once: one call of ``fn`` per round)."""
     sgn = 1.0 if largest else -1.0
-    for g in _grid(program, per_piece):
-        v = sgn * np.asarray(fn(g), dtype=float)
-        v = np.where(np.isfinite(v), v, -math.inf)
-        k = int(np.argmax(v))
-        lo, hi = g[max(k - 1, 0)], g[min(k + 1, len(g) - 1)]
-        cand = (g[k], v[k])
-        for _ in range(8):                  # each round narrows the bracket 16-fold (vectorised)
-            if not hi > lo:
-                break
-            x = np.linspace(lo, hi, 33)
-            w = sgn * np.asarray(fn(x), dtype=float)
-            w = np.where(np.isfinite(w), w, -math.inf)
-            j = int(np.argmax(w))
-            if w[j] >= cand[1]:
-                cand = (x[j], w[j])
-            lo, hi = x[max(j - 1, 0)], x[min(j + 1, 32)]
-        if cand[1] > best[1]:
-            best = cand
-    return float(best[0]), float(sgn * best[1])
+
+    def f(x: np.ndarray) -> np.ndarray:
+        w = sgn * np.asarray(fn(x.ravel()), dtype=float).reshape(x.shape)
+        return np.where(np.isfinite(w), w, -math.inf)
+
+    g = np.array(_grid(program, per_piece))                 # pieces x per_piece
+    v = f(g)
+    rows = np.arange(len(g))
+    k = np.argmax(v, axis=1)
+    cand_x, cand_v = g[rows, k], v[rows, k]
+    lo, hi = g[rows, np.maximum(k - 1, 0)], g[rows, np.minimum(k + 1, per_piece - 1)]
+    u = np.linspace(0.0, 1.0, 33)
+    for _ in range(8):                  # each round narrows every bracket 16-fold
+        x = lo[:, None] + (hi - lo)[:, None] * u[None, :]
+        w = f(x)
+        j = np.argmax(w, axis=1)
+        better = w[rows, j] >= cand_v
+        cand_x = np.where(better, x[rows, j], cand_x)
+        cand_v = np.where(better, w[rows, j], cand_v)
+        lo, hi = x[rows, np.maximum(j - 1, 0)], x[rows, np.minimum(j + 1, 32)]
+    b = int(np.argmax(cand_v))
+    return float(cand_x[b]), float(sgn * cand_v[b])
+
+
+def _boundaries(g, a: np.ndarray, b: np.ndarray, ga: np.ndarray) -> np.ndarray:
+    """Where ``g`` changes sign inside each bracket [a, b] (g(a) = ga on the one side): every bracket cut in
+    16 at once per round (one call of ``g``), to 1e-15 rad."""
+    u = np.arange(1, 16) / 16.0
+    pos = ga > 0
+    for _ in range(16):
+        if not np.max(b - a) >= 1e-15:
+            break
+        x = a[:, None] + (b - a)[:, None] * u[None, :]
+        side = (np.asarray(g(x.ravel()), dtype=float).reshape(x.shape) > 0) == pos[:, None]
+        # the first point on the far side (16: none, the boundary lies past the last point)
+        first = np.where(side.all(axis=1), 15, np.argmin(side, axis=1))
+        xa = np.concatenate([a[:, None], x, b[:, None]], axis=1)
+        rows = np.arange(len(a))
+        a, b = xa[rows, first], xa[rows, first + 1]
+    return 0.5 * (a + b)
 
 
 def spans(program: Program, g, *, per_piece: int = 256) -> list[tuple[float, float]]:
-    """The cam-angle intervals where ``g(theta) > 0`` (g vectorised), ends found by bisection."""
+    """The cam-angle intervals where ``g(theta) > 0`` (g vectorised), ends found by cutting their brackets."""
+    grid = np.array(_grid(program, per_piece))
+    v = np.asarray(g(grid.ravel()), dtype=float).reshape(grid.shape)
+    inside = v > 0
+    # the brackets of every change of side, found together
+    pi, ki = np.nonzero(inside[:, 1:] != inside[:, :-1])
+    ends = _boundaries(g, grid[pi, ki], grid[pi, ki + 1], v[pi, ki]) if len(pi) else np.zeros(0)
     out: list[list[float]] = []
-    for grid in _grid(program, per_piece):
-        v = np.asarray(g(grid), dtype=float)
-        scalar = lambda x: float(g(np.array([x]))[0])     # noqa: E731
-        inside = v > 0
-        start = grid[0] if inside[0] else None
-        for k in range(1, len(grid)):
-            if inside[k] and not inside[k - 1]:
-                start = _bisect(scalar, grid[k - 1], grid[k], v[k - 1])
-            elif not inside[k] and inside[k - 1]:
-                out.append([start, _bisect(scalar, grid[k - 1], grid[k], v[k - 1])])
+    for p in range(len(grid)):
+        start = grid[p, 0] if inside[p, 0] else None
+        for k, x in zip(ki[pi == p], ends[pi == p]):
+            if inside[p, k + 1]:
+                start = x
+            else:
+                out.append([start, x])
                 start = None
         if start is not None:
-            out.append([start, grid[-1]])
+            out.append([start, grid[p, -1]])
     merged: list[list[float]] = []
     for a, b in out:
         if merged and abs(a - merged[-1][1]) < 1e-12:
@@ -405,9 +416,11 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     phi = float(evaluate(program, f, np.array([phi_t])).pressure_angle[0])
     if f.kind == OSC_FLAT:
         check_face(program, f)
-    rp_t, rp = extremum(program, lambda x: evaluate(program, f, x).rho_profile if f.kind in FACES else
-                        np.where(evaluate(program, f, x).rho_pitch > 0, evaluate(program, f, x).rho_profile, np.inf),
-                        largest=False)
+    def profile_rho(x):
+        e = evaluate(program, f, x)
+        return e.rho_profile if f.kind in FACES else np.where(e.rho_pitch > 0, e.rho_profile, np.inf)
+
+    rp_t, rp = extremum(program, profile_rho, largest=False)
     undercut: list[tuple[float, float]] = []
     cusps: list[float] = []
     min_pitch = None
@@ -415,7 +428,7 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     if f.kind in FACES:
         # rho = rb + s + s'' must stay positive: rb > max(-(s + s'')) (a translating face)
         if f.kind == FLAT:
-            q_t, negq = extremum(program, lambda x: -(program.derivatives(x)[0] + program.derivatives(x)[2]))
+            q_t, negq = extremum(program, lambda x: -sum(program.derivatives(x)[0:3:2]))
             rb_min = max(negq, 0.0)
         tol = CUSP_REL * size
         g = lambda x: -evaluate(program, f, x).rho_profile      # noqa: E731
@@ -484,12 +497,17 @@ def _trim(f: Follower, ev: Evaluation, size: float) -> np.ndarray:
             d = C[:, lo:lo + 512].T @ U - r[None, :]
             keep[lo:lo + 512] = np.max(d, axis=1) <= tol
     else:
+        # squared distances against the squared limit (the same decision as the distances, without a root)
         P = ev.pitch
+        limit = (f.roller_radius - tol) ** 2
         for lo in range(0, n, 512):
             c = C[:, lo:lo + 512]
             dx = c[0][:, None] - P[0][None, :]
             dy = c[1][:, None] - P[1][None, :]
-            keep[lo:lo + 512] = np.min(np.hypot(dx, dy), axis=1) >= f.roller_radius - tol
+            dx *= dx
+            dy *= dy
+            dx += dy
+            keep[lo:lo + 512] = np.min(dx, axis=1) >= limit
     if keep.all():
         return C
     if not keep.any():
