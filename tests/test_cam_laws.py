@@ -121,3 +121,18 @@ def test_chart_pieces_keep_their_one_sided_values():
     k = int(np.flatnonzero(np.isclose(x, D(120)))[0])
     assert j[k] == pytest.approx(4 * math.pi ** 2 * 0.01 / D(120) ** 3, rel=1e-6)
     assert math.isnan(j[k + 1]) and j[k + 2] == 0.0
+
+
+def test_profile_shortcuts_equal_the_laws():
+    """The profile-only path's f, f' (fewer operations) and its exact slopes at ends and inner joins equal the
+    laws' own formulas."""
+    import numpy as np
+
+    from constructions.cams.laws import LAWS, end_slope, normalised, normalised_low
+    u = np.linspace(0.0, 1.0, 1001)
+    for law in LAWS:
+        f = normalised(law, u)
+        lo = normalised_low(law, u)
+        assert np.allclose(lo[0], f[0], rtol=0, atol=1e-12) and np.allclose(lo[1], f[1], rtol=0, atol=1e-12)   # Horner
+        for x in (0.0, 1.0) + ((0.5,) if law == "parabolic" else ()):
+            assert end_slope(law, x) == pytest.approx(float(normalised(law, np.array([x]))[1][0]), abs=1e-14)
