@@ -53,8 +53,9 @@ def csv_text(scene, pts: np.ndarray, tol: float) -> str:
     f = scene.model.follower
     lines = [f"# cam profile of {scene.title}", f"# units: {unit}",
              f"# tolerance: {conv(tol):.6g} {unit} (largest distance of a chord from the exact profile)",
-             f"# cam turns {'counter-clockwise' if f.sense > 0 else 'clockwise'}; frame at cam angle 0, follower "
-             f"axis along +y; {pts.shape[1]} points, closed", "x,y"]
+             f"# cam turns {'counter-clockwise' if f.sense > 0 else 'clockwise'}; frame at cam angle 0, "
+             f"{'the arm pivoted on +x' if f.pivot_distance else 'follower axis along +y'}; {pts.shape[1]} points, "
+             f"closed", "x,y"]
     lines += [f"{conv(x):.9f},{conv(y):.9f}" for x, y in zip(pts[0], pts[1])]
     return "\n".join(lines) + "\n"
 

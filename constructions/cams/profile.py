@@ -74,9 +74,10 @@ FACES = (FLAT, OSC_FLAT)
 
 @dataclass(frozen=True, slots=True)
 class Follower:
-    """A translating follower: its ``kind``, the cam's base circle radius ``rb`` (to the profile), the
-    roller radius ``rr`` (roller only), the signed ``offset`` e of its axis (+x of the fixed frame, the
-    axis pointing +y), and the cam's sense ``sense`` (+1 CCW, -1 CW)."""
+    """A follower: its ``kind``, the cam's base circle radius ``rb`` (to the profile), the roller radius ``rr``
+    (roller only), the signed ``offset`` e of a translating follower's axis (+x of the fixed frame, the axis
+    pointing +y), and the cam's sense ``sense`` (+1 CCW, -1 CW); an oscillating follower's pivot, arm and
+    face below."""
 
     kind: str
     base_radius: float
