@@ -177,7 +177,10 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
             shown[0] += 1
         bar.update(shown[0])
     jobs = [(str(p), str(out), tuple(formats), paper, lab) for p in scenes]
-    parallel.run(_render_job, jobs, executor=executor, on_done=on_done, folders=[out], workers=workers)
+    try:
+        parallel.run(_render_job, jobs, executor=executor, on_done=on_done, folders=[out], workers=workers)
+    except parallel.WorkerLost as e:
+        raise UserError(f"render: {e}") from None
     bar.finish()
     return 2 if failed[0] else 0
 
@@ -285,6 +288,7 @@ def cmd_batch(path: Path, variants: int, seed: int, out: Path, formats: Sequence
     then every key as one CSV."""
     from .batch import run_batch
     from .export import ExportError
+    from .parallel import WorkerLost
     from .progress import Progress
     if variants < 1:
         raise UserError(f"{path}: --variants must be at least 1, not {variants}")
@@ -300,6 +304,8 @@ def cmd_batch(path: Path, variants: int, seed: int, out: Path, formats: Sequence
     except SceneError as e:
         raise UserError(str(e)) from None
     except ExportError as e:
+        raise UserError(f"{path}: {e}") from None
+    except WorkerLost as e:
         raise UserError(f"{path}: {e}") from None
     failed = 0
     for r in results:

@@ -38,6 +38,10 @@ GRACE_SECONDS = 20.0
 """How long an interrupted worker may take to remove its temporary files before it is killed."""
 
 
+class WorkerLost(Exception):
+    """A worker process of the pool died (killed from outside): one sentence."""
+
+
 def cores() -> int:
     """The cores this process may run on."""
     try:
@@ -123,17 +127,22 @@ def run(fn: Callable[[Any], Any], jobs: Sequence[Any], *, executor: cf.Executor 
             futures[executor.submit(_call, fn, job)] = i
         for fut in cf.as_completed(futures):
             i = futures[fut]
-            results[i] = fut.result()
+            try:
+                results[i] = fut.result()
+            except cf.process.BrokenProcessPool:
+                raise WorkerLost("a worker process ended before its job was done (killed from outside?); "
+                                 "the jobs that finished are written whole, the others not at all") from None
             if on_done is not None:
                 on_done(i, results[i])
         clean = True
         return results
     finally:
         if not clean:
-            for f in futures:
-                f.cancel()
             if own:
                 _stop_pool(executor, folders)
+            else:
+                for f in futures:
+                    f.cancel()
         elif own:
             executor.shutdown(wait=True)
 
@@ -142,8 +151,12 @@ def _stop_pool(executor: cf.Executor, folders: Iterable[os.PathLike | str]) -> N
     """End a process pool now: SIGTERM to every worker (each removes its temporary files), wait, SIGKILL
     what is left, then remove the temporary files of the workers that are gone."""
     with faults.deferred():
-        procs = list(getattr(executor, "_processes", {}).values()) if isinstance(executor, cf.ProcessPoolExecutor) \
-            else []
+        procs = list((getattr(executor, "_processes", None) or {}).values()) \
+            if isinstance(executor, cf.ProcessPoolExecutor) else []
+        try:          # the pool's own thread cancels what has not started (cancelling it here races it)
+            executor.shutdown(wait=False, cancel_futures=True)
+        except Exception:
+            pass
         for p in procs:
             try:
                 if p.is_alive():
@@ -158,10 +171,6 @@ def _stop_pool(executor: cf.Executor, folders: Iterable[os.PathLike | str]) -> N
                 except (OSError, ValueError):
                     pass
                 p.join(5.0)
-        try:
-            executor.shutdown(wait=False, cancel_futures=True)
-        except Exception:
-            pass
         from .export import remove_stale_temporaries
         for folder in folders:
             remove_stale_temporaries(folder)

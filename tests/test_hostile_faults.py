@@ -237,3 +237,112 @@ def test_an_interrupt_while_loading_is_one_line_too():
         text = err.decode()
         assert "Traceback" not in text, text
         assert p.returncode in (130, -signal.SIGINT) and text.count("\n") <= 1, (p.returncode, text)
+
+
+# -- a batch over worker processes (issue 11) ----------------------------------------------------------------
+
+BATCH_FORMATS = ("svg", "pdf")
+
+
+def _batch_scene(tmp_path: Path) -> Path:
+    from test_batch import SCENE, VARY
+    p = tmp_path / "lab.toml"
+    p.write_text(SCENE + VARY)
+    return p
+
+
+def _start_batch(out: Path, scene: Path, variants: int = 8) -> subprocess.Popen:
+    env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
+    return subprocess.Popen([sys.executable, "-m", "drafting.cli", "batch", str(scene), "--variants", str(variants),
+                             "--seed", "1", "-o", str(out), "--format", ",".join(BATCH_FORMATS), "--workers", "2"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=ROOT)
+
+
+def assert_batch_whole(folder: Path, stem: str, variants: int) -> int:
+    """No temporary file; each variant's files (problem sheet, worked solution, key, key CSV) all there or
+    none; the keys CSV only with a finished batch.  Returns how many variants are complete."""
+    assert temporaries(folder) == []
+    names = set(os.listdir(folder)) if folder.is_dir() else set()
+    complete = 0
+    known = {f"{stem}-keys.csv"}
+    for i in range(1, variants + 1):
+        v = f"{stem}-v{i:03d}"
+        want = {f"{v}{part}.{f}" for part in ("-problem", "", "-key") for f in BATCH_FORMATS} | {f"{v}-key.csv"}
+        have = names & want
+        assert have in (set(), want), (v, sorted(have))
+        complete += have == want
+        known |= want
+    assert names <= known, sorted(names - known)
+    return complete
+
+
+def _children(pid: int) -> list[int]:
+    try:
+        return [int(c) for c in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
+    except OSError:
+        return []
+
+
+def _gone(pid: int) -> bool:
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().split(") ", 1)[1].startswith("Z")   # a zombie is gone
+    except OSError:
+        return True
+
+
+@linux_proc
+@pytest.mark.parametrize("sig, moment", [(signal.SIGTERM, "temporary file exists"),
+                                         (signal.SIGINT, "first variant written"),
+                                         (signal.SIGTERM, "after 1.5")])
+def test_an_interrupted_batch_leaves_no_half_written_file(tmp_path, sig, moment):
+    out = tmp_path / "out"
+    scene = _batch_scene(tmp_path)
+    p = _start_batch(out, scene)
+    workers: list[int] = []
+    try:
+        assert _wait(lambda: _handlers_installed(p.pid) or p.poll() is not None), "main() never started"
+        if moment == "temporary file exists":
+            assert _wait(lambda: bool(temporaries(out)) or p.poll() is not None)
+        elif moment == "first variant written":
+            assert _wait(lambda: (out / "lab-v001-key.csv").exists() or (out / "lab-v002-key.csv").exists()
+                         or p.poll() is not None)
+        else:
+            time.sleep(float(moment.split()[1]))
+        workers = _children(p.pid)
+        if p.poll() is None:
+            p.send_signal(sig)
+        stdout, stderr = p.communicate(timeout=120)
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.communicate()
+    assert "Traceback" not in stderr, stderr
+    assert all(_gone(w) for w in workers), "a worker outlived the batch"
+    complete = assert_batch_whole(out, "lab", 8)
+    if p.returncode == 0:
+        assert complete == 8 and (out / "lab-keys.csv").exists()
+        return
+    name = "SIGINT" if sig == signal.SIGINT else "SIGTERM"
+    assert p.returncode == 128 + sig, stderr
+    assert stderr.splitlines() == [f"drafting: interrupted by {name}; no file was left half-written"]
+    assert not (out / "lab-keys.csv").exists()
+
+
+@linux_proc
+def test_kill_9_of_a_batch_ends_its_workers_and_leaves_nothing_half_written(tmp_path):
+    out = tmp_path / "out"
+    scene = _batch_scene(tmp_path)
+    p = _start_batch(out, scene)
+    try:
+        assert _wait(lambda: bool(temporaries(out)) or p.poll() is not None)
+        workers = _children(p.pid)
+        p.kill()                                           # SIGKILL: no handler of the parent runs
+        p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            p.kill()
+    # each worker is told of its parent's death (SIGTERM) and removes its own temporary files
+    assert _wait(lambda: all(_gone(w) for w in workers), timeout=120), "the workers outlived their parent"
+    assert_batch_whole(out, "lab", 8)
+    assert main(["batch", str(scene), "--variants", "1", "-o", str(out), "--format", "svg"]) == 0
+    assert temporaries(out) == []
