@@ -94,7 +94,8 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
         ext = measure(spans)
         hw, hh = ext.width / 2 + LABEL_PAD, ext.height / 2 + LABEL_PAD
-        incident = incident_directions(req.anchor, d.segments) if req.kind == "point" else []
+        incident = (incident_directions(req.anchor, [d.segments[j] for j in segs.around(req.anchor, 0.2)])
+                    if req.kind == "point" else [])
         # the neighbourhood every candidate box lies in: only what is in it can collide
         reach = _reach(req, hw, hh)
         near_segs = segs.near(reach)
@@ -143,8 +144,11 @@ def _best_candidate(cands: list, hw: float, hh: float, plot: Rect, near_placed: 
     ok = ((left >= plot.left - tol) & (right <= plot.right + tol)
           & (top >= plot.top - tol) & (bottom <= plot.bottom + tol))
     for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)):
-        for o in rects:
-            ok &= ~((left < o.right + gap) & (o.left < right + gap) & (top < o.bottom + gap) & (o.top < bottom + gap))
+        if rects:
+            o = np.array([(r.left, r.top, r.right, r.bottom) for r in rects])
+            hit = ((left[:, None] < o[:, 2] + gap) & (o[:, 0] < right[:, None] + gap)
+                   & (top[:, None] < o[:, 3] + gap) & (o[:, 1] < bottom[:, None] + gap))
+            ok &= ~hit.any(axis=1)
     if not ok.any():
         return None
     thin, thick = near_segs.covered(left, top, right, bottom)
@@ -169,6 +173,14 @@ class _Segments:
                                np.maximum(e[:, 0], e[:, 2]), np.maximum(e[:, 1], e[:, 3])], axis=1)
         self.heavy = np.array([bool(h) for _, _, h in segments], dtype=bool)
         self.length = np.array([math.hypot(b[0] - a[0], b[1] - a[1]) for a, b, _ in segments], dtype=float)
+
+    def around(self, p: Pt, margin: float) -> list[int]:
+        """Indices, in order, of the segments whose boxes grown by ``margin`` hold ``p`` (every line
+        that can leave ``p`` within a tolerance below ``margin`` / 2 is among them)."""
+        b = self.boxes
+        keep = ((b[:, 0] - margin <= p[0]) & (p[0] <= b[:, 2] + margin)
+                & (b[:, 1] - margin <= p[1]) & (p[1] <= b[:, 3] + margin))
+        return np.flatnonzero(keep).tolist()
 
     def near(self, reach: Rect) -> "_Segments":
         """The segments whose boxes meet ``reach``, in their order."""
