@@ -6,8 +6,10 @@ glyphs it uses: a subset of the shipped DejaVu Sans (and its oblique, for italic
 ``@font-face`` rule under the font's own family name, which a browser prefers to any installed font.
 
 The subset is the engine's repertoire -- printable ASCII and the Greek letters and symbols its sheets
-write -- made once per process (~0.1 s), plus whatever else a sheet's text holds (a title in another
-script), made per such set and cached.  PDF and PNG are set by cairo from the same font through
+write -- shipped ready-made beside the fonts (``*-repertoire.woff``: subsetting costs ~0.3 s and
+importing fontTools as much again, which a one-sheet render would pay every time; a test checks the
+shipped files are what :func:`_subset` makes now, and ``python -m drafting.font_embed`` remakes them),
+plus whatever else a sheet's text holds (a title in another script), made per such set and cached.  PDF and PNG are set by cairo from the same font through
 fontconfig (drafting.export), which ignores the rule.
 """
 
@@ -47,13 +49,24 @@ def _subset(path: Path, chars: frozenset[str]) -> bytes:
     return buf.getvalue()
 
 
+def shipped(name: str) -> Path:
+    """Where the ready-made repertoire subset of the font file ``name`` is kept."""
+    return FONTS / name.replace(".ttf", "-repertoire.woff")
+
+
+def _repertoire_subset(name: str) -> bytes:
+    path = shipped(name)
+    return path.read_bytes() if path.exists() else _subset(FONTS / name, REPERTOIRE)
+
+
 @lru_cache(maxsize=32)
 def font_face_css(extra: frozenset[str] = frozenset()) -> str:
     """The @font-face rules (regular and italic) for the repertoire and ``extra`` characters."""
     chars = REPERTOIRE | extra
     rules = []
     for italic, name in FONT_FILES.items():
-        data = base64.b64encode(_subset(FONTS / name, chars)).decode("ascii")
+        woff = _repertoire_subset(name) if not extra else _subset(FONTS / name, chars)
+        data = base64.b64encode(woff).decode("ascii")
         rules.append(f"@font-face{{font-family:\"{FONT_FAMILY}\";font-style:{'italic' if italic else 'normal'};"
                      f"src:url(data:font/woff;base64,{data}) format(\"woff\");}}")
     return "".join(rules)
@@ -64,3 +77,18 @@ def css_for(texts) -> str:
     characters, surrogates and non-characters already replaced)."""
     used = frozenset(xml_safe("".join(texts)))
     return font_face_css(frozenset(c for c in used - REPERTOIRE if c.isprintable()))
+
+
+def write_shipped() -> list[Path]:
+    """Remake the shipped repertoire subsets (after REPERTOIRE or a font changes)."""
+    out = []
+    for name in FONT_FILES.values():
+        path = shipped(name)
+        path.write_bytes(_subset(FONTS / name, REPERTOIRE))
+        out.append(path)
+    return out
+
+
+if __name__ == "__main__":
+    for p in write_shipped():
+        print(f"wrote {p}")

@@ -58,3 +58,11 @@ def test_the_subset_is_the_same_bytes_whatever_the_clock(monkeypatch):
             monkeypatch.setenv("SOURCE_DATE_EPOCH", epoch)
         got.append(_subset(FONTS / "DejaVuSans.ttf", chars))
     assert len(set(got)) == 1
+
+
+def test_the_shipped_repertoire_subsets_are_what_subsetting_makes_now():
+    """The ready-made subsets in drafting/fonts (so a one-sheet render does not subset) are current:
+    remake them with ``python -m drafting.font_embed`` when this fails."""
+    from drafting.font_embed import FONT_FILES, FONTS, REPERTOIRE, _subset, shipped
+    for name in FONT_FILES.values():
+        assert shipped(name).read_bytes() == _subset(FONTS / name, REPERTOIRE), name
