@@ -228,7 +228,8 @@ def sheet_plan(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, formats:
             plan += [(f, out_dir / f"{stem}-{k + 1}.{f}", k) for k in range(n)]
     check_names([final for _, final, _ in plan], stem)
 
-    svgs = [sheet_to_svg(s).encode("utf-8") for s in sheets]
+    # the SVG text only when SVG files are written (PDF and PNG are drawn from the commands)
+    svgs = [sheet_to_svg(s).encode("utf-8") for s in sheets] if "svg" in fmts else []
 
     def produce(f: str, page: int | None) -> bytes:
         buf = io.BytesIO()
