@@ -32,7 +32,7 @@ from typing import Mapping
 
 import numpy as np
 
-from .forces.bodies import Contact, SlotPin, connections, frame_number, moving_bodies, points_of_body
+from .bodies import Contact, SlotPin, connections, frame_number, moving_bodies, points_of_body
 from .geometry import Vec
 from .linkage import Mechanism, Pose, slide_line
 from .quantities import Measured

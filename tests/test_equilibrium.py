@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, assume, given, settings, strategies as st
 import constructions.forces.equilibrium as eqm
 from constructions.check import NotModelled, analytic_solution
 from constructions.errors import IndeterminatePosition
-from constructions.forces.bodies import Contact, Pin, SlotPin, moving_bodies, points_of_body
+from constructions.bodies import Contact, Pin, SlotPin, moving_bodies, points_of_body
 from constructions.forces.effects import Couple, Effects, End, Load, Mass, Spring
 from constructions.forces.equilibrium import alpha_for_torque, equilibrium, virtual_work_torque
 from constructions.geometry import Vec

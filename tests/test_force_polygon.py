@@ -13,8 +13,7 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 from constructions.check import compare
 from constructions.errors import IndeterminatePosition
-from constructions.forces.bodies import frame_number
-from constructions.forces.bodies import Contact, SlotPin
+from constructions.bodies import Contact, SlotPin, frame_number
 from constructions.forces.effects import Couple, Effects, End, Load, Mass, Spring
 from constructions.forces.equilibrium import equilibrium, virtual_work_torque
 from constructions.forces.polygon import ForcesNotDrawn, force_analysis

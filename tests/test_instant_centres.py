@@ -24,7 +24,7 @@ GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 
 
 def _points(m, body):
-    from constructions.forces.bodies import points_of_body
+    from constructions.bodies import points_of_body
     return points_of_body(m, body)
 
 

@@ -10,12 +10,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..bodies import Contact, Pin, SlotPin, carriers, connections, frame_number
 from ..errors import ConstructionError, IndeterminatePosition
 from ..geometry import Vec
 from ..linkage import Mechanism, Pose, describe_angle
 from ..polygons.common import WARN_SINE, rounding_estimate
 from ..record import Arrow, Diagram, Point, Role, ScaleBar, StepKind, TrialLine, Value
-from .bodies import Contact, Pin, SlotPin, carriers, connections, force_name, frame_number
+from .bodies import force_name
 from .effects import Effects
 
 ORIGIN = Vec(0.0, 0.0)

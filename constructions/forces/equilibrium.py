@@ -26,12 +26,12 @@ from typing import Mapping
 
 import numpy as np
 
+from ..bodies import Connection, Contact, Pin, SlotPin, connections, moving_bodies, points_of_body
 from ..check import AnalyticSolution, NotModelled, analytic_solution
 from ..errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from ..geometry import Vec
 from ..linkage import CrankTip, FixedToLink, Mechanism, assembly_plan, describe_angle, locate, slide_line
-from .bodies import (Connection, Contact, Pin, SlotPin, connections, force_name, moving_bodies, points_of_body,
-                     torque_name)
+from .bodies import force_name, torque_name
 from .effects import Effects
 
 SINGULAR_RCOND = 1e-10

@@ -33,11 +33,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Mapping
 
+from ..bodies import Contact, Pin, frame_number
+from ..geometry import Vec
 from ..linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles, TwoLines,
                        assembly_plan, slide_line)
 from ..quantities import Measured
 from ..record import Arrow, Bar, Block, Construction, Curve, Diagram, Plate, Role, Segment, StepKind, Value
-from .bodies import Contact, Pin, force_name, frame_number, torque_name
+from .bodies import force_name, torque_name
 from .board import Drawing, Force, ForcesNotDrawn, body_label, force_value, known_forces, resultant
 from .dyads import driving_crank, prp, rpr, rrp, rrr
 from .effects import Effects, Spring
