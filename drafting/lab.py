@@ -117,11 +117,14 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
                                                         study.notes + study.warnings),
                             [ResultRow(q, g, a, d) for q, g, a, d in study.table()])
     scales = {k: v for sh in worked for k, v in sh.diagram_scales.items()}
-    items = tuple(key_items(study, scales))
+    stated = _stated(study)
+    every = key_items(study, scales)
+    items = tuple(i for i in every if i.magnitude_text not in stated)    # what the problem states is not asked
     given = tuple(given_lines(study, items))
     problem = problem_sheets(study, scales, given, items, date, suffix)
     key_rows = [ResultRow(i.shown, i.text, i.analytic or "n/a", "", i.tolerance_text) for i in items]
-    key_notes = ("Accepted at drawing accuracy: 1 mm on paper at the worked sheet's scale for a "
+    told = [f"{i.shown} = {i.text} is stated by the problem (not asked)." for i in every if i not in items]
+    key_notes = tuple(told) + ("Accepted at drawing accuracy: 1 mm on paper at the worked sheet's scale for a "
                          "value read off a diagram (its direction within the angle 1 mm subtends, at least "
                          "1\u00b0); 2 % for a value worked out from one; the sense of a rate must be right.",)
     key = compose_sheets(Construction(s.title, ()), _info(study, date, f"Answer key: {s.title}{suffix}",
@@ -131,6 +134,21 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
 
 
 # ---- the problem sheet ---------------------------------------------------------------------------------
+
+def _stated(study: Study) -> set[str]:
+    """The values the problem sheet prints as data, as it prints them ("20.00 deg")."""
+    from .formats import value_text
+    _, shown = problem_construction(study.construction)
+    units = study.scene.units
+    out = set()
+    for v in shown:
+        if v.value is not None and v.kind not in ("scale", "paper length", "number"):
+            try:
+                out.add(value_text(units, v.kind, abs(v.value)))
+            except (ValueError, KeyError):
+                continue
+    return out
+
 
 def _given_like(step: Step) -> bool:
     """A step that states the problem: given, or drawing only what the problem states on the space

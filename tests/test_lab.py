@@ -18,7 +18,7 @@ from drafting.study import Study
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENES = ["notes-velocity-example-1", "notes-velocity-example-4", "notes-acceleration-example-1",
-          "notes-static-force-sample"]
+          "notes-static-force-sample", "gear-pair-20-40", "notes-front-end-loader"]
 
 
 def svg_texts(svg: str) -> list[str]:
