@@ -136,7 +136,7 @@ def stack_lines(lines: Sequence[tuple[Span, ...]], x: float, top: float, size: f
         else:
             assert prev is not None
             y = y_prev + max(1.35 * size, prev.bottom - ext.top + 0.1 * size)
-        out.append(text_at(x, y, line, style=style, name=name))
+        out.append(Text(x, y, tuple(line), style, m.box(x, y), "", name))      # text_at, measured once
         y_prev, prev = y, ext
     bottom = top if prev is None else y_prev + prev.bottom
     return out, bottom
