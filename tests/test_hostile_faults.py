@@ -114,9 +114,9 @@ def test_a_final_name_that_is_a_folder(tmp_path, capsys):
 
 # -- interrupts ---------------------------------------------------------------------------------------------
 
-def _start(out: Path, scenes: list[Path]) -> subprocess.Popen:
+def _start(out: Path, scenes: list[Path], *extra: str) -> subprocess.Popen:
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
-    return subprocess.Popen([sys.executable, "-m", "drafting.cli", "render", *map(str, scenes), "-o", str(out)],
+    return subprocess.Popen([sys.executable, "-m", "drafting.cli", "render", *map(str, scenes), "-o", str(out), *extra],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=ROOT)
 
 
@@ -192,8 +192,10 @@ def test_sigterm_ends_the_run_cleanly(tmp_path, moment):
 
 @linux_proc
 def test_kill_9_leftovers_are_removed_by_the_next_run(tmp_path):
+    """One process (--workers 1): its own temporary files outlive it.  (Worker processes remove theirs when
+    their parent is killed: test_kill_9_of_a_batch_ends_its_workers_and_leaves_nothing_half_written.)"""
     out = tmp_path / "out"
-    p = _start(out, GALLERY[:3])
+    p = _start(out, GALLERY[:3], "--workers", "1")
     try:
         assert _wait(lambda: bool(temporaries(out)) or p.poll() is not None)
         p.kill()                                           # SIGKILL: no handler runs
