@@ -122,11 +122,15 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
     items = tuple(i for i in every if i.magnitude_text not in stated)    # what the problem states is not asked
     given = tuple(given_lines(study, items))
     problem = problem_sheets(study, scales, given, items, date, suffix)
-    key_rows = [ResultRow(i.shown, i.text, i.analytic or "n/a", "", i.tolerance_text) for i in items]
+    comps = {c.name: c for c in study.comparisons}
+    key_rows = [ResultRow(i.shown, i.text, i.analytic or "n/a", study.difference_text(comps[i.name]),
+                          f"accept {i.tolerance_text}") for i in items]
+    drawn = "; ".join(t for sh in worked for _, t in sh.scales)
     told = [f"{i.shown} = {i.text} is stated by the problem (not asked)." for i in every if i not in items]
     key_notes = tuple(told) + ("Accepted at drawing accuracy: 1 mm on paper at the worked sheet's scale for a "
                          "value read off a diagram (its direction within the angle 1 mm subtends, at least "
-                         "1\u00b0); 2 % for a value worked out from one; the sense of a rate must be right.",)
+                         "1\u00b0); 2 % for a value worked out from one; the sense of a rate must be right.",) \
+        + ((f"The worked solution and the problem sheet are drawn at: {drawn}.",) if drawn else ())
     key = compose_sheets(Construction(s.title, ()), _info(study, date, f"Answer key: {s.title}{suffix}",
                                                           f"{s.drawing_number}-K", key_notes), key_rows,
                          given=given[:-1] if items else given)
