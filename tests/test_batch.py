@@ -170,3 +170,14 @@ def test_ranges_belong_to_linkage_scenes():
     cam = (Path(__file__).resolve().parents[1] / "gallery" / "notes-roller-cam.toml").read_text()
     with pytest.raises(SceneError, match=r"cam.toml: vary: is read for linkage scenes"):
         parse_scene(cam + '\n[vary]\ncrank_angle = ["30 deg", "150 deg"]\n', "cam.toml")
+
+
+def test_several_scenes_render_over_an_executor_in_the_order_given(tmp_path, capsys):
+    from drafting.cli import cmd_render
+    root = Path(__file__).resolve().parents[1] / "gallery"
+    scenes = [root / f"notes-velocity-example-{i}.toml" for i in (4, 1, 2)]
+    assert cmd_render(scenes, tmp_path, ["svg"], None, executor=cf.ThreadPoolExecutor(2)) == 0
+    out = capsys.readouterr().out
+    firsts = [out.index(f"wrote {tmp_path / s.stem}.svg") for s in scenes]
+    assert firsts == sorted(firsts)                          # printed in the order given, whatever finished first
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(f"{s.stem}.svg" for s in scenes)
