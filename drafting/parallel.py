@@ -4,7 +4,8 @@ guarantees of a single process.
 Any object with the :class:`concurrent.futures.Executor` interface will do (``submit`` returning
 futures): a thread pool, a process pool, or a cluster's executor such as Dask's
 ``distributed.Client().get_executor()``.  Without one, :func:`run` makes a process pool over the cores
-the process may use -- forked, so each worker starts with the engine already imported -- or, for fewer
+the process may use -- forked, so each worker starts with the engine already imported (from a process
+running threads, such as a notebook's kernel, through the fork server instead) -- or, for fewer
 than :data:`SERIAL_BELOW` jobs or one core, runs them one after the other in this process (a pool's
 start-up and the pickling of results cost more than they save on a few jobs).
 
@@ -28,6 +29,7 @@ import multiprocessing
 import os
 import signal
 import sys
+import threading
 from typing import Any, Callable, Iterable, Sequence
 
 from . import faults
@@ -94,7 +96,13 @@ def default_executor(n_jobs: int, workers: int | None = None) -> cf.Executor | N
     n = workers or cores()
     if n_jobs < SERIAL_BELOW or n < 2:
         return None
-    ctx = multiprocessing.get_context("fork") if "fork" in multiprocessing.get_all_start_methods() else None
+    methods = multiprocessing.get_all_start_methods()
+    # fork: each worker starts with the engine imported -- unless this process runs threads (a notebook's),
+    # which a fork would copy mid-step; then the fork server
+    if "fork" in methods and threading.active_count() == 1:
+        ctx = multiprocessing.get_context("fork")
+    else:
+        ctx = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
     return cf.ProcessPoolExecutor(max_workers=min(n, n_jobs), mp_context=ctx, initializer=_worker_init)
 
 
