@@ -116,7 +116,7 @@ def tolerances(study, comparisons, scales: Mapping[str, object]) -> dict[str, tu
         else:
             tol = DERIVED_REL * max(mag, largest.get(c.kind, 0.0))
         dtol = None
-        if isinstance(v, Vec):
+        if isinstance(v, Vec) and mag > tol:           # a vector within its tolerance of zero has no direction
             paper = mag / upm if upm else 50.0          # no diagram of its kind: as a 50 mm vector
             dtol = max(DIRECTION_MIN_DEG, math.degrees(math.atan2(PAPER_MM, paper)))
         out[c.name] = (tol, dtol)
