@@ -7,7 +7,7 @@ answer key.
   draws it at, so a student draws the polygon in it at the stated scale (and the worked sheet lays over
   it).  The results table lists the quantities to find with their values blank.  No answer is printed
   anywhere: the space diagram keeps only what the problem states (links, pivots, guides, labels,
-  dimensions, loads), an answer step's sense of turning is blanked too, and the scene's notes (which
+  dimensions, loads), a sense of turning found on the way is blanked too, and the scene's notes (which
   may name a result) are left off.
 - The **worked solution** is the sheet ``drafting render`` draws.
 - The **key** is one compact page (the results, graphical and analytic, each with the tolerance it is
@@ -166,7 +166,8 @@ def _given_like(step: Step) -> bool:
 
 def problem_construction(c: Construction) -> tuple[Construction, set]:
     """The construction as a problem sheet shows it, and the values it may print: the space diagram
-    keeps what the problem states; an answer step's sense of turning is blanked."""
+    keeps what the problem states; a sense of turning in a step that works something out is blanked (the
+    crank's own is in the given data)."""
     steps = []
     shown = set()
     for st in c.steps:
@@ -176,7 +177,7 @@ def problem_construction(c: Construction) -> tuple[Construction, set]:
         ents = tuple(e for e in st.entities if e.diagram.kind != "space" or
                      (e.role in SHOWN_ROLES and (given or e.role is not Role.DIMENSION)))
         words = st.words
-        if st.kind is StepKind.ANSWER:
+        if not given:           # a sense of turning found on the way (the Coriolis rule names omega_3's) is an answer
             words = _SENSE_WORDS.sub(BLANK, words)
         steps.append(replace(st, entities=ents, words=words))
     return Construction(c.title, tuple(steps)), shown

@@ -53,7 +53,19 @@ def test_the_problem_sheet_writes_blanks_where_answers_go(lab):
     texts = [t for s in lab.problem for t in svg_texts(s.svg())]
     assert any(BLANK in t for t in texts)
     assert any(t.startswith("Find:") or "Find:" in t for t in texts)
-    assert not any("clockwise" in t and t.startswith("The trial lines meet") for t in texts)
+
+
+def test_no_sense_of_turning_found_on_the_way_is_printed():
+    """The Coriolis step of the quick-return names omega_3's sense ("turned 90 deg counter-clockwise, the
+    sense of omega_3"): an answer; only the crank's own sense (given) may show."""
+    study = Study(dimensioned(load_scene(ROOT / "gallery" / "quick-return-slotted-lever.toml"))).run()
+    worked = [s.words for s in study.construction.steps]
+    assert any("counter-clockwise, the sense of" in w for w in worked)
+    shown, _ = problem_construction(study.construction)
+    for step in shown.steps:
+        if step.kind.value != "given":
+            assert not re.search(r"\b(counter-)?clockwise\b", step.words), step.words
+    assert any("Coriolis" in s.words and BLANK in s.words for s in shown.steps)
 
 
 def test_polygon_panels_are_empty_and_framed_at_the_worked_scales(lab):
