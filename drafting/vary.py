@@ -8,7 +8,8 @@ A linkage scene may say which of its values a batch of lab sheets varies, each o
     length.BC = ["90 mm", "110 mm"]                     # the length of the link joining B and C
 
 Keys: ``crank_angle``, ``omega``, ``tip_speed``, ``alpha``, ``torque`` (the [input] value the scene
-gives: a scene that gives ``tip_speed`` varies ``tip_speed``, not ``omega``) and ``length.<joints>``
+gives: a scene that gives ``tip_speed`` varies ``tip_speed``, not ``omega``; ``alpha`` unless the scene
+gives a torque instead) and ``length.<joints>``
 (the link between two joints, named as the notes name it: ``length.O1B``, ``length.BC``).  A range is
 ``[from, to]`` or ``{ from, to, step }``; plain numbers are in the scene's ``[units]``.  A variant takes
 each value on the grid ``from + k step`` (k = 0, 1, ...; never beyond ``to``), so the numbers on a sheet
@@ -107,7 +108,8 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
         if name not in INPUT_KEYS:
             raise _fail(path, f"vary.{name}", f"unknown key; choose from {choices}")
         input_key, qkind = INPUT_KEYS[name]
-        if input_key != "angle" and input_key not in inp:
+        absent_ok = input_key == "angle" or (input_key == "alpha" and "torque" not in inp)   # alpha defaults to 0
+        if not absent_ok and input_key not in inp:
             given = [k for k in ("omega", "tip_speed", "alpha", "torque") if k in inp]
             hint = f"; the scene gives {', '.join('input.' + g for g in given)}" if given else ""
             raise _fail(path, f"vary.{name}", f"varies input.{input_key}, which the scene does not give{hint}")

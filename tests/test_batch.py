@@ -181,3 +181,17 @@ def test_several_scenes_render_over_an_executor_in_the_order_given(tmp_path, cap
     firsts = [out.index(f"wrote {tmp_path / s.stem}.svg") for s in scenes]
     assert firsts == sorted(firsts)                          # printed in the order given, whatever finished first
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(f"{s.stem}.svg" for s in scenes)
+
+
+def test_alpha_may_vary_where_the_scene_leaves_it_at_zero(tmp_path):
+    text = SCENE.replace('analyses = ["velocity"]', 'analyses = ["acceleration"]')
+    scene = scene_file(tmp_path, '[vary]\nalpha = ["-20 rad/s^2", "20 rad/s^2"]\n', text=text)
+    (r,) = run_batch(scene, 1, 2, tmp_path / "out", ("svg",), workers=1)
+    assert r.files and r.values[0][0] == "alpha (rad/s^2)"
+    problem = " ".join(p.read_text() for p in (tmp_path / "out").glob("slider-v001-problem*.svg"))
+    from drafting.unitset import Units
+    drawn = Units().format("angular acceleration", abs(float(r.values[0][1])))
+    assert f"= {drawn}" in problem                       # the crank's alpha is given data: on the problem sheet
+    with pytest.raises(SceneError, match=r"vary.alpha: varies input.alpha, which the scene does not give"):
+        parse_scene(text.replace('omega = "10 rad/s"', 'omega = "10 rad/s"\ntorque = "0 N m"')
+                    + '[vary]\nalpha = ["-20 rad/s^2", "20 rad/s^2"]\n', "lab.toml")
