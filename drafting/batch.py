@@ -21,7 +21,7 @@ import io
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Sequence
 
 TRIES = 20
 """Draws a variant may take before it is skipped."""
@@ -164,7 +164,7 @@ def keys_csv(results: Sequence[VariantResult]) -> str:
 
 def batch_epoch() -> int:
     """The moment every file of a batch is dated: SOURCE_DATE_EPOCH, else the start of today (UTC)."""
-    from .export import source_date_epoch
+    from .cairo_out import source_date_epoch
     e = source_date_epoch()
     if e is not None:
         return e

@@ -15,8 +15,8 @@ the same as the SVG's presentation attributes:
   baseline moved by its shift (a subscript) and at its own size, as the SVG's tspans are; font metrics
   are not hinted, so the advances are the font's own, the ones the layout measured with.
 
-With ``SOURCE_DATE_EPOCH`` set the PDF's creation date is that moment, so the same sheet gives the
-same bytes.
+With ``SOURCE_DATE_EPOCH`` set (or a moment given) the PDF's creation date is that moment, so the same
+sheet gives the same bytes.
 """
 
 from __future__ import annotations
@@ -135,8 +135,9 @@ class _Painter:
         ctx.new_path()
 
 
-def sheets_to_pdf(sheets: Sequence[Sheet]) -> bytes:
-    """One PDF with a page per sheet, each page exactly its paper."""
+def sheets_to_pdf(sheets: Sequence[Sheet], epoch: int | None = None) -> bytes:
+    """One PDF with a page per sheet, each page exactly its paper, created at ``epoch`` (see
+    :func:`dated_pdf`)."""
     cairo = _cairo()
     out = io.BytesIO()
     first = sheets[0]
@@ -151,7 +152,7 @@ def sheets_to_pdf(sheets: Sequence[Sheet]) -> bytes:
             ctx.show_page()
     finally:
         surface.finish()
-    return reproducible_pdf(out.getvalue())
+    return dated_pdf(out.getvalue(), epoch)
 
 
 def sheet_to_png(sheet: Sheet, dpi: float) -> bytes:
@@ -169,12 +170,19 @@ def sheet_to_png(sheet: Sheet, dpi: float) -> bytes:
     return out.getvalue()
 
 
-def reproducible_pdf(pdf: bytes) -> bytes:
-    """With SOURCE_DATE_EPOCH set (the reproducible-builds convention), the PDF's creation date is that
-    moment, so the same sheet gives the same bytes; cairo itself stamps the wall clock.  The stamp keeps
-    its length, so the cross-reference offsets stay valid."""
-    epoch = os.environ.get("SOURCE_DATE_EPOCH")
-    if not epoch or not epoch.isdigit():
+def source_date_epoch() -> int | None:
+    """SOURCE_DATE_EPOCH (the reproducible-builds convention) as whole seconds, or None when unset."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    return int(epoch) if epoch.isdigit() else None
+
+
+def dated_pdf(pdf: bytes, epoch: int | None = None) -> bytes:
+    """The PDF with its creation date set to ``epoch`` (seconds since 1970; a batch passes one moment to
+    every worker), else to SOURCE_DATE_EPOCH when set, so the same sheet gives the same bytes; cairo
+    itself stamps the wall clock.  The stamp keeps its length, so the cross-reference offsets stay
+    valid."""
+    epoch = source_date_epoch() if epoch is None else epoch
+    if epoch is None:
         return pdf
     stamp = time.strftime("D:%Y%m%d%H%M%SZ", time.gmtime(int(epoch))).encode()
     return re.sub(rb"/CreationDate \(D:\d{14}Z\)", b"/CreationDate (" + stamp + b")", pdf, count=1)

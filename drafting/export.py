@@ -53,23 +53,9 @@ class ExportError(Exception):
     """An output file or folder cannot be written; the message names the path."""
 
 
-def _convert_pdf_pages(sheets: Sequence[Sheet], fh) -> None:
+def _convert_pdf_pages(sheets: Sequence[Sheet], fh, epoch: int | None = None) -> None:
     """One PDF with a page per sheet, drawn with cairo straight from the commands (drafting.cairo_out)."""
-    fh.write(cairo_out.sheets_to_pdf(sheets))
-
-
-def _dated(pdf: bytes, epoch: int) -> bytes:
-    """The PDF with its creation date set to ``epoch`` (seconds since 1970; a batch passes one moment to
-    every worker, so the same seed gives the same bytes).  The stamp keeps its length, so the
-    cross-reference offsets stay valid."""
-    stamp = time.strftime("D:%Y%m%d%H%M%SZ", time.gmtime(int(epoch))).encode()
-    return re.sub(rb"/CreationDate \(D:\d{14}Z\)", b"/CreationDate (" + stamp + b")", pdf, count=1)
-
-
-def source_date_epoch() -> int | None:
-    """SOURCE_DATE_EPOCH (the reproducible-builds convention) as whole seconds, or None when unset."""
-    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
-    return int(epoch) if epoch.isdigit() else None
+    fh.write(cairo_out.sheets_to_pdf(sheets, epoch))
 
 
 def _convert_png(sheet: Sheet, fh, dpi: float) -> None:
@@ -237,11 +223,10 @@ def sheet_plan(sheets: Sequence[Sheet], out_dir: Path | str, stem: str, formats:
             if f == "svg":
                 buf.write(svgs[page])
             elif f == "pdf":
-                _convert_pdf_pages(sheets, buf)
+                _convert_pdf_pages(sheets, buf, epoch)
             else:
                 _convert_png(sheets[page], buf, dpi)
-        data = buf.getvalue()
-        return _dated(data, epoch) if f == "pdf" and epoch is not None else data
+        return buf.getvalue()
 
     return [(final, (lambda f=f, page=page: produce(f, page))) for f, final, page in plan]
 
