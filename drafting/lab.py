@@ -133,7 +133,8 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
         + ((f"The worked solution and the problem sheet are drawn at: {drawn}.",) if drawn else ())
     key = compose_sheets(Construction(s.title, ()), _info(study, date, f"Answer key: {s.title}{suffix}",
                                                           f"{s.drawing_number}-K", key_notes), key_rows,
-                         given=given[:-1] if items else given)
+                         given=given[:-1] if items else given,
+                         unit_kinds=sorted({v.kind for st in study.construction.steps for _, v in st.values}))
     return Lab(problem, tuple(worked), tuple(key), items, given, s.units)
 
 

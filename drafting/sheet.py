@@ -205,11 +205,14 @@ def _sections(construction: Construction, results: Sequence[ResultRow], notes: S
             for i, t in enumerate(texts))))
     if results:
         has_note = any(r.note for r in results)
-        header = ("Quantity", "Graphical", "Analytic", "Difference") + (("Note",) if has_note else ())
-        rows = tuple((r.quantity, r.graphical, r.analytic, r.difference) + ((r.note,) if has_note else ())
-                     for r in results)
-        align = ("l", "r", "r", "r") + (("l",) if has_note else ())
-        secs.append(L.Section("Results", (L.TableItem(header, rows, align, wrap_last=has_note),)))
+        header = ("Quantity", "Graphical", "Analytic", "Difference", "Note")
+        rows = [(r.quantity, r.graphical, r.analytic, r.difference, r.note) for r in results]
+        align = ("l", "r", "r", "r", "l")
+        # a column with nothing in it is not printed (a problem sheet leaves only the answer's column)
+        keep = [i for i in range(5) if i == 0 or any(row[i] for row in rows)]
+        secs.append(L.Section("Results", (L.TableItem(
+            tuple(header[i] for i in keep), tuple(tuple(row[i] for i in keep) for row in rows),
+            tuple(align[i] for i in keep), wrap_last=has_note),)))
     if notes:
         secs.append(L.Section("Notes", tuple(
             L.Paragraph(t, label="\u2013", label_chars="\u2013", name=f"note {i + 1}") for i, t in enumerate(notes))))
@@ -238,10 +241,11 @@ _SUMMARY_ORDER = ("length", "velocity", "acceleration", "angular velocity", "ang
                   "torque")
 
 
-def _units_summary(units: Units, construction: Construction, panels: Sequence[Panel]) -> str:
+def _units_summary(units: Units, construction: Construction, panels: Sequence[Panel],
+                   kinds: Sequence[str] = ()) -> str:
     """The units the title block names: length, velocity, angular velocity, and acceleration (with
-    angular acceleration) when the sheet has them."""
-    present = {"length"}
+    angular acceleration) when the sheet has them (or ``kinds`` says it has)."""
+    present = {"length", *kinds}
     present |= {p.quantity for p in panels if isinstance(p, VectorPanel)}
     for s in construction.steps:
         for _, v in s.values:
@@ -272,13 +276,15 @@ def _units_summary(units: Units, construction: Construction, panels: Sequence[Pa
 # ---- the document ---------------------------------------------------------------------------------
 
 def compose_sheets(construction: Construction, info: SheetInfo, results: Sequence[ResultRow] = (), *,
-                   values: ValueHook | None = None, panel_hook=None, given: Sequence[str] = ()) -> tuple[Sheet, ...]:
+                   values: ValueHook | None = None, panel_hook=None, given: Sequence[str] = (),
+                   unit_kinds: Sequence[str] = ()) -> tuple[Sheet, ...]:
     """Lay out ``construction`` with its ``results`` on as few sheets as hold it legibly.
 
     ``values(value, default)`` may rewrite how a step value is written (``default(value)`` is the
     worked-solution text), e.g. a blank for answers on a lab sheet; ``panel_hook(panels)`` may replace the
     diagram panels before they are packed (a problem sheet frames its polygon panels empty); ``given``
-    lines are set first under "Given" (a problem sheet's data).  Raises
+    lines are set first under "Given" (a problem sheet's data); ``unit_kinds`` are quantities the title
+    block's units name besides those the construction shows (a key's results).  Raises
     :class:`LayoutError` only when one block cannot fit an empty sheet of the paper in ``info``.
     """
     pp = make_paper(info.paper, info.orientation)
@@ -290,7 +296,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
         panels = list(panel_hook(panels))
     probe = SheetFormatter(units, {}, values, probe=True)
     sections = _sections(construction, results, info.notes, probe, given)
-    summary = _units_summary(units, construction, panels)
+    summary = _units_summary(units, construction, panels, unit_kinds)
     frame = pp.frame
 
     def tb_fields(scale_text: str, n: int = 1, m: int = 1):
