@@ -199,7 +199,7 @@ def chart_svg(data, path: Path, default_rel: float = 1e-6) -> None:
         for x, y in pts:
             _mark(dwg, g, MARKS[i], x, y)
     _label(dwg, g, "1 ms", x1ms + 1.2, Y0 + 4.0)
-    _label(dwg, g, "1e-6 of the cam size", X0 + 5.0, ytol + 4.2)
+    _label(dwg, g, "1e-6 of the cam size", X1 - 2.0, ytol + 4.2, "end")
     # the default: circled, its label at the lower left of the point
     dx, dy = next(_pos(r[3], r[4], xr, yr) for r in data if r[0] == SERIES[1] and r[1] == default_rel)
     g.add(dwg.circle((dx, dy), 2.6, fill="none", stroke="black", stroke_width=0.3))
