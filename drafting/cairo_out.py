@@ -7,7 +7,7 @@ whole layout).  What each command means on paper is the one style table (:func:`
 the same as the SVG's presentation attributes:
 
 - 1 user unit is 1 mm: the PDF page is exactly the paper (mm scaled to points, 72 / 25.4), the PNG is
-  ``dpi / 25.4`` pixels a millimetre, rounded to whole pixels as cairosvg did;
+  ``dpi / 25.4`` pixels a millimetre, rounded to whole pixels as cairosvg did, stored as 8-bit grey;
 - paint as SVG paints it: fill first, then stroke; the non-zero fill rule; the miter limit 4 of SVG
   (cairo's own default is 10); dashes in mm with their zero-length dots drawn by round caps;
 - text is set as text (the PDF's lettering is searchable and selectable, its font embedded as a
@@ -63,6 +63,7 @@ class _Painter:
         ctx.set_fill_rule(cairo.FILL_RULE_WINDING)
         opts = cairo.FontOptions()
         opts.set_hint_metrics(cairo.HINT_METRICS_OFF)
+        opts.set_antialias(cairo.ANTIALIAS_GRAY)           # no coloured sub-pixel fringes: a grey page
         ctx.set_font_options(opts)
         self._caps = {"butt": cairo.LINE_CAP_BUTT, "round": cairo.LINE_CAP_ROUND, "square": cairo.LINE_CAP_SQUARE}
         self._joins = {"miter": cairo.LINE_JOIN_MITER, "round": cairo.LINE_JOIN_ROUND, "bevel": cairo.LINE_JOIN_BEVEL}
@@ -156,17 +157,26 @@ def sheets_to_pdf(sheets: Sequence[Sheet], epoch: int | None = None) -> bytes:
 
 
 def sheet_to_png(sheet: Sheet, dpi: float) -> bytes:
-    """The sheet as a PNG at ``dpi`` pixels an inch (white, opaque)."""
+    """The sheet as a PNG at ``dpi`` pixels an inch: 8-bit grey (a sheet is black, white and grey only,
+    so nothing is lost) through Pillow, several times quicker to encode than cairo's 32-bit PNG and half
+    the size."""
     cairo = _cairo()
+    import numpy as np
+    from PIL import Image
+
     k = dpi / 25.4
-    surface = cairo.ImageSurface(cairo.FORMAT_ARGB32, int(round(sheet.width * k)), int(round(sheet.height * k)))
+    w, h = int(round(sheet.width * k)), int(round(sheet.height * k))
+    surface = cairo.ImageSurface(cairo.FORMAT_RGB24, w, h)
     ctx = cairo.Context(surface)
     ctx.scale(k, k)
     _Painter(cairo, ctx).page(sheet.width, sheet.height, sheet.commands)
     surface.flush()
-    out = io.BytesIO()
-    surface.write_to_png(out)
+    stride = surface.get_stride()
+    pixels = np.frombuffer(surface.get_data(), dtype=np.uint8).reshape(h, stride // 4, 4)
+    grey = np.ascontiguousarray(pixels[:, :w, 1])          # the green byte: r = g = b on every pixel
     surface.finish()
+    out = io.BytesIO()
+    Image.fromarray(grey, mode="L").save(out, format="PNG")
     return out.getvalue()
 
 
