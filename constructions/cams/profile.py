@@ -498,17 +498,25 @@ def _trim(f: Follower, ev: Evaluation, size: float) -> np.ndarray:
             d = C[:, lo:lo + 512].T @ U - r[None, :]
             keep[lo:lo + 512] = np.max(d, axis=1) <= tol
     else:
-        # squared distances against the squared limit (the same decision as the distances, without a root)
+        # squared distances against the squared limit (the same decision as the distances, without a root),
+        # each run of 128 neighbouring points against only the roller centres inside its bounding box grown
+        # by the roller's radius (no centre outside it can come within rr of any of them)
         P = ev.pitch
-        limit = (f.roller_radius - tol) ** 2
-        for lo in range(0, n, 512):
-            c = C[:, lo:lo + 512]
-            dx = c[0][:, None] - P[0][None, :]
-            dy = c[1][:, None] - P[1][None, :]
+        rr = f.roller_radius
+        limit = (rr - tol) ** 2
+        for lo in range(0, n, 128):
+            c = C[:, lo:lo + 128]
+            near = ((P[0] > c[0].min() - rr) & (P[0] < c[0].max() + rr) &
+                    (P[1] > c[1].min() - rr) & (P[1] < c[1].max() + rr))
+            if not near.any():
+                continue
+            q = P[:, near]
+            dx = c[0][:, None] - q[0][None, :]
+            dy = c[1][:, None] - q[1][None, :]
             dx *= dx
             dy *= dy
             dx += dy
-            keep[lo:lo + 512] = np.min(dx, axis=1) >= limit
+            keep[lo:lo + 128] = np.min(dx, axis=1) >= limit
     if keep.all():
         return C
     if not keep.any():
