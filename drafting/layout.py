@@ -394,10 +394,12 @@ def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None
 
 
 def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: float,
-         cache: LayoutCache | None = None, *, tagged: bool = False) -> list | None:
+         cache: LayoutCache | None = None, *, tagged: bool = False, plan: bool = False) -> list | None:
     """Set the sections into the slots in order at lettering ``size``; None when they do not fit.
     Each text command's region is the name of the slot it went into; with ``tagged`` the result is
-    ``(slot name, command)`` pairs (a rule of a table has no region of its own)."""
+    ``(slot name, command)`` pairs (a rule of a table has no region of its own).  With ``plan`` no
+    command is made: the result is the name of the slot each item went into, in order (what a page
+    planner needs to know of a trial)."""
     if not sections:
         return []
     if not slots:
@@ -445,6 +447,8 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
             y += placed.height + item_gap
             used = True
             i += 1
+    if plan:
+        return [name for name, _, _, placed in placements if placed.commands]
     # everything fits: now make the commands
     for name, x, y, placed in placements:
         moved = with_region([translated(c, x, y) for c in placed.commands], name)
@@ -470,14 +474,15 @@ def _least_height(sections: Sequence[Section], width: float, size: float, cache:
 
 def flow_shrinking(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], *,
                    sizes: Sequence[float] = TEXT_SIZES, cache: LayoutCache | None = None,
-                   tagged: bool = False) -> tuple[list, float] | None:
-    """The largest lettering size (3.5 down to 2.5) at which everything fits, and its commands."""
+                   tagged: bool = False, plan: bool = False) -> tuple[list, float] | None:
+    """The largest lettering size (3.5 down to 2.5) at which everything fits, and its commands (with
+    ``plan``, the slots the items went into: see :func:`flow`)."""
     room = sum(r.h for _, r in slots)
     widest = max((r.w for _, r in slots), default=0.0)
     for size in sizes:
         if cache is not None and _least_height(sections, widest, size, cache) > room + 1e-9:
             continue                     # cannot fit: even set in the widest slot it is taller than all
-        out = flow(sections, slots, size, cache, tagged=tagged)
+        out = flow(sections, slots, size, cache, tagged=tagged, plan=plan)
         if out is not None:
             return out, size
     return None

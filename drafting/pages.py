@@ -462,7 +462,7 @@ def text_page_options(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight
 @dataclass
 class Document:
     pages: list[PagePlan]
-    text: list                       # text commands, region "<page>#<slot>"
+    text: list                       # the slot ("<page>#<slot>") each placed item went into
     size: float
 
     @property
@@ -474,7 +474,7 @@ class Document:
 
     def empty_columns(self) -> int:
         """Pages whose text slots the text never reached (room left blank)."""
-        used = {slot.split("#")[0] for slot, _ in self.text}
+        used = {slot.split("#")[0] for slot in self.text}
         return sum(1 for i, pg in enumerate(self.pages) if pg.text_slots and str(i) not in used)
 
 
@@ -490,7 +490,7 @@ def _flow(sections, pages, cache) -> tuple[list, float] | None:
     slots = slots_of(pages)
     key = ("flow", tuple((n, round(r.x, 6), round(r.y, 6), round(r.w, 6), round(r.h, 6)) for n, r in slots))
     if key not in cache:
-        cache[key] = L.flow_shrinking(sections, slots, cache=cache, tagged=True)
+        cache[key] = L.flow_shrinking(sections, slots, cache=cache, plan=True)
     return cache[key]
 
 
@@ -603,7 +603,7 @@ def _document(paper, groups, mode, sections, tb_height, cache) -> Document | Non
                 pages, got = cand, g2
                 break
     # a diagram page whose text slots stayed empty draws its diagrams over the whole page instead
-    used = {slot.split("#")[0] for slot, _ in got[0]}
+    used = {slot.split("#")[0] for slot in got[0]}
     for i, g in enumerate(groups):
         if str(i) not in used and pages[i].text_slots:
             alt = diagram_page(paper, g, tb_height)
