@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import signal
 import sys
 from dataclasses import replace
 from pathlib import Path
@@ -426,21 +427,30 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
-def main(argv: Sequence[str] | None = None) -> int:
+def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
     """The command.  SIGINT and SIGTERM end it cleanly, temporary files removed, with exit code 130 or
     143; whatever reaches the terminal has its control characters escaped (a title cannot move the
     cursor)."""
-    with safe_streams(), signals_handled():
+    with safe_streams():
         try:
-            return _main(argv)
+            # the signal may come while the handlers are being put in place: the try holds that too
+            # a process about to exit (``exiting``) ignores a late signal: its status is the work's
+            with signals_handled(after=signal.SIG_IGN if exiting else None):
+                return _main(argv)
         except Interrupted as e:
-            remove_temporaries()
-            print(f"drafting: interrupted by {e.name}; no file was left half-written", file=sys.stderr)
-            return e.exit_code
+            return _interrupted(e.name, e.exit_code)
+        except KeyboardInterrupt:             # before the handlers were in place
+            return _interrupted("SIGINT", 130)
         except BrokenPipeError:               # the reader went away (drafting ... | head): stop quietly
             remove_temporaries()
             _silence_stdout()
             return 141
+
+
+def _interrupted(name: str, code: int) -> int:
+    remove_temporaries()
+    print(f"drafting: interrupted by {name}; no file was left half-written", file=sys.stderr)
+    return code
 
 
 def _silence_stdout() -> None:
@@ -486,4 +496,4 @@ def _main(argv: Sequence[str] | None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(exiting=True))

@@ -87,9 +87,11 @@ def deferred() -> Iterator[None]:
 
 
 @contextlib.contextmanager
-def signals_handled() -> Iterator[None]:
-    """SIGINT and SIGTERM raise :class:`Interrupted` inside the block (main thread only); the previous
-    handlers are restored afterwards."""
+def signals_handled(after=None) -> Iterator[None]:
+    """SIGINT and SIGTERM raise :class:`Interrupted` inside the block (main thread only); afterwards the
+    previous handlers are restored, or ``after`` is put in their place (the command line passes
+    ``signal.SIG_IGN``: its work is done, so a signal in the moment before the process exits changes
+    nothing, rather than killing it with a misleading status)."""
     global _pending
     if threading.current_thread() is not threading.main_thread():
         yield
@@ -101,5 +103,5 @@ def signals_handled() -> Iterator[None]:
         yield
     finally:
         for s, h in previous.items():
-            signal.signal(s, h)
+            signal.signal(s, h if after is None else after)
         _pending = None

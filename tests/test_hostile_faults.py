@@ -10,6 +10,7 @@ numpy and friends, before any file is touched -- the interpreter's own defaults 
 from __future__ import annotations
 
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -33,15 +34,18 @@ def temporaries(folder: Path) -> list[str]:
 
 
 def assert_whole(folder: Path, stems: list[str]) -> dict[str, bool]:
-    """No temporary file; each scene's formats all present or all absent.  Returns stem -> written."""
+    """No temporary file; each scene's files (one sheet: stem.svg/.pdf/.png; n sheets: stem-1.svg ..
+    stem-n.svg, stem.pdf, stem-1.png .. stem-n.png) all present or all absent.  Returns stem -> written."""
+    from drafting.export import output_names
     assert temporaries(folder) == []
     names = set(os.listdir(folder)) if folder.is_dir() else set()
-    out = {}
+    out, known = {}, set()
     for stem in stems:
-        have = [f"{stem}.{f}" in names for f in FORMATS]
-        assert all(have) or not any(have), (stem, sorted(names))
-        out[stem] = all(have)
-    known = {f"{s}.{f}" for s in stems for f in FORMATS}
+        mine = {n for n in names if re.fullmatch(rf"{re.escape(stem)}(-\d+)?\.(svg|pdf|png)", n)}
+        pages = sum(1 for n in mine if n.endswith(".svg"))
+        assert not mine or set(output_names(max(pages, 1), stem, FORMATS)) == mine, (stem, sorted(names))
+        out[stem] = bool(mine)
+        known |= mine
     assert names <= known, sorted(names - known)
     return out
 
