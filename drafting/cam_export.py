@@ -10,8 +10,8 @@ cam frame at cam angle 0 (the follower's axis along +y), centred on the cam's ax
   drawing's $INSUNITS and $MEASUREMENT set from the unit (mm, cm, m, in, ft), and the tolerance in a TEXT
   on layer ``NOTES``.
 
-Usage: ``python -m drafting.cam_export SCENE -o DIR [--tolerance 1e-6]`` (relative to the cam's size); a
-command line of its own wires the same with :func:`add_export_arguments` and :func:`run_export`.
+Usage: ``drafting export SCENE -o DIR [--tolerance 1e-6]`` (relative to the cam's size), or ``python -m
+drafting.cam_export`` with the same arguments; both are :func:`add_export_arguments` and :func:`run_export`.
 Both files are written together or not at all (drafting.export.write_outputs).
 """
 
@@ -24,8 +24,6 @@ from pathlib import Path
 
 import numpy as np
 
-from constructions.cams.profile import analyse, evaluate, profile_samples, trim
-
 from .export import ExportError, prepare_folder, write_outputs
 from .scene import SceneError, load_scene
 
@@ -36,6 +34,7 @@ INSUNITS = {"mm": 4, "millimeter": 4, "cm": 5, "centimeter": 5, "m": 6, "meter":
 def profile_for_export(model, tolerance_rel: float = 1e-6) -> tuple[np.ndarray, float]:
     """(points 2 x N in SI, absolute tolerance in SI) of a cam scene's model: the profile-only path
     (:func:`constructions.cams.profile.profile_samples`), trimmed where the analysis finds undercut."""
+    from constructions.cams.profile import analyse, evaluate, profile_samples, trim   # the cam engine, when used
     p, f = model.program, model.follower
     cp = analyse(p, f, samples=1024)
     tol = tolerance_rel * cp.size
@@ -109,13 +108,13 @@ def run_export(args: argparse.Namespace) -> int:
     """Write the CSV and DXF for parsed ``args`` (:func:`add_export_arguments`): 0 when written, 2 on a
     scene or export error or a tolerance out of range (the message on stderr)."""
     if not 0 < args.tolerance < 0.1:
-        print("error: --tolerance must lie between 0 and 0.1 (a fraction of the cam's size)", file=sys.stderr)
+        print("drafting: error: --tolerance must lie between 0 and 0.1 (a fraction of the cam's size)", file=sys.stderr)
         return 2
     try:
         for p in export(args.scene, args.out, args.tolerance):
             print(f"wrote {p}")
     except (SceneError, ExportError) as e:
-        print(f"error: {e}", file=sys.stderr)
+        print(f"drafting: error: {e}", file=sys.stderr)
         return 2
     return 0
 

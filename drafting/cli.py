@@ -413,6 +413,11 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--peers", action="store_true",
                    help="also the four-bar sweep against pylinkage, mechanism (pip install .[bench]) and "
                         "plain numpy")
+    from .cam_export import add_export_arguments
+    add_export_arguments(sub.add_parser(
+        "export", help="a cam's profile for machining (CSV and DXF)",
+        description="Write a cam scene's profile as CSV and DXF (units in the file), every chord within the "
+                    "tolerance of the exact profile, trimmed where the follower undercuts it."))
     w = sub.add_parser("sweep", help="a linkage over one turn of its crank (table or CSV)",
                        description="Solve the scene's linkage over one turn of the crank, starting at the "
                                    "scene's crank angle (analytic, vectorised); angles where it cannot be "
@@ -483,6 +488,9 @@ def _main(argv: Sequence[str] | None) -> int:
             return cmd_check(args.scenes)
         if args.command == "bench":
             return cmd_bench(args.quick, args.peers)
+        if args.command == "export":
+            from .cam_export import run_export
+            return run_export(args)
         if args.command == "sweep":
             from .sweep_cmd import SweepInputError, cmd_sweep
             try:

@@ -156,6 +156,14 @@ def test_export_undercut_cam_is_trimmed_and_the_cli_pieces(tmp_path, capsys):
     r = subprocess.run([sys.executable, "-m", "drafting.cam_export", str(GALLERY / "notes-flat-faced-cam.toml"),
                         "-o", str(out)], capture_output=True, text=True, cwd=Path(__file__).resolve().parent.parent)
     assert r.returncode == 0 and (out / "notes-flat-faced-cam-profile.dxf").exists()
+    # the drafting command's own subcommand; a linkage scene is refused in one sentence
+    from drafting.cli import main
+    assert main(["export", str(GALLERY / "oscillating-roller-cam.toml"), "-o", str(tmp_path / "c")]) == 0
+    assert (tmp_path / "c" / "oscillating-roller-cam-profile.csv").exists()
+    capsys.readouterr()
+    assert main(["export", str(GALLERY / "notes-velocity-example-1.toml"), "-o", str(tmp_path / "c")]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("drafting: error: ") and "only a cam scene has a profile to export" in err and err.count("\n") == 1
 
 
 def test_oscillating_scene():
