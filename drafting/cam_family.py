@@ -98,6 +98,12 @@ def _warnings(study) -> tuple[str, ...]:
         elif cp.undercut:
             out.append(f"The flat face cannot follow: r_b + s + s'' < 0 from {_spans(u, cp.undercut)} (needs a base "
                        f"radius above {u.format('length', cp.min_base_radius)}); the profile drawn is trimmed.")
+    if cp.corners:
+        at = ", ".join(u.format("angle", t % (2 * math.pi)) for t in sorted(cp.corners, key=lambda t: t % (2 * math.pi)))
+        out.append(f"Corners: the follower's velocity jumps at {at}, so the pitch curve turns a corner there and "
+                   f"the envelope's two branches cross or part; the profile drawn is trimmed to what the "
+                   f"{'roller' if f.kind in (ROLLER, OSCILLATING) else 'face'} leaves (a sharp edge on the cam, and "
+                   f"a shock in the follower).")
     phi = abs(cp.max_pressure_angle[1])
     limit = 35 if f.kind in (OSCILLATING, OSC_FLAT) else 30
     if f.kind != FLAT and phi > math.radians(limit):

@@ -325,6 +325,24 @@ def test_uniform_corners_arcs_and_folds():
         assert np.max(_chord_errors(q, g, t, pts)) <= 1e-6 * 0.06
 
 
+
+def test_uniform_corners_are_named_and_the_drawn_profile_trimmed():
+    """The analysis behind a sheet finds the joins where s' jumps and draws the profile the trim keeps:
+    a uniform-motion cam's profile on the sheet never crosses itself (its raw envelope does)."""
+    from constructions.cams.laws import UNIFORM
+    for kind, sense in ((ROLLER, 1), (ROLLER, -1), (FLAT, 1)):
+        p, f = _sampling_cam(UNIFORM, kind, 0.0, sense, 0.04)
+        cp = analyse(p, f, samples=2048)
+        assert sorted(round(math.degrees(t) % 360, 9) for t in cp.corners) == sorted(
+            round(math.degrees(t) % 360, 9) for t in p.starts[1:]), kind      # not 0: a dwell meets a dwell
+        assert LinearRing(cp.trimmed.T).is_simple
+        if kind == ROLLER:
+            assert not LinearRing(cp.samples.profile.T).is_simple        # what was drawn before
+    q, g = _sampling_cam(UNIFORM, KNIFE, 0.0, 1, 0.04)
+    assert analyse(q, g, samples=512).corners == []                      # a knife edge draws the corner itself
+    p, f = _sampling_cam(CYCLOIDAL, ROLLER, 0.0, 1, 0.04)
+    assert analyse(p, f, samples=512).corners == []
+
 @settings(max_examples=30, deadline=None)
 @given(law=st.sampled_from(LAWS), swing=st.floats(5, 20), a=st.floats(0.08, 0.14), ef=st.floats(-0.015, 0.015),
        sense=st.sampled_from([1, -1]))

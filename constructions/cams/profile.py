@@ -63,7 +63,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .laws import TAU, Program
+from .laws import DWELL, TAU, Program, end_slope
 
 KNIFE, ROLLER, FLAT, OSCILLATING = "knife-edge", "roller", "flat-faced", "oscillating roller"
 OSC_FLAT = "oscillating flat-faced"
@@ -391,6 +391,7 @@ class CamProfile:
     min_base_radius: float | None                  # flat-faced: the smallest rb with rho > 0
     face_width: tuple[float, float] | None         # flat-faced: contact's reach either side of the axis
     trimmed: np.ndarray = field(repr=False, default=None)   # the valid profile, closed polyline 2 x M
+    corners: list[float] = field(default_factory=list)      # joins where s' jumps: the profile turns a corner
 
     @property
     def undercut_free(self) -> bool:
@@ -457,8 +458,24 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
             elif d > 0:
                 undercut = spans(program, lambda x: f.roller_radius * convex_curvature_pitch(program, f, x) - 1.0)
     out = CamProfile(program, f, ev, size, (phi_t, phi), min_pitch, (rp_t, rp), undercut, cusps, rb_min, width)
-    out.trimmed = trim(out) if undercut else ev.profile
+    out.corners = [] if f.kind == KNIFE else velocity_jumps(program)
+    # a jump in s' (uniform motion) is a corner of the pitch curve: the envelope's branches there cross (a
+    # fold to cut) or part (the roller's arc joins them); either way the profile is what the trim keeps
+    out.trimmed = trim(out) if undercut or out.corners else ev.profile
     return out
+
+
+def velocity_jumps(program: Program) -> list[float]:
+    """Cam angles of the joins where the follower's velocity s' jumps (uniform motion meeting a dwell or
+    another law): corners of the pitch curve."""
+    segs, n = program.segments, len(program.segments)
+
+    def slope(i: int, u: float) -> float:
+        seg = segs[i]
+        return 0.0 if seg.kind == DWELL else seg.sign * seg.lift * end_slope(seg.law, u) / seg.beta
+    scale = max(program.lift, 1e-300)
+    return [float(program.starts[(i + 1) % n]) for i in range(n)
+            if abs(slope(i, 1.0) - slope((i + 1) % n, 0.0)) > 1e-9 * scale]
 
 
 def check_face(program: Program, f: Follower) -> None:
