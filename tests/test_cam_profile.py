@@ -11,7 +11,7 @@ from shapely.geometry import LinearRing, Polygon
 
 from constructions.cams.check import closed_form_point, min_base_radius_flat
 from constructions.cams.construction import construct
-from constructions.cams.laws import CYCLOIDAL, DWELL, HARMONIC, LAWS, POLY345, RETURN, RISE, Program, Segment
+from constructions.cams.laws import CYCLOIDAL, DWELL, HARMONIC, LAWS, RETURN, RISE, Program, Segment
 from constructions.cams.profile import FLAT, KNIFE, OSC_FLAT, ROLLER, Follower, analyse, cam_size, evaluate
 
 D = math.radians

@@ -23,41 +23,12 @@ from drafting.html_page import page_html
 from drafting.html_sweep import MECH_W, WIDTH, HEIGHT, crank_points, sweep_section
 from drafting.paper import Polyline
 from drafting.scene import parse_scene
+from test_sweep import PARALLELOGRAM            # the same parallelogram four-bar
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 CYCLE = GALLERY / "cycle-four-bar.toml"
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 GAP_TEXT = CYCLE.read_text().replace("length = 20\n", "length = 50\n", 1)      # the crank cannot turn fully
-PARALLELOGRAM = """
-[drawing]
-title = "Parallelogram four-bar"
-number = "T-P"
-[units]
-length = "mm"
-[frame]
-O1 = [0, 0]
-O2 = [100, 0]
-[[link]]
-number = 2
-joints = ["O1", "B"]
-length = 40
-[[link]]
-number = 3
-joints = ["B", "C"]
-length = 100
-[[link]]
-number = 4
-joints = ["O2", "C"]
-length = 40
-[input]
-link = 2
-angle = "30 deg"
-omega = "10 rad/s"
-[assembly]
-C = "left of B->O2"
-[ask]
-analyses = ["sweep"]
-"""
 
 
 def page_data(page: str) -> dict:

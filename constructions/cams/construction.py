@@ -276,20 +276,8 @@ def _translating_steps(rec, f, program, cp, th, ev, step, opposite):
 def _oscillating_steps(rec, f, th, ev, step, opposite):
     """The pivot circle, the pivots laid out opposite to the rotation, the arm swung through the table's
     angle from where its arc meets the prime circle, the roller circles."""
-    n, sg = len(th), f.sense
-    O = Vec(0.0, 0.0)
-    a = -sg * th
-    A = np.stack([f.pivot_distance * np.cos(a), f.pivot_distance * np.sin(a)])
-    pts, notes = [], []
-    label_every = max(1, n // 12)
-    for i in range(n):
-        pts.append(Point(f"A{i}", Role.PATH, CAM, _v(A[:, i])))
-        if i % label_every == 0:
-            notes.append(Note(f"station {i}", Role.LABEL, CAM, _v(A[:, i] * 1.08), f"{_deg(th[i])}\u00b0"))
-    rec = rec.then(f"Draw the pivot circle of radius $a about O and mark the arm's pivot A_i on it every $d, laid out "
-                   f"{opposite} -- opposite to the cam's rotation; A_0 is the pivot at 0 deg.",
-                   Circle("pivot circle", Role.CENTRE_LINE, CAM, O, f.pivot_distance, "pivot circle"), *pts, *notes,
-                   values={"a": Value("length", f.pivot_distance), "d": Value("angle", step)})
+    n = len(th)
+    rec, A = _pivots(rec, f, th, step, opposite)
     centres = ev.pitch
     ents = []
     for i in range(n):
@@ -325,7 +313,7 @@ def _oscillating_face_steps(rec, f, cp, th, ev, step, opposite):
     """The pivots laid out opposite to the rotation; from each, the face at the arm's angle beta0 + psi_i to
     the line A_i O (beta0: the face tangent to the base circle at zero lift), drawn over the reach the
     contact needs."""
-    n, sg = len(th), f.sense
+    n = len(th)
     rec, A = _pivots(rec, f, th, step, opposite)
     N = ev.normal                                  # the face's normal in the cam frame, away from O
     T = np.stack([-N[1], N[0]])                   # along the face, from the pivot's foot towards the cam
