@@ -459,29 +459,14 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
 TEXT_SIZES = (3.5, 3.25, 3.0, 2.75, 2.5)
 
 
-def _least_height(sections: Sequence[Section], width: float, size: float, cache: LayoutCache) -> float:
-    """A lower bound of the height the sections need in slots at most ``width`` wide (no gaps between
-    items counted, each item at the widest width: narrower slots only wrap more)."""
-    total = 0.0
-    for sec in sections:
-        for item in ([Heading(sec.heading)] if sec.heading else []) + list(sec.items):
-            try:
-                total += layout_item(item, width, size, cache).height
-            except TooWide:
-                return math.inf
-    return total
-
-
 def flow_shrinking(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], *,
                    sizes: Sequence[float] = TEXT_SIZES, cache: LayoutCache | None = None,
                    tagged: bool = False, plan: bool = False) -> tuple[list, float] | None:
     """The largest lettering size (3.5 down to 2.5) at which everything fits, and its commands (with
     ``plan``, the slots the items went into: see :func:`flow`)."""
-    room = sum(r.h for _, r in slots)
-    widest = max((r.w for _, r in slots), default=0.0)
+    # (a lower bound of the height, set at the widest slot, used to skip sizes first: it cost more than it
+    # saved -- each plan's slots have their own widths -- and never changed a sheet)
     for size in sizes:
-        if cache is not None and _least_height(sections, widest, size, cache) > room + 1e-9:
-            continue                     # cannot fit: even set in the widest slot it is taller than all
         out = flow(sections, slots, size, cache, tagged=tagged, plan=plan)
         if out is not None:
             return out, size
