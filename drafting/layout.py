@@ -55,56 +55,100 @@ def wrap_range(markup: str, width: float, size: float) -> tuple[list[tuple[Span,
     greedy wrap makes comes out the same for any width in it (a line's words fit while ``lo <= width``,
     every break still happens while ``width < hi``).  A word split for being longer than the line
     gives the empty range ``(width, width)``: nothing else is promised then."""
-    words = markup.split()
+    words = _words(markup, size)
     if not words:
         return [], 0.0, math.inf
-    lo, hi = 0.0, math.inf
+    got = _breaks(words, width, text_width(" ", size))
+    if got is None:
+        return _wrap_splitting(markup, width, size), width, width
+    breaks, lo, hi = got
+    space = Span(" ", size)
+    lines = []
+    for i0, i1 in breaks:
+        run: list[list] = []                   # runs [text, size, shift, italic], merged as they come
+        for i in range(i0, i1):
+            if i > i0:
+                _add(run, space)
+            for sp in words[i][0]:
+                _add(run, sp)
+        lines.append(tuple(Span(*r) for r in run))
+    return lines, lo, hi
+
+
+@functools.lru_cache(maxsize=4096)
+def _words(markup: str, size: float) -> tuple[tuple[tuple[Span, ...], float, float, float], ...]:
+    """Each word of ``markup`` at ``size``: (spans, width, top, bottom), its extent as :func:`measure`
+    takes it (from the baseline, 0 included)."""
+    return tuple(_word(w, size) for w in markup.split())
+
+
+def _breaks(words, width: float, space: float) -> tuple[list[tuple[int, int]], float, float] | None:
+    """The greedy wrap of ``words`` (see :func:`_words`) into lines no wider than ``width``: the lines as
+    (first, end) word indices and the range ``[lo, hi)`` of widths giving the same; None when a word is
+    longer than the line (it must be split: :func:`_wrap_splitting`)."""
+    lines: list[tuple[int, int]] = []
+    start, cur_w, lo, hi = 0, 0.0, 0.0, math.inf
+    for i, (_, w, _, _) in enumerate(words):
+        if w > width:
+            return None
+        if i > start and cur_w + space + w > width:
+            hi = min(hi, cur_w + space + w)
+            lines.append((start, i))
+            start, cur_w = i, 0.0
+        if i > start:
+            cur_w += space
+        cur_w += w
+        lo = max(lo, w, cur_w)
+    lines.append((start, len(words)))
+    if hi <= lo:                                         # rounding: this width only
+        lo = hi = width
+    return lines, lo, hi
+
+
+def _add(run: list[list], s: Span) -> None:
+    if run and run[-1][1] == s.size and run[-1][2] == s.shift and run[-1][3] == s.italic:
+        run[-1][0] += s.text
+    else:
+        run.append([s.text, s.size, s.shift, s.italic])
+
+
+def _wrap_splitting(markup: str, width: float, size: float) -> list[tuple[Span, ...]]:
+    """The greedy wrap when some word is longer than the line: that word is split letter by letter."""
     space = text_width(" ", size)
     lines: list[list[list]] = []
-    cur: list[list] = []                   # runs [text, size, shift, italic], merged as they come
+    cur: list[list] = []
     cur_w = 0.0
-
-    def add(run: list[list], s: Span) -> None:
-        if run and run[-1][1] == s.size and run[-1][2] == s.shift and run[-1][3] == s.italic:
-            run[-1][0] += s.text
-        else:
-            run.append([s.text, s.size, s.shift, s.italic])
-
-    for word in words:
-        spans, w = _word(word, size)
-        if w > width:                                   # a word longer than the line: split it
-            lo = hi = width
+    for word in markup.split():
+        spans, w, _, _ = _word(word, size)
+        if w > width:
             for piece in _split_long(word, width, size):
                 if cur:
                     lines.append(cur)
                 cur = []
                 for sp in rich(piece, size):
-                    add(cur, sp)
+                    _add(cur, sp)
                 cur_w = measure(rich(piece, size)).width
             continue
         if cur and cur_w + space + w > width:
-            hi = min(hi, cur_w + space + w)
             lines.append(cur)
             cur, cur_w = [], 0.0
         if cur:
-            add(cur, Span(" ", size))
+            _add(cur, Span(" ", size))
             cur_w += space
         for sp in spans:
-            add(cur, sp)
+            _add(cur, sp)
         cur_w += w
-        lo = max(lo, w, cur_w)
     if cur:
         lines.append(cur)
-    if hi <= lo:                                         # a split word (or rounding): this width only
-        lo = hi = width
-    return [tuple(Span(*r) for r in line) for line in lines], lo, hi
+    return [tuple(Span(*r) for r in line) for line in lines]
 
 
 @functools.lru_cache(maxsize=16384)
-def _word(word: str, size: float) -> tuple[tuple[Span, ...], float]:
-    """A word's spans and width (measured once per word and size)."""
+def _word(word: str, size: float) -> tuple[tuple[Span, ...], float, float, float]:
+    """A word's spans, width, top and bottom (measured once per word and size)."""
     spans = rich(word, size)
-    return spans, measure(spans).width
+    m = measure(spans)
+    return spans, m.width, m.top, m.bottom
 
 
 def _split_long(word: str, width: float, size: float) -> list[str]:
@@ -122,24 +166,41 @@ def _split_long(word: str, width: float, size: float) -> list[str]:
 def stack_lines(lines: Sequence[tuple[Span, ...]], x: float, top: float, size: float, *,
                 style: str = "text", name: str = "") -> tuple[list[Text], float]:
     """Lines one under the other, the first box top at ``top``; returns texts and the bottom."""
-    out: list[Text] = []
-    y_prev: float | None = None
-    prev: Extent | None = None
+    ms = [measure(line) for line in lines]
+    ys, bottom = _baselines([(m.top, m.bottom) for m in ms], top, size)
+    return [Text(x, y, tuple(line), style, m.box(x, y), "", name) for line, m, y in zip(lines, ms, ys)], bottom
+
+
+def _baselines(extents: Sequence[tuple[float, float]], top: float, size: float) -> tuple[list[float], float]:
+    """The baselines of lines of the given (top, bottom) extents stacked from ``top``, and the bottom.
+    Every line is given room for a subscript, so lines with and without one are evenly spaced."""
     asc, desc = font_metrics()
-    # every line is given room for a subscript, so lines with and without one are evenly spaced
-    nominal = Extent(0.0, -asc * size, SUB_SHIFT * size + desc * sub_size(size))
-    for line in lines:
-        m = measure(line)
-        ext = Extent(m.width, min(m.top, nominal.top), max(m.bottom, nominal.bottom))
-        if y_prev is None:
-            y = top - ext.top
-        else:
-            assert prev is not None
-            y = y_prev + max(1.35 * size, prev.bottom - ext.top + 0.1 * size)
-        out.append(Text(x, y, tuple(line), style, m.box(x, y), "", name))      # text_at, measured once
-        y_prev, prev = y, ext
-    bottom = top if prev is None else y_prev + prev.bottom
-    return out, bottom
+    n_top, n_bottom = -asc * size, SUB_SHIFT * size + desc * sub_size(size)
+    ys: list[float] = []
+    y_prev = prev_bottom = 0.0
+    for t, b in extents:
+        e_top, e_bottom = min(t, n_top), max(b, n_bottom)
+        y = top - e_top if not ys else y_prev + max(1.35 * size, prev_bottom - e_top + 0.1 * size)
+        ys.append(y)
+        y_prev, prev_bottom = y, e_bottom
+    return ys, (top if not ys else y_prev + prev_bottom)
+
+
+def wrapped_height(markup: str, width: float, size: float) -> float | None:
+    """The height :func:`stack_lines` gives ``markup`` wrapped to ``width`` (from 0), found from the word
+    table without making a span or a command; None when a word would have to be split."""
+    words = _words(markup, size)
+    got = _breaks(words, width, text_width(" ", size)) if words else ([], 0.0, 0.0)
+    if got is None:
+        return None
+    asc, desc = font_metrics()
+    sp_top, sp_bottom = -asc * size, desc * size              # the space between words
+    ext = []
+    for i0, i1 in got[0]:
+        t = min(min(w[2] for w in words[i0:i1]), sp_top if i1 - i0 > 1 else 0.0)
+        b = max(max(w[3] for w in words[i0:i1]), sp_bottom if i1 - i0 > 1 else 0.0)
+        ext.append((t, b))
+    return _baselines(ext, 0.0, size)[1]
 
 
 # ---- text blocks: items that flow into slots -------------------------------------------------------
@@ -164,6 +225,10 @@ class Item:
 
     def layout(self, width: float, size: float) -> Placed:  # pragma: no cover - interface
         raise NotImplementedError
+
+    def height(self, width: float, size: float) -> float:
+        """``layout(width, size).height``; an item may find it without making its commands."""
+        return self.layout(width, size).height
 
 
 def heading_size(size: float) -> float:
@@ -202,11 +267,19 @@ class Paragraph(Item):
     label_chars: str = ""         # the widest label of the list, to size the label column
     name: str = ""
 
+    def _indent(self, size: float) -> float:
+        return text_width(self.label_chars or self.label, size) + 0.6 * size if self.label or self.label_chars else 0.0
+
+    def height(self, width: float, size: float) -> float:
+        indent = self._indent(size)
+        if width - indent < 8 * size:
+            raise TooWide(self.markup)
+        h = wrapped_height(self.markup, width - indent, size)
+        return self.layout(width, size).height if h is None else h
+
     def layout(self, width: float, size: float) -> Placed:
-        indent = 0.0
+        indent = self._indent(size)
         cmds: list[Command] = []
-        if self.label or self.label_chars:
-            indent = text_width(self.label_chars or self.label, size) + 0.6 * size
         if width - indent < 8 * size:
             raise TooWide(self.markup)
         lines, lo, hi = wrap_range(self.markup, width - indent, size)
@@ -393,6 +466,30 @@ def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None
     return got
 
 
+def item_height(item: Item, width: float, size: float, cache: LayoutCache | None = None) -> float:
+    """The height ``item`` takes at ``width`` and ``size`` (raises :class:`TooWide`), without making its
+    commands when the item can; remembered in ``cache`` beside :func:`layout_item`'s results."""
+    if cache is None:
+        return item.height(width, size)
+    w = round(width, 6)
+    got = cache.get((item, w, size))                      # set in full already
+    if isinstance(got, Placed):
+        return got.height
+    if isinstance(got, TooWide):
+        raise got
+    key = ("height", item, w, size)
+    h = cache.get(key)
+    if h is None:
+        try:
+            h = item.height(width, size)
+        except TooWide as e:
+            h = e
+        cache[key] = h
+    if isinstance(h, TooWide):
+        raise h
+    return h
+
+
 def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: float,
          cache: LayoutCache | None = None, *, tagged: bool = False, plan: bool = False) -> list | None:
     """Set the sections into the slots in order at lettering ``size``; None when they do not fit.
@@ -422,7 +519,8 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
         used = False
         return True
 
-    placements: list[tuple[str, float, float, Placed]] = []
+    placements: list[tuple[str, float, float, Item, float]] = []
+    measure_item = item_height if plan else (lambda it, w, sz, c: layout_item(it, w, sz, c).height)
     for sec in sections:
         items: list[Item] = [Heading(sec.heading), *sec.items] if sec.heading else list(sec.items)
         if used:
@@ -431,26 +529,27 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
         while i < len(items):
             item = items[i]
             try:
-                placed = layout_item(item, slot.w, size, cache)
-                need = placed.height
+                height = measure_item(item, slot.w, size, cache)
+                need = height
                 if item.keep_with_next and i + 1 < len(items):
-                    need += item_gap + layout_item(items[i + 1], slot.w, size, cache).height
+                    need += item_gap + measure_item(items[i + 1], slot.w, size, cache)
             except TooWide:
-                placed = None
+                height = None
                 need = math.inf
-            if placed is None or y + need > slot.bottom + 1e-9:
+            if height is None or y + need > slot.bottom + 1e-9:
                 # too wide or too tall for what is left of this slot: go on in the next one
                 if not next_slot():
                     return None
                 continue
-            placements.append((name, slot.x, y, placed))
-            y += placed.height + item_gap
+            placements.append((name, slot.x, y, item, slot.w))
+            y += height + item_gap
             used = True
             i += 1
     if plan:
-        return [name for name, _, _, placed in placements if placed.commands]
+        return [name for name, _, _, _, _ in placements]
     # everything fits: now make the commands
-    for name, x, y, placed in placements:
+    for name, x, y, item, w in placements:
+        placed = layout_item(item, w, size, cache)
         moved = with_region([translated(c, x, y) for c in placed.commands], name)
         out.extend(((name, c) for c in moved) if tagged else moved)
     return out

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+import pytest
 from hypothesis import given, settings, strategies as st
 
 from drafting.layout import wrap_range, wrap_words
@@ -33,3 +34,18 @@ def test_every_width_in_the_range_wraps_the_same(ws, width, f, size):
     assert got != lines or lo2 == hi2 == below
     if math.isfinite(hi):
         assert wrap_words(text, hi, size) != lines
+
+
+@settings(max_examples=150, deadline=None)
+@given(words, st.floats(20.0, 160.0), st.sampled_from([2.5, 3.0, 3.25, 3.5]), st.sampled_from(["", "3.", "12."]))
+def test_a_paragraph_s_height_without_commands_is_its_laid_out_height(ws, width, size, label):
+    """Planning asks only how tall an item is: the word-table path gives the laid-out height exactly."""
+    from drafting.layout import Paragraph, TooWide
+    p = Paragraph(" ".join(ws), label=label, label_chars=label)
+    try:
+        placed = p.layout(width, size)
+    except TooWide:
+        with pytest.raises(TooWide):
+            p.height(width, size)
+        return
+    assert p.height(width, size) == placed.height                 # bit for bit
