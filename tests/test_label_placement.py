@@ -54,3 +54,17 @@ def test_a_segment_along_an_edge_or_outside_covers_nothing():
     segs = _Segments([((0.0, 0.0), (10.0, 0.0), False), ((20.0, 5.0), (30.0, 5.0), True)])
     thin, thick = segs.covered(np.array([0.0, 2.0]), np.array([1.0, -1.0]), np.array([5.0, 6.0]), np.array([3.0, 1.0]))
     assert thin[0] == 0.0 and thin[1] == pytest.approx(4.0, rel=1e-12) and thick.tolist() == [0.0, 0.0]
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.sampled_from(["point", "polygon", "arrow", "trial"]), coord, coord, coord, coord,
+       st.floats(0.0, 2.0), st.floats(0.5, 12.0), st.floats(0.5, 4.0),
+       st.lists(st.floats(-math.pi, math.pi), max_size=4), st.sampled_from([0, 1]))
+def test_the_candidate_array_is_the_generator_to_the_last_bit(kind, x, y, ox, oy, r0, hw, hh, incident, relax):
+    from drafting.drawing import LabelReq
+    from drafting.labels import _candidate_array, _candidates
+    other = None if kind in ("point", "polygon") else (ox, oy if (ox, oy) != (x, y) else oy + 1.0)
+    req = LabelReq(kind, "A", (x, y), True, "a", r0, other)
+    want = [(c[0], c[1], k) for c, k in _candidates(req, hw, hh, incident, relax)]
+    got = _candidate_array(req, hw, hh, incident, relax)
+    assert [tuple(row) for row in got.tolist()] == want
