@@ -28,7 +28,8 @@ import numpy as np
 from .closed_forms import closed_form_parts, closed_form_state
 from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, ConstructionError, DegenerateInput, IndeterminatePosition
-from .linkage import Mechanism, locate
+from .geometry import Vec
+from .linkage import Mechanism, locate, place_rigid
 from .vector_loops import chain_solution
 
 XY = tuple[np.ndarray, np.ndarray]
@@ -239,6 +240,18 @@ def _constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float, progr
         vel[g] = acc[g] = (np.zeros(n), np.zeros(n))
     return _finish(th, pos, vel, acc, scalars("angular"), scalars("angular_acceleration"), ok,
                    "constraint equations", set(names) - set(m.ground), set())   # every body is NaN at a gap
+
+
+def crank_points(m: Mechanism, theta: float) -> dict[str, Vec] | None:
+    """The crank's points (SI) at crank angle ``theta``: its ground joint fixed, the link turned so that
+    its other joint lies at ``theta`` from it -- what a drawing shows at a gap, where nothing else stands."""
+    k = m.link(m.crank)
+    g = next((j for j in k.joints if j in m.ground), None)
+    if g is None:
+        return None
+    local = m.local(m.crank)
+    G = m.ground[g]
+    return {n: place_rigid(local, g, k.other(g), G, G + Vec.polar(k.length, theta), n) for n in local}
 
 
 def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0, *, progress=None) -> Sweep:

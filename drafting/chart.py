@@ -87,8 +87,25 @@ def _runs(xs: Sequence[float], ys: Sequence[float]) -> list[list[tuple[float, fl
 
 
 @panel_drawer(Chart)
+@dataclass(frozen=True)
+class ChartAxes:
+    """Where a drawn chart puts its values: paper x of a display x value, paper y of a display y value,
+    and the plot's top and bottom on paper (a cursor spans them)."""
+
+    x: Callable[[float], float]
+    y: Callable[[float], float]
+    top: float
+    bottom: float
+
+
 def draw_chart(e: Chart, rect: Rect, units: AxisUnits = SI_AXES, region: str = "") -> list[Command]:
     """The chart ``e`` filling ``rect`` (paper mm)."""
+    return chart_with_axes(e, rect, units, region)[0]
+
+
+def chart_with_axes(e: Chart, rect: Rect, units: AxisUnits = SI_AXES,
+                    region: str = "") -> tuple[list[Command], ChartAxes]:
+    """:func:`draw_chart`, and the chart's :class:`ChartAxes` (what a cursor over it needs)."""
     out: list[Command] = []
     name = e.name
     cx = lambda v: units.convert(e.x_kind, v)                              # noqa: E731
@@ -205,7 +222,7 @@ def draw_chart(e: Chart, rect: Rect, units: AxisUnits = SI_AXES, region: str = "
         for j, run in enumerate(_runs(s.x, s.y)):
             pts = tuple((round(px(cx(a)), 4), round(py(conv(b)), 4)) for a, b in run)
             out.append(Polyline(pts, st, f"{name}:series {i + 1} run {j + 1}"))
-    return out
+    return out, ChartAxes(px, py, plot_top, plot_bottom)
 
 
 def _clean(v: float, step: float) -> float:

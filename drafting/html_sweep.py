@@ -31,10 +31,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from constructions.geometry import Vec
-from constructions.linkage import Mechanism, place_rigid
+from constructions.linkage import Mechanism
+from constructions.sweep import crank_points
 from constructions.record import Chart, Construction
 
-from .chart import AxisUnits, draw_chart
+from .chart import AxisUnits, chart_with_axes
 from .drawing import PIN_R, DOT_R
 from .errors import LayoutError
 from .drawers import BLOCK_H, BLOCK_L, HATCH_LEN, HATCH_STEP
@@ -219,51 +220,6 @@ def _hull_order(local: dict[str, Vec]) -> list[str]:
     cx = sum(p.x for p in local.values()) / len(local)
     cy = sum(p.y for p in local.values()) / len(local)
     return sorted(local, key=lambda n: math.atan2(local[n].y - cy, local[n].x - cx))
-
-
-def crank_points(m: Mechanism, theta: float) -> dict[str, Vec] | None:
-    """The crank's points (SI) at crank angle ``theta``: its ground joint fixed, the link turned so that
-    its other joint lies at ``theta`` from it -- what the page draws at a gap, where nothing else stands."""
-    k = m.link(m.crank)
-    g = next((j for j in k.joints if j in m.ground), None)
-    if g is None:
-        return None
-    local = m.local(m.crank)
-    G = m.ground[g]
-    return {n: place_rigid(local, g, k.other(g), G, G + Vec.polar(k.length, theta), n) for n in local}
-
-
-def _chart_map(chart: Chart, cmds: list[Command], convert) -> tuple[tuple[float, float], tuple[float, float]] | None:
-    """The chart's paper x and y as linear functions of its display values, (a, b) with paper = a + b*v,
-    read back from the series polylines ``draw_chart`` drew (one vertex per finite sample)."""
-    xs, px, ys, py = [], [], [], []
-    for i, s in enumerate(chart.series):
-        runs: list[list[int]] = [[]]
-        for j, (x, y) in enumerate(zip(s.x, s.y)):
-            if math.isfinite(x) and math.isfinite(y):
-                runs[-1].append(j)
-            elif runs[-1]:
-                runs.append([])
-        runs = [r for r in runs if len(r) >= 2]
-        lines = [c for c in cmds if isinstance(c, Polyline) and c.name.startswith(f"{chart.name}:series {i + 1} run ")]
-        if len(lines) != len(runs) or any(len(r) != len(c.points) for r, c in zip(runs, lines)):
-            continue
-        for r, c in zip(runs, lines):
-            for j, (a, b) in zip(r, c.points):
-                xs.append(convert(chart.x_kind, s.x[j]))
-                px.append(a)
-                ys.append(convert(s.y_kind, s.y[j]))
-                py.append(b)
-    if len(set(xs)) < 2:
-        return None
-
-    def fit(v, p):
-        v, p = np.asarray(v), np.asarray(p)
-        if np.ptp(v) == 0:
-            return float(p.mean()), 0.0
-        b, a = np.polyfit(v, p, 1)
-        return float(a), float(b)
-    return fit(xs, px), fit(ys, py)
 
 
 def _ground_symbol(p: tuple[float, float], away: tuple[float, float], name: str) -> list[Command]:
@@ -555,7 +511,8 @@ class _Card:
                 self.static.append(Line(MECH_W, r.y, WIDTH, r.y, "separator", "sweep separator"))
             hd = viewport_header(r, chart.diagram.name, None, "", region="sweep", name=f"sweep {chart.name}")
             self.static += hd.commands
-            cmds = draw_chart(chart, Rect(r.x + 2.0, r.y + hd.height, r.w - 4.0, r.h - hd.height - 1.5), axes, "sweep")
+            cmds, at = chart_with_axes(chart, Rect(r.x + 2.0, r.y + hd.height, r.w - 4.0, r.h - hd.height - 1.5),
+                                       axes, "sweep")
             self.static += cmds
             for ser in chart.series:
                 col = []
@@ -568,20 +525,15 @@ class _Card:
                     col.append(text)
                 heads.append(markup_html(ser.label))
                 cols.append(col)
-            fits = _chart_map(chart, cmds, axes.convert)
-            axis_y = next((c for c in cmds if isinstance(c, Line) and c.name == f"{chart.name}:axis y"), None)
-            if fits is None or axis_y is None:
-                continue
-            (ax, bx), (ay, by) = fits
-            xs = [round(ax + bx * axes.convert(chart.x_kind, float(th[i])), 3) for i in range(count)]
+            xs = [round(at.x(axes.convert(chart.x_kind, float(th[i]))), 3) for i in range(count)]
             cid = f"sw-cursor-{ci}"
-            self.tag(Line(xs[0], axis_y.y1, xs[0], axis_y.y2, "series 4", f"sweep cursor {ci}"), cid, "sw-cursor")
+            self.tag(Line(xs[0], at.top, xs[0], at.bottom, "series 4", f"sweep cursor {ci}"), cid, "sw-cursor")
             dots = []
             for si, ser in enumerate(chart.series):
                 did = f"sw-dot-{ci}-{si}"
-                ys = [round(ay + by * axes.convert(ser.y_kind, float(ser.y[i])), 3)
+                ys = [round(at.y(axes.convert(ser.y_kind, float(ser.y[i]))), 3)
                       if i < len(ser.y) and math.isfinite(ser.y[i]) else None for i in range(count)]
-                self.tag(Circle(xs[0], ys[0] if ys[0] is not None else axis_y.y2, CURSOR_DOT, "dot",
+                self.tag(Circle(xs[0], ys[0] if ys[0] is not None else at.bottom, CURSOR_DOT, "dot",
                                 f"sweep dot {ci} {si}"), did, "sw-dot")
                 dots.append({"id": did, "y": ys})
             cursors.append({"id": cid, "x": xs, "dots": dots})
@@ -687,4 +639,4 @@ def sweep_section(study) -> SweepSection | None:
     return _Card(study, *sw).build()
 
 
-__all__ = ["SweepSection", "sweep_section", "crank_points", "STYLE"]
+__all__ = ["SweepSection", "sweep_section", "STYLE"]

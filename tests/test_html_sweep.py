@@ -20,7 +20,8 @@ import drafting
 from constructions.check import analytic_solution
 from constructions.sweep import sweep
 from drafting.html_page import page_html
-from drafting.html_sweep import MECH_W, WIDTH, HEIGHT, crank_points, sweep_section
+from constructions.sweep import crank_points
+from drafting.html_sweep import MECH_W, WIDTH, HEIGHT, sweep_section
 from drafting.paper import Polyline
 from drafting.scene import parse_scene
 from test_sweep import PARALLELOGRAM            # the same parallelogram four-bar
