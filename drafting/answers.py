@@ -36,6 +36,7 @@ from typing import Iterable, Mapping, Sequence
 from constructions.geometry import Vec
 from constructions.quantities import key as quantity_key
 
+from .scene import read_input_text
 from .textsafe import cut, one_line, printable
 from .units import UnitError, to_si
 
@@ -204,21 +205,7 @@ def parse_answer(path, name: str, raw, kind: str, unit: str) -> Answer:
 def read_answers(path: Path | str) -> list[tuple[str, object]]:
     """``(name, value)`` pairs of an answers file: CSV, or TOML when the suffix is .toml."""
     path = Path(path)
-    try:
-        with open(path, "rb") as fh:
-            data = fh.read(MAX_ANSWERS_BYTES + 1)
-    except FileNotFoundError:
-        raise AnswersError(path, "", "no such answers file") from None
-    except IsADirectoryError:
-        raise AnswersError(path, "", "is a folder, not an answers file") from None
-    except OSError as e:
-        raise AnswersError(path, "", f"cannot be read: {e.strerror or 'input/output error'}") from None
-    if len(data) > MAX_ANSWERS_BYTES:
-        raise AnswersError(path, "", f"is larger than {MAX_ANSWERS_BYTES // 1024} KiB")
-    try:
-        text = data.decode("utf-8").removeprefix("\ufeff")
-    except UnicodeDecodeError:
-        raise AnswersError(path, "", "is not UTF-8 text") from None
+    text = read_input_text(path, MAX_ANSWERS_BYTES, "answers file", AnswersError)
     if path.suffix.lower() == ".toml":
         try:
             t = tomllib.loads(text)

@@ -89,34 +89,39 @@ def load_scene(path: Path | str) -> Scene:
 
 
 def _read_text(path: Path) -> str:
-    """The file as text: at most MAX_FILE_BYTES are ever read, and every failure is one sentence."""
+    return read_input_text(path, limits.MAX_FILE_BYTES, "scene file", SceneError)
+
+
+def read_input_text(path: Path, max_bytes: int, noun: str, error) -> str:
+    """An input file (a scene, an answers file) as text: at most ``max_bytes`` are ever read, and every
+    failure is one ``error(path, "", sentence)`` that names what the file is (``noun``)."""
     try:
         mode = os.stat(path).st_mode          # before opening: a FIFO would block the open itself
         if stat.S_ISDIR(mode):
             raise IsADirectoryError
         if not stat.S_ISREG(mode):
-            raise SceneError(path, "", "is not a regular file")
+            raise error(path, "", "is not a regular file")
         with open(path, "rb") as fh:
-            raw = fh.read(limits.MAX_FILE_BYTES + 1)
-    except SceneError:
+            raw = fh.read(max_bytes + 1)
+    except error:
         raise
     except (FileNotFoundError, NotADirectoryError):
-        raise SceneError(path, "", "no such scene file") from None
+        raise error(path, "", f"no such {noun}") from None
     except IsADirectoryError:
-        raise SceneError(path, "", "is a folder, not a scene file") from None
+        raise error(path, "", f"is a folder, not {'an' if noun[0] in 'aeiou' else 'a'} {noun}") from None
     except PermissionError:
-        raise SceneError(path, "", "cannot be read: permission denied") from None
+        raise error(path, "", "cannot be read: permission denied") from None
     except OSError as e:
-        raise SceneError(path, "", f"cannot be read: {e.strerror or 'input/output error'}") from None
-    if len(raw) > limits.MAX_FILE_BYTES:
-        raise SceneError(path, "", f"is larger than {limits.MAX_FILE_BYTES // 1024} KiB; a scene file may "
-                                   f"be at most {limits.MAX_FILE_BYTES // 1024} KiB")
+        raise error(path, "", f"cannot be read: {e.strerror or 'input/output error'}") from None
+    if len(raw) > max_bytes:
+        raise error(path, "", f"is larger than {max_bytes // 1024} KiB; {'an' if noun[0] in 'aeiou' else 'a'} "
+                              f"{noun} may be at most {max_bytes // 1024} KiB")
     try:
         return raw.decode("utf-8").removeprefix("\ufeff")
     except UnicodeDecodeError as e:
         line = raw.count(b"\n", 0, e.start) + 1
-        raise SceneError(path, "", f"is not UTF-8 text (byte 0x{raw[e.start]:02x} on line {line}); save "
-                                   f"it as UTF-8") from None
+        raise error(path, "", f"is not UTF-8 text (byte 0x{raw[e.start]:02x} on line {line}); save "
+                              f"it as UTF-8") from None
 
 
 def parse_scene(text: str, path: Path | str = "<scene>") -> Scene:

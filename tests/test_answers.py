@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import io
+import os
 from pathlib import Path
 
 import pytest
@@ -76,6 +77,11 @@ def test_a_bad_answers_file_is_one_sentence(tmp_path, capsys):
     assert code == 2 and f"{f}: line 1: needs a name and a value" in err
     assert main(["check", str(EXAMPLE_1), "--answers", str(tmp_path / "none.csv")]) == 2
     assert "none.csv: no such answers file" in capsys.readouterr().err
+    # read as scenes are (drafting.scene.read_input_text): a pipe is refused rather than waited on
+    fifo = tmp_path / "answers.fifo"
+    os.mkfifo(fifo)
+    assert main(["check", str(EXAMPLE_1), "--answers", str(fifo)]) == 2
+    assert "answers.fifo: is not a regular file" in capsys.readouterr().err
 
 
 def test_marking_a_batch_variant(tmp_path, capsys):
