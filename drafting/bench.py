@@ -58,10 +58,12 @@ def render_rows(repeats: int = 7) -> list[dict]:
                "layout": _median_seconds(lambda: sheets_for(study), repeats),
                "svg": _median_seconds(lambda: [sheet_to_svg(s) for s in sheets], repeats),
                "pdf": _median_seconds(lambda: cairo_out.sheets_to_pdf(sheets), repeats),
-               "png": _median_seconds(lambda: [cairo_out.sheet_to_png(s, PNG_DPI) for s in sheets], repeats),
-               "commands": mpl.command_count(sheets)}
+               "png": _median_seconds(lambda: [cairo_out.sheet_to_png(s, PNG_DPI) for s in sheets], repeats)}
         if mpl.available():
             row["artists"] = mpl.artists(sheets)
+            if row["artists"] != mpl.command_count(sheets):       # checked before it is timed: the same drawing
+                raise RuntimeError(f"the matplotlib peer drew {row['artists']} artists for the sheet's "
+                                   f"{mpl.command_count(sheets)} commands; its timings would not compare")
             for fmt in ("svg", "pdf", "png"):
                 row["mpl_" + fmt] = _median_seconds(lambda: [mpl.save(s, fmt, PNG_DPI) for s in sheets], repeats)
         rows.append(row)
