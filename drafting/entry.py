@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import os
 import signal
-import sys
 import threading
 
 
@@ -24,9 +23,6 @@ def main(argv=None) -> int:
     previous = signal.signal(signal.SIGINT, _end_while_loading) if main_thread else None
     try:
         from .cli import main as run
-    except KeyboardInterrupt:
-        print("drafting: interrupted", file=sys.stderr)
-        return 130
     finally:
         if main_thread:
             signal.signal(signal.SIGINT, previous)
