@@ -19,6 +19,7 @@ key's CSV) together or not at all.
 
 from __future__ import annotations
 
+import copy
 import csv
 import datetime as _dt
 import io
@@ -31,13 +32,12 @@ from typing import Sequence
 from constructions.geometry import Vec
 from constructions.record import Construction, Role, Step, StepKind
 
-from . import layout as L
 from .answers import KeyItem, key_items
 from .errors import LayoutError
-from .paper import Rect, Rectangle
+from .scales import ratio_factor
 from .sheet import ResultRow, Sheet, SheetInfo, compose_sheets
 from .study import Study
-from .viewport import ChartPanel, SpacePanel, VectorPanel
+from .viewport import SpacePanel, VectorPanel
 
 BLANK = "________"
 """What a problem sheet writes for a value the student finds."""
@@ -192,51 +192,20 @@ def _hook(shown: set):
     return values
 
 
-class _Blank:
-    """A panel framed empty: the room, heading, scale and scale bar of the panel it stands for, nothing
-    drawn (mixed in before the panel's own class, so the packer treats it as that kind of panel)."""
-
-    def render(self, rung: int, rect: Rect, region: str):
-        if isinstance(self, VectorPanel):
-            header = L.viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region,
-                                       name=self.key)
-        elif isinstance(self, SpacePanel):
-            header = L.viewport_header(rect, self.heading(rung), self.ppu(rung), self.unit, region=region,
-                                       name=self.key)
-        else:
-            header = L.viewport_header(rect, self.title, None, "", region=region, name=self.key)
-        plot = Rect.from_edges(rect.x + 2.0, rect.y + header.height + 1.0, rect.right - 2.0, rect.bottom - 2.0)
-        cmds = list(header.commands)
-        if plot.w > 0 and plot.h > 0:
-            cmds.append(Rectangle(plot.x, plot.y, plot.w, plot.h, "path", f"{self.key} drawing area"))
-        return cmds, None
-
-
-_BLANK_CLASSES: dict[type, type] = {}
-
-
 def blank_panel(panel, scale=None):
-    """``panel`` framed empty; held at ``scale`` (a DiagramScale of the worked sheet) when given."""
-    cls = type(panel)
-    blank_cls = _BLANK_CLASSES.get(cls)
-    if blank_cls is None:
-        blank_cls = _BLANK_CLASSES[cls] = type(f"Blank{cls.__name__}", (_Blank, cls), {})
-    b = object.__new__(blank_cls)
-    b.__dict__.update(panel.__dict__)
+    """``panel`` framed empty (its heading, scale and scale bar; nothing drawn); held at ``scale`` (a
+    DiagramScale of the worked sheet) when given."""
+    b = copy.copy(panel)
+    b.blank = True
     if scale is not None:
         if isinstance(panel, VectorPanel) and panel.fixed is None:
             b.values = (scale.per_mm,)
         elif isinstance(panel, SpacePanel):
             same = [r for r in panel.ratios
-                    if math.isclose(1.0 / (1000.0 * _ratio_factor(r)), scale.units_per_mm, rel_tol=1e-9)]
+                    if math.isclose(1.0 / (1000.0 * ratio_factor(r)), scale.units_per_mm, rel_tol=1e-9)]
             if same:
                 b.ratios = (same[0],)
     return b
-
-
-def _ratio_factor(r) -> float:
-    from .scales import ratio_factor
-    return ratio_factor(r)
 
 
 def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[KeyItem], date: str,

@@ -29,7 +29,7 @@ from .diagram import Drawing, TextFn, draw_entities, model_points
 from .errors import LayoutError
 from .formats import DiagramScale, per_si, symbol_of
 from .labels import place_labels
-from .paper import Command, Rect, Text
+from .paper import Command, Rect, Rectangle, Text
 from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
 from .transform import Transform
 
@@ -121,6 +121,7 @@ class Panel:
     key: str
     kind: str                    # "space", "vector", "chart"
     priority: int = 1
+    blank: bool = False          # framed empty: heading, scale and scale bar, nothing drawn (a problem sheet)
 
     def rungs(self) -> int:
         raise NotImplementedError
@@ -147,8 +148,27 @@ class Panel:
         """The extent of the diagram's own figure (model points) on paper at ``rung``, mm."""
         return (0.0, 0.0)
 
-    def render(self, rung: int, rect: Rect, region: str) -> tuple[list[Command], Transform | None]:
+    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
+        """The panel's heading (with its scale and scale bar where it has one) at the top of ``rect``."""
         raise NotImplementedError
+
+    def render(self, rung: int, rect: Rect, region: str) -> tuple[list[Command], Transform | None]:
+        header = self.header(rung, rect, region)
+        if self.blank:
+            return _empty_frame(self.key, header, rect), None
+        return self.draw(rung, rect, region, header)
+
+    def draw(self, rung: int, rect: Rect, region: str, header: L.Header) -> tuple[list[Command], Transform | None]:
+        raise NotImplementedError
+
+
+def _empty_frame(key: str, header: L.Header, rect: Rect) -> list[Command]:
+    """The header over an empty framed drawing area (where a student draws)."""
+    plot = Rect.from_edges(rect.x + 2.0, rect.y + header.height + 1.0, rect.right - 2.0, rect.bottom - 2.0)
+    cmds = list(header.commands)
+    if plot.w > 0 and plot.h > 0:
+        cmds.append(Rectangle(plot.x, plot.y, plot.w, plot.h, "path", f"{key} drawing area"))
+    return cmds
 
 
 def _fit_drawing(bb: Rect | None) -> Size:
@@ -247,10 +267,12 @@ class SpacePanel(Panel):
         k = self.k(rung)
         return self.figure.extent[0] * k, self.figure.extent[1] * k
 
-    def render(self, rung: int, rect: Rect, region: str):
-        heading = self.heading(rung)
-        header = L.viewport_header(rect, heading, self.ppu(rung), self.unit, region=region, name=self.key)
-        return _render_drawing(self.figure.drawing(self.k(rung)), self.k(rung), header, rect, region, heading)
+    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
+        return L.viewport_header(rect, self.heading(rung), self.ppu(rung), self.unit, region=region, name=self.key)
+
+    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
+        return _render_drawing(self.figure.drawing(self.k(rung)), self.k(rung), header, rect, region,
+                               self.heading(rung))
 
 
 VECTOR_TITLES = {"velocity": "Velocity polygon", "acceleration": "Acceleration polygon", "force": "Force polygon"}
@@ -330,9 +352,10 @@ class VectorPanel(Panel):
     def known_mm(self, rung: int) -> float:
         return self.known * self.k(rung)
 
-    def render(self, rung: int, rect: Rect, region: str):
-        header = L.viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region,
-                                   name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
+        return L.viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region, name=self.key)
+
+    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
         return _render_drawing(self.figure.drawing(self.k(rung)), self.k(rung), header, rect, region, self.title)
 
 
@@ -361,8 +384,10 @@ class ChartPanel(Panel):
     def min_width(self) -> float:
         return CHART_MIN[0]
 
-    def render(self, rung: int, rect: Rect, region: str):
-        header = L.viewport_header(rect, self.title, None, "", region=region, name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
+        return L.viewport_header(rect, self.title, None, "", region=region, name=self.key)
+
+    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
         cmds: list[Command] = list(header.commands)
         area = Rect.from_edges(rect.x + 2.0, rect.y + header.height, rect.right - 2.0, rect.bottom - 2.0)
         n = len(self.charts)
