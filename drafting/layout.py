@@ -13,15 +13,15 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass, field, replace
-from typing import Callable, MutableMapping, Sequence
+from dataclasses import dataclass, replace
+from typing import MutableMapping, Sequence
 
 from constructions.record import Term, VectorEquation
 
 from .errors import LayoutError  # re-exported: its old home
 from .paper import Command, Line, Rect, Rectangle, Span, Text, translated
 from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text  # noqa: F401 (re-exported)
-from .style import (HEADING, LABEL, MIN_TEXT, SUB_SHIFT, TITLE, Extent, font_metrics, measure, plain,
+from .style import (HEADING, LABEL, MIN_TEXT, SUB_SHIFT, TITLE, font_metrics, measure, plain,
                     rich, sub_size, text_width)
 from .transform import Transform  # noqa: F401 (re-exported: its old home)
 
@@ -47,21 +47,12 @@ def with_region(cmds: Sequence[Command], region: str) -> list[Command]:
 def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]:
     """Greedy word wrap of rich text into lines no wider than ``width`` mm; neighbouring runs of one
     size, shift and slant are joined into one span as the line is built."""
-    return wrap_range(markup, width, size)[0]
-
-
-def wrap_range(markup: str, width: float, size: float) -> tuple[list[tuple[Span, ...]], float, float]:
-    """:func:`wrap_words`, and the widths ``[lo, hi)`` that give exactly the same lines: every test the
-    greedy wrap makes comes out the same for any width in it (a line's words fit while ``lo <= width``,
-    every break still happens while ``width < hi``).  A word split for being longer than the line
-    gives the empty range ``(width, width)``: nothing else is promised then."""
     words = _words(markup, size)
     if not words:
-        return [], 0.0, math.inf
-    got = _breaks(words, width, text_width(" ", size))
-    if got is None:
-        return _wrap_splitting(markup, width, size), width, width
-    breaks, lo, hi = got
+        return []
+    breaks = _breaks(words, width, text_width(" ", size))
+    if breaks is None:
+        return _wrap_splitting(markup, width, size)
     space = Span(" ", size)
     lines = []
     for i0, i1 in breaks:
@@ -72,7 +63,7 @@ def wrap_range(markup: str, width: float, size: float) -> tuple[list[tuple[Span,
             for sp in words[i][0]:
                 _add(run, sp)
         lines.append(tuple(Span(*r) for r in run))
-    return lines, lo, hi
+    return lines
 
 
 @functools.lru_cache(maxsize=4096)
@@ -82,27 +73,23 @@ def _words(markup: str, size: float) -> tuple[tuple[tuple[Span, ...], float, flo
     return tuple(_word(w, size) for w in markup.split())
 
 
-def _breaks(words, width: float, space: float) -> tuple[list[tuple[int, int]], float, float] | None:
+def _breaks(words, width: float, space: float) -> list[tuple[int, int]] | None:
     """The greedy wrap of ``words`` (see :func:`_words`) into lines no wider than ``width``: the lines as
-    (first, end) word indices and the range ``[lo, hi)`` of widths giving the same; None when a word is
-    longer than the line (it must be split: :func:`_wrap_splitting`)."""
+    (first, end) word indices; None when a word is longer than the line (it must be split:
+    :func:`_wrap_splitting`)."""
     lines: list[tuple[int, int]] = []
-    start, cur_w, lo, hi = 0, 0.0, 0.0, math.inf
+    start, cur_w = 0, 0.0
     for i, (_, w, _, _) in enumerate(words):
         if w > width:
             return None
         if i > start and cur_w + space + w > width:
-            hi = min(hi, cur_w + space + w)
             lines.append((start, i))
             start, cur_w = i, 0.0
         if i > start:
             cur_w += space
         cur_w += w
-        lo = max(lo, w, cur_w)
     lines.append((start, len(words)))
-    if hi <= lo:                                         # rounding: this width only
-        lo = hi = width
-    return lines, lo, hi
+    return lines
 
 
 def _add(run: list[list], s: Span) -> None:
@@ -190,13 +177,13 @@ def wrapped_height(markup: str, width: float, size: float) -> float | None:
     """The height :func:`stack_lines` gives ``markup`` wrapped to ``width`` (from 0), found from the word
     table without making a span or a command; None when a word would have to be split."""
     words = _words(markup, size)
-    got = _breaks(words, width, text_width(" ", size)) if words else ([], 0.0, 0.0)
+    got = _breaks(words, width, text_width(" ", size)) if words else []
     if got is None:
         return None
     asc, desc = font_metrics()
     sp_top, sp_bottom = -asc * size, desc * size              # the space between words
     ext = []
-    for i0, i1 in got[0]:
+    for i0, i1 in got:
         t = min(min(w[2] for w in words[i0:i1]), sp_top if i1 - i0 > 1 else 0.0)
         b = max(max(w[3] for w in words[i0:i1]), sp_bottom if i1 - i0 > 1 else 0.0)
         ext.append((t, b))
@@ -211,13 +198,10 @@ class TooWide(Exception):
 
 @dataclass(frozen=True)
 class Placed:
-    """An item set at one width: its commands (from its top-left corner) and height.  ``same(width)``,
-    when given, says whether setting the item at ``width`` gives exactly this again (a paragraph wraps
-    the same over a range of widths), so a plan trying other widths need not set it again."""
+    """An item set at one width: its commands (from its top-left corner) and height."""
 
     commands: tuple[Command, ...]
     height: float
-    same: Callable[[float], bool] | None = field(default=None, compare=False)
 
 
 class Item:
@@ -243,19 +227,9 @@ class Heading(Item):
     def layout(self, width: float, size: float) -> Placed:
         hs = heading_size(size)
         spans = plain(self.text, hs)
-        one = measure(spans).width
-        if one > width:
-            lines, lo, hi = wrap_range(self.text, width, hs)
-
-            def same(w: float) -> bool:
-                return one > w and lo <= w < hi
-        else:
-            lines = [spans]
-
-            def same(w: float) -> bool:
-                return not one > w
+        lines = wrap_words(self.text, width, hs) if measure(spans).width > width else [spans]
         texts, bottom = stack_lines(lines, 0.0, 0.0, hs, style="heading", name=f"heading {self.text}")
-        return Placed(tuple(texts), bottom, same)
+        return Placed(tuple(texts), bottom)
 
 
 @dataclass(frozen=True)
@@ -282,17 +256,14 @@ class Paragraph(Item):
         cmds: list[Command] = []
         if width - indent < 8 * size:
             raise TooWide(self.markup)
-        lines, lo, hi = wrap_range(self.markup, width - indent, size)
-
-        def same(w: float) -> bool:
-            return not w - indent < 8 * size and lo <= w - indent < hi
+        lines = wrap_words(self.markup, width - indent, size)
         texts, bottom = stack_lines(lines, indent, 0.0, size, name=self.name)
         cmds.extend(texts)
         if self.label:
             y = texts[0].y if texts else -measure(plain(self.label, size)).top
             cmds.append(text_at(indent - 0.6 * size, y, plain(self.label, size), anchor="end",
                                 name=f"{self.name} number"))
-        return Placed(tuple(cmds), bottom, same)
+        return Placed(tuple(cmds), bottom)
 
 
 MARK_YES = "\u2713"   # check mark: known
@@ -451,15 +422,10 @@ def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None
     key = (item, round(width, 6), size)
     got = cache.get(key)
     if got is None:
-        ranged = cache.setdefault(("same", item, size), [])
-        got = next((p for p in ranged if p.same(width)), None)   # set already at a width giving the same
-        if got is None:
-            try:
-                got = item.layout(width, size)
-            except TooWide as e:
-                got = e
-            if isinstance(got, Placed) and got.same is not None:
-                ranged.append(got)
+        try:
+            got = item.layout(width, size)
+        except TooWide as e:
+            got = e
         cache[key] = got
     if isinstance(got, TooWide):
         raise got

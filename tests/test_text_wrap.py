@@ -1,39 +1,27 @@
-"""Word wrap: the range of widths wrap_range promises gives exactly the same lines, and its ends are
-where the lines change."""
+"""Word wrap: the word-table wrap and the letter-splitting wrap agree wherever nothing is split, and the
+height planning reads off the word table is the laid-out height."""
 
 from __future__ import annotations
-
-import math
 
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from drafting.layout import wrap_range, wrap_words
 
 words = st.lists(st.sampled_from(["V_CB", "the", "polygon", "ω_2", "=", "197.4", "mm/s,", "perpendicular",
                                   "O_1B", "a", "Draw", "through", "Coriolis", "2ω_3V_{A3A}"]), min_size=1, max_size=40)
 
 
 @settings(max_examples=150, deadline=None)
-@given(words, st.floats(20.0, 160.0), st.floats(0.0, 1.0), st.sampled_from([2.5, 3.0, 3.5]))
-def test_every_width_in_the_range_wraps_the_same(ws, width, f, size):
+@given(words, st.floats(4.0, 160.0), st.sampled_from([2.5, 3.0, 3.5]))
+def test_the_two_greedy_wraps_agree(ws, width, size):
+    """wrap_words takes its breaks from the word table and falls back to splitting a word only when one is
+    longer than the line; the splitting wrap, on text where nothing needs splitting, breaks the same."""
+    from drafting.layout import _breaks, _words, _wrap_splitting, wrap_words
+    from drafting.style import text_width
     text = " ".join(ws)
-    lines, lo, hi = wrap_range(text, width, size)
-    assert lines == wrap_words(text, width, size)
-    if lo == hi:                                         # a split word: only this width promised
-        assert lo == width
-        return
-    assert lo <= width < hi
-    inside = lo + f * (min(hi, lo + 200.0) - lo)
-    if inside < hi:
-        assert wrap_words(text, inside, size) == lines
-    # the ends are tight: just below, a line no longer fits (it breaks earlier, or a word has to be
-    # split); at hi, a break no longer happens
-    below = math.nextafter(lo, -math.inf)
-    got, lo2, hi2 = wrap_range(text, below, size)
-    assert got != lines or lo2 == hi2 == below
-    if math.isfinite(hi):
-        assert wrap_words(text, hi, size) != lines
+    split = _breaks(_words(text, size), width, text_width(" ", size)) is None
+    assert split == any(w[1] > width for w in _words(text, size))
+    assert wrap_words(text, width, size) == _wrap_splitting(text, width, size)
 
 
 @settings(max_examples=150, deadline=None)
