@@ -34,9 +34,7 @@ def available() -> str | None:
 
 def figure_for(sheet: Sheet):
     """A matplotlib figure holding every command of ``sheet`` as an artist."""
-    import matplotlib
-    matplotlib.use("Agg", force=True)
-    from matplotlib.figure import Figure
+    from matplotlib.figure import Figure          # no pyplot, no backend switched: savefig picks by format
     from matplotlib.lines import Line2D
     from matplotlib import patches
 
