@@ -71,6 +71,17 @@ def _handler(signum, frame) -> None:
     raise Interrupted(signum)
 
 
+def end_worker(signum, frame) -> None:
+    """SIGTERM in a pool worker: its temporary files removed and the process gone at once -- or, inside
+    a :func:`deferred` block (a cairo conversion, the renames that put a job's files in place), at the
+    end of that block."""
+    if _defer_depth:
+        _handler(signum, frame)
+        return
+    remove_temporaries()
+    os._exit(128 + signum)
+
+
 @contextlib.contextmanager
 def deferred() -> Iterator[None]:
     """Hold a signal that arrives inside the block until the block ends (then raise Interrupted)."""

@@ -56,7 +56,7 @@ def _worker_init() -> None:
     """In each pool worker: SIGINT ignored (the parent coordinates), SIGTERM a clean end, and SIGTERM
     when the parent dies (Linux)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, _worker_term)
+    signal.signal(signal.SIGTERM, faults.end_worker)
     try:
         import ctypes
         libc = ctypes.CDLL(None, use_errno=True)
@@ -66,17 +66,6 @@ def _worker_init() -> None:
             os._exit(128 + signal.SIGTERM)
     except (OSError, AttributeError):
         pass
-
-
-def _worker_term(signum, frame) -> None:
-    """SIGTERM in a pool worker: its temporary files removed and the worker gone at once -- or, inside
-    a block that must finish (a cairo conversion, the renames that put a job's files in place), at the
-    end of that block (faults.deferred)."""
-    if faults._defer_depth:
-        faults._handler(signum, frame)
-        return
-    faults.remove_temporaries()
-    os._exit(128 + signum)
 
 
 def _call(fn: Callable[[Any], Any], job: Any) -> Any:
