@@ -150,8 +150,11 @@ def _best_candidate(cands: np.ndarray, hw: float, hh: float, plot: Rect, near_pl
                     near_hard: list[Rect], near_segs: "_Segments", mandatory: bool):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
     or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
-    part of a thick line.  All candidates are tested at once: the arithmetic is the scalar test's,
-    operation for operation, so the choice is the same to the last bit."""
+    part of a thick line.  A score is the candidate's cost plus what it hides of the lines (never
+    negative), so the candidates are clipped against the lines cheapest first, a few at a time, until
+    no candidate left can score lower than the best found.  The arithmetic of a score is the scalar
+    test's, operation for operation, so the choice is the same to the last bit (a test holds it to
+    the exhaustive search)."""
     if not len(cands):
         return None
     c = cands
@@ -167,20 +170,36 @@ def _best_candidate(cands: np.ndarray, hw: float, hh: float, plot: Rect, near_pl
             hit = ((left[:, None] < o[:, 2] + gap) & (o[:, 0] < right[:, None] + gap)
                    & (top[:, None] < o[:, 3] + gap) & (o[:, 1] < bottom[:, None] + gap))
             ok &= ~hit.any(axis=1)
-    if not ok.any():
+    k = np.flatnonzero(ok)
+    if not len(k):
         return None
-    k = np.flatnonzero(ok)                  # only the candidates still in the running are clipped
-    thin, thick = near_segs.covered(left[k], top[k], right[k], bottom[k])
-    if not mandatory:
-        ok[k] &= ~(thick > 0)               # an optional label never hides part of a thick line
-    total = np.full(len(c), np.inf)
-    total[k] = cost[k] + 3.0 * thin + 20.0 * thick
-    total[~ok] = np.inf
-    i = int(np.argmin(total))
-    if not ok[i]:
+    k = k[np.argsort(cost[k], kind="stable")]         # cheapest first, ties in their order
+    # a candidate whose box meets no line's box hides nothing: its score is its cost, and the first of
+    # them bounds the best; only the candidates cheaper than that (or as cheap) are clipped
+    bx = near_segs.boxes
+    touch = ((bx[:, 0] <= right[k, None]) & (bx[:, 2] >= left[k, None])
+             & (bx[:, 1] <= bottom[k, None]) & (bx[:, 3] >= top[k, None])).any(axis=1)
+    free = np.flatnonzero(~touch)
+    best_total, best_i = (float(cost[k[free[0]]]), int(k[free[0]])) if len(free) else (math.inf, -1)
+    clip = k[touch & (cost[k] <= best_total)]
+    for start in range(0, len(clip), _CHUNK):
+        if cost[clip[start]] > best_total:        # nothing left can score lower (or tie)
+            break
+        idx = clip[start:start + _CHUNK]
+        thin, thick = near_segs.covered(left[idx], top[idx], right[idx], bottom[idx])
+        total = cost[idx] + 3.0 * thin + 20.0 * thick
+        if not mandatory:
+            total[thick > 0] = math.inf           # an optional label never hides part of a thick line
+        for i, t in zip(idx.tolist(), total.tolist()):
+            if t < best_total or (t == best_total and t < math.inf and i < best_i):
+                best_total, best_i = t, i
+    if best_i < 0:
         return None
-    centre = (float(cx[i]), float(cy[i]))
-    return float(total[i]), centre, Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
+    centre = (float(cx[best_i]), float(cy[best_i]))
+    return best_total, centre, Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
+
+
+_CHUNK = 8      # candidates clipped at a time (most labels find their place among the first few)
 
 
 class _Segments:
@@ -212,31 +231,46 @@ class _Segments:
 
     def covered(self, left, top, right, bottom) -> tuple[np.ndarray, np.ndarray]:
         """(thin, thick): the length of thin and of thick line inside each box (boxes by their edge
-        arrays; Liang-Barsky clipping), summed segment after segment in order."""
+        arrays; Liang-Barsky clipping), summed segment after segment in order.  Only the pairs whose
+        boxes meet are clipped (the others add exactly 0.0), one by one: a label's boxes meet a few
+        lines, and a few scalar clips cost less than array arithmetic over all of them."""
         n = len(left)
-        if not len(self.length):
-            return np.zeros(n), np.zeros(n)
-        L, T, R, B = left[:, None], top[:, None], right[:, None], bottom[:, None]
+        thin, thick = [0.0] * n, [0.0] * n
         bx = self.boxes
-        touch = ~((bx[:, 0] > R) | (bx[:, 2] < L) | (bx[:, 1] > B) | (bx[:, 3] < T))
-        a0, a1, b0, b1 = self.ends.T
-        dx, dy = b0 - a0, b1 - a1
-        t0 = np.zeros(touch.shape)
-        t1 = np.ones(touch.shape)
-        dead = ~touch
-        with np.errstate(divide="ignore", invalid="ignore"):
-            for p, q in ((-dx, a0 - L), (dx, R - a0), (-dy, a1 - T), (dy, B - a1)):
-                flat = np.abs(p) < 1e-12                      # parallel to this edge: outside or no limit
-                dead |= flat & (q < 0)
-                t = q / np.where(flat, 1.0, p)
-                t0 = np.where(~flat & (p < 0), np.maximum(t0, t), t0)
-                t1 = np.where(~flat & (p >= 0), np.minimum(t1, t), t1)
-        dead |= t0 > t1
-        ln = (t1 - t0) * self.length
-        ln[dead] = 0.0
-        thin = np.cumsum(np.where(self.heavy, 0.0, ln), axis=1)[:, -1]      # cumsum: in order, one by one
-        thick = np.cumsum(np.where(self.heavy, ln, 0.0), axis=1)[:, -1]
-        return thin, thick
+        if n and len(bx):
+            touch = ((bx[:, 0] <= right[:, None]) & (bx[:, 2] >= left[:, None])
+                     & (bx[:, 1] <= bottom[:, None]) & (bx[:, 3] >= top[:, None]))
+            rows, cols = np.nonzero(touch)              # row by row, each row's segments in order
+            ends, heavy, length = self.ends.tolist(), self.heavy.tolist(), self.length.tolist()
+            lt, tp, rt, bt = left.tolist(), top.tolist(), right.tolist(), bottom.tolist()
+            for i, j in zip(rows.tolist(), cols.tolist()):
+                a0, a1, b0, b1 = ends[j]
+                got = _clip(a0, a1, b0 - a0, b1 - a1, lt[i], tp[i], rt[i], bt[i]) * length[j]
+                if heavy[j]:
+                    thick[i] += got
+                else:
+                    thin[i] += got
+        return np.array(thin), np.array(thick)
+
+
+def _clip(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
+          bottom: float) -> float:
+    """The fraction of the segment from (a0, a1) along (dx, dy) inside a box (Liang-Barsky)."""
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, a0 - left), (dx, right - a0), (-dy, a1 - top), (dy, bottom - a1)):
+        if abs(p) < 1e-12:                      # parallel to this edge: outside, or no limit
+            if q < 0:
+                return 0.0
+            continue
+        t = q / p
+        if p < 0:
+            if t > t0:
+                t0 = t
+        elif t < t1:
+            t1 = t
+        if t0 > t1:
+            return 0.0
+    return t1 - t0
 
 
 _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin

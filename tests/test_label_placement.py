@@ -68,3 +68,54 @@ def test_the_candidate_array_is_the_generator_to_the_last_bit(kind, x, y, ox, oy
     want = [(c[0], c[1], k) for c, k in _candidates(req, hw, hh, incident, relax)]
     got = _candidate_array(req, hw, hh, incident, relax)
     assert [tuple(row) for row in got.tolist()] == want
+
+
+def exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory):
+    """Every candidate scored with the scalar clip, the first of the lowest score: the reference."""
+    best = None
+    for x, y, cost in cands:
+        left, top, right, bottom = x - hw, y - hh, x - hw + 2 * hw, y - hh + 2 * hh
+        if not (left >= plot.left - 1e-6 and right <= plot.right + 1e-6 and top >= plot.top - 1e-6
+                and bottom <= plot.bottom + 1e-6):
+            continue
+        if any(left < r.right + g and r.left < right + g and top < r.bottom + g and r.top < bottom + g
+               for rects, g in ((placed, 0.3), (hard, 0.2)) for r in rects):
+            continue
+        thin = thick = 0.0
+        for a, b, heavy in segments:
+            got = clip_len(a, b, left, top, right, bottom)
+            if heavy:
+                thick += got
+            else:
+                thin += got
+        if not mandatory and thick > 0:
+            continue
+        total = cost + 3.0 * thin + 20.0 * thick
+        if best is None or total < best[0]:
+            best = (total, (x, y))
+    return best
+
+
+rect = st.tuples(coord, coord, st.floats(0.5, 10).map(lambda v: round(v, 1)), st.floats(0.5, 10).map(lambda v: round(v, 1)))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.tuples(coord, coord, st.sampled_from([0.0, 0.5, 1.0, 2.5]).flatmap(
+           lambda c: st.just(c) | st.floats(0, 6).map(lambda v: round(v, 1)))), min_size=1, max_size=40),
+       st.floats(0.5, 6.0).map(lambda v: round(v, 1)), st.floats(0.5, 3.0).map(lambda v: round(v, 1)),
+       st.lists(segment, max_size=25), st.lists(rect, max_size=4), st.lists(rect, max_size=4), st.booleans())
+def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, segments, placed, hard, mandatory):
+    """Clipping only the candidates that can still win (cheapest first, bounded by the first that
+    meets no line) chooses the same candidate with the same score, ties included, as scoring all."""
+    from drafting.labels import _best_candidate
+    from drafting.paper import Rect
+    plot = Rect(-40.0, -40.0, 80.0, 80.0)
+    placed = [Rect(*r) for r in placed]
+    hard = [Rect(*r) for r in hard]
+    got = _best_candidate(np.array(cands, dtype=float).reshape(-1, 3), hw, hh, plot, placed, hard,
+                          _Segments(segments), mandatory)
+    want = exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory)
+    if want is None:
+        assert got is None
+    else:
+        assert got is not None and (got[0], got[1]) == want
