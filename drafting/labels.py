@@ -129,21 +129,70 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     return out
 
 
+def _edges(ux: np.ndarray, uy: np.ndarray, hw: float, hh: float) -> np.ndarray:
+    """:func:`_edge` of each unit vector (ux, uy)."""
+    ax, ay = np.abs(ux), np.abs(uy)
+    with np.errstate(divide="ignore"):
+        return np.minimum(np.where(ax > 1e-9, hw / ax, np.inf), np.where(ay > 1e-9, hh / ay, np.inf))
+
+
+_ATAN = np.array(_DIR_ATAN)
+_ARROW_F = np.array((0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8))
+_TRIAL_S = np.array((3.0, 6.0, 10.0, 15.0, 22.0))
+_SIDES = np.array((1.0, -1.0))
+
+
 def _candidate_array(req: LabelReq, hw: float, hh: float, incident: list[float], relax: int) -> np.ndarray:
     """:func:`_candidates` as an (n, 3) array of centre x, y and cost, in the same order and to the last
-    bit (a point's 64 are computed at once, with the generator's arithmetic)."""
-    if req.kind not in ("point", "polygon"):
-        return np.array([(c[0], c[1], k) for c, k in _candidates(req, hw, hh, incident, relax)], dtype=float)
+    bit (computed at once, with the generator's arithmetic operation for operation)."""
     dists = np.array((0.7, 1.6, 3.0, 4.5) if relax == 0 else (6.0, 8.0, 11.0, 15.0))
-    gaps = np.array([min((angle_gap(ap, b) for b in incident), default=math.pi) for ap in _DIR_ATAN])
-    edges = np.array([_edge(u, hw, hh) for u in _DIRS])
-    t = (req.r0 + dists)[:, None] + edges[None, :]
-    cost = (2.0 * (math.pi - gaps))[None, :] + (0.8 * dists)[:, None] + _LEAN[None, :]
-    p = req.anchor
-    out = np.stack([(p[0] + _UX[None, :] * t).ravel(), (p[1] + _UY[None, :] * t).ravel(), cost.ravel()], axis=1)
-    if req.kind == "polygon" and relax == 0:
-        out = np.vstack([np.array([[p[0], p[1], 0.0]]), out])
-    return out
+    if req.kind in ("point", "polygon"):
+        if incident:
+            d = np.abs(_ATAN[:, None] - np.array(incident)[None, :]) % (2 * math.pi)
+            gaps = np.minimum(d, 2 * math.pi - d).min(axis=1)
+        else:
+            gaps = np.full(16, math.pi)
+        edges = _edges(_UX, _UY, hw, hh)
+        t = (req.r0 + dists)[:, None] + edges[None, :]
+        cost = (2.0 * (math.pi - gaps))[None, :] + (0.8 * dists)[:, None] + _LEAN[None, :]
+        p = req.anchor
+        out = np.stack([(p[0] + _UX[None, :] * t).ravel(), (p[1] + _UY[None, :] * t).ravel(), cost.ravel()], axis=1)
+        if req.kind == "polygon" and relax == 0:
+            out = np.vstack([np.array([[p[0], p[1], 0.0]]), out])
+        return out
+    if req.kind == "arrow":
+        tail, tip = req.other, req.anchor
+        v = (tip[0] - tail[0], tip[1] - tail[1])
+        u = unit_vector(v)
+        n = (-u[1], u[0])
+        dd = dists[:3] if relax == 0 else dists
+        e = _edge(n, hw, hh)                            # the same on either side
+        t = (dd + 0.3) + e                              # (dist,)
+        ax, ay = tail[0] + v[0] * _ARROW_F, tail[1] + v[1] * _ARROW_F      # (f,)
+        nx, ny = n[0] * _SIDES, n[1] * _SIDES            # (side,)
+        cx = ax[None, :, None] + nx[None, None, :] * t[:, None, None]
+        cy = ay[None, :, None] + ny[None, None, :] * t[:, None, None]
+        cost = ((3.0 * np.abs(_ARROW_F - 0.5))[None, :, None] + (0.8 * dd)[:, None, None]) \
+            + np.array((0.0, 0.1))[None, None, :]
+        shape = cx.shape
+    elif req.kind == "trial":
+        end, start = req.anchor, req.other
+        v = unit_vector((start[0] - end[0], start[1] - end[1]))
+        n = (-v[1], v[0])
+        dd = dists[:3] if relax == 0 else dists
+        t = dd + _edge(n, hw, hh)                       # (dist,)
+        nx, ny = n[0] * _SIDES, n[1] * _SIDES            # (side,)
+        # (dist, s, side, end): from the near end, then from the far end
+        bx = np.stack([end[0] + v[0] * _TRIAL_S, start[0] + v[0] * -_TRIAL_S], axis=1)       # (s, end)
+        by = np.stack([end[1] + v[1] * _TRIAL_S, start[1] + v[1] * -_TRIAL_S], axis=1)
+        cx = bx[None, :, None, :] + nx[None, None, :, None] * t[:, None, None, None]
+        cy = by[None, :, None, :] + ny[None, None, :, None] * t[:, None, None, None]
+        base = (0.1 * _TRIAL_S)[None, :] + (0.8 * dd)[:, None]                             # (dist, s)
+        cost = np.stack([base, base + 1.0], axis=2)[:, :, None, :]
+        shape = cx.shape
+    else:
+        return np.zeros((0, 3))
+    return np.stack([cx.ravel(), cy.ravel(), np.broadcast_to(cost, shape).ravel()], axis=1)
 
 
 def _best_candidate(cands: np.ndarray, hw: float, hh: float, plot: Rect, near_placed: list[Rect],

@@ -21,7 +21,7 @@ from constructions.record import Term, VectorEquation
 from .errors import LayoutError  # re-exported: its old home
 from .paper import Command, Line, Rect, Rectangle, Span, Text, translated
 from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text  # noqa: F401 (re-exported)
-from .style import (HEADING, LABEL, MIN_TEXT, SUB_SHIFT, TITLE, font_metrics, measure, plain,
+from .style import (HEADING, LABEL, MIN_TEXT, SUB_SHIFT, TITLE, Extent, font_metrics, measure, plain,
                     rich, sub_size, text_width)
 from .transform import Transform  # noqa: F401 (re-exported: its old home)
 
@@ -130,6 +130,13 @@ def _wrap_splitting(markup: str, width: float, size: float) -> list[tuple[Span, 
     return [tuple(Span(*r) for r in line) for line in lines]
 
 
+@functools.lru_cache(maxsize=8192)
+def _cell(text: str, size: float) -> tuple[tuple[Span, ...], Extent]:
+    """A table cell's spans and extent (a table is measured at every width its page plans try)."""
+    spans = rich(text, size)
+    return spans, measure(spans)
+
+
 @functools.lru_cache(maxsize=16384)
 def _word(word: str, size: float) -> tuple[tuple[Span, ...], float, float, float]:
     """A word's spans, width, top and bottom (measured once per word and size)."""
@@ -173,9 +180,10 @@ def _baselines(extents: Sequence[tuple[float, float]], top: float, size: float) 
     return ys, (top if not ys else y_prev + prev_bottom)
 
 
-def wrapped_height(markup: str, width: float, size: float) -> float | None:
-    """The height :func:`stack_lines` gives ``markup`` wrapped to ``width`` (from 0), found from the word
-    table without making a span or a command; None when a word would have to be split."""
+def wrapped_extents(markup: str, width: float, size: float) -> list[tuple[float, float]] | None:
+    """The (top, bottom) extent of each line of ``markup`` wrapped to ``width``, as :func:`measure` takes
+    the line :func:`wrap_words` makes, found from the word table without making a span; None when a
+    word would have to be split."""
     words = _words(markup, size)
     got = _breaks(words, width, text_width(" ", size)) if words else []
     if got is None:
@@ -187,7 +195,14 @@ def wrapped_height(markup: str, width: float, size: float) -> float | None:
         t = min(min(w[2] for w in words[i0:i1]), sp_top if i1 - i0 > 1 else 0.0)
         b = max(max(w[3] for w in words[i0:i1]), sp_bottom if i1 - i0 > 1 else 0.0)
         ext.append((t, b))
-    return _baselines(ext, 0.0, size)[1]
+    return ext
+
+
+def wrapped_height(markup: str, width: float, size: float) -> float | None:
+    """The height :func:`stack_lines` gives ``markup`` wrapped to ``width`` (from 0), found from the word
+    table without making a span or a command; None when a word would have to be split."""
+    ext = wrapped_extents(markup, width, size)
+    return None if ext is None else _baselines(ext, 0.0, size)[1]
 
 
 # ---- text blocks: items that flow into slots -------------------------------------------------------
@@ -351,12 +366,12 @@ class TableItem(Item):
     wrap_last: bool = False
     name: str = "results"
 
-    def layout(self, width: float, size: float) -> Placed:
+    def _columns(self, width: float, size: float) -> tuple[list[list[tuple[tuple[Span, ...], Extent]]], list[float]]:
+        """Every cell's spans and extent (the header row first) and the column widths at ``width``."""
         pad = 0.45 * size
-        vpad = 0.25 * size
         ncol = len(self.header)
-        cells = [[rich(c, size) for c in row] for row in (self.header,) + self.rows]
-        nat = [max(measure(r[i]).width for r in cells) + 2 * pad for i in range(ncol)]
+        cells = [[_cell(c, size) for c in row] for row in (self.header,) + self.rows]
+        nat = [max(r[i][1].width for r in cells) + 2 * pad for i in range(ncol)]
         widths = list(nat)
         if sum(widths) > width:
             if self.wrap_last:
@@ -371,6 +386,34 @@ class TableItem(Item):
             spare = min(width - sum(widths), 6 * size * ncol)
             for i in range(1, ncol):
                 widths[i] += spare / max(ncol - 1, 1)
+        return cells, widths
+
+    def height(self, width: float, size: float) -> float:
+        """:meth:`layout`'s height, row by row with the same arithmetic, without making a command."""
+        pad, vpad = 0.45 * size, 0.25 * size
+        cells, widths = self._columns(width, size)
+        y = 0.0
+        for ri, row in enumerate(cells):
+            y_row = y + vpad
+            bottom = y_row
+            for ci, (_, m) in enumerate(row):
+                if m.width > widths[ci] - 2 * pad + 1e-9:
+                    ext = wrapped_extents(((self.header,) + self.rows)[ri][ci], widths[ci] - 2 * pad, size)
+                    if ext is None:                          # a word split letter by letter
+                        return self.layout(width, size).height
+                else:
+                    ext = [(m.top, m.bottom)]
+                if ext:
+                    bottom = max(bottom, _baselines(ext, y_row, size)[1])
+            y = bottom + vpad
+        return y
+
+    def layout(self, width: float, size: float) -> Placed:
+        pad = 0.45 * size
+        vpad = 0.25 * size
+        ncol = len(self.header)
+        columns, widths = self._columns(width, size)
+        cells = [[spans for spans, _ in row] for row in columns]
         cmds: list[Command] = []
         y = 0.0
         xs = [sum(widths[:i]) for i in range(ncol)]
@@ -545,13 +588,22 @@ SCALE_TICK = 1.0
 SCALE_TEXT = MIN_TEXT
 
 
-def scale_bar(x: float, top: float, length: float, value: float, unit: str, *, region: str = "",
-              name: str = "scale bar") -> tuple[list[Command], Rect]:
-    """A scale bar ``length`` mm long standing for ``value`` ``unit``, numbers above, top at ``top``.
+@dataclass(frozen=True)
+class _BarPlan:
+    """Where a scale bar's parts go (see :func:`scale_bar`), found without making a command."""
 
-    Alternate black and white segments (reads in black and white), a tick and number at every
-    division where the numbers fit, the unit after the bar.  Returns the commands and the bounding box.
-    """
+    divisions: int
+    seg: float
+    y_num: float
+    y_tick0: float
+    y_bar: float
+    labels: tuple[str, ...]
+    shown: tuple[int, ...]
+    unit_x: float
+    box: Rect
+
+
+def _bar_plan(x: float, top: float, length: float, value: float, unit: str) -> _BarPlan:
     divisions = _divisions(value)
     seg = length / divisions
     ts = SCALE_TEXT
@@ -559,13 +611,9 @@ def scale_bar(x: float, top: float, length: float, value: float, unit: str, *, r
     y_num = top - num_ext.top
     y_tick0 = y_num + num_ext.bottom + 0.4
     y_bar = y_tick0 + SCALE_TICK
-    cmds: list[Command] = []
-    for i in range(divisions):
-        cmds.append(Rectangle(x + i * seg, y_bar, seg, SCALE_BAR_HEIGHT,
-                              "bar_dark" if i % 2 == 0 else "bar_light", f"{name} segment {i}"))
-    cmds.append(Rectangle(x, y_bar, length, SCALE_BAR_HEIGHT, "tick", f"{name} outline"))
-    labels = [number_text(value * i / divisions) for i in range(divisions + 1)]
-    widths = [measure(plain(t, ts)).width for t in labels]
+    labels = tuple(number_text(value * i / divisions) for i in range(divisions + 1))
+    exts = [measure(plain(t, ts)) for t in labels]
+    widths = [e.width for e in exts]
     every = 1
     while every < divisions and any(
             (widths[i] + widths[min(i + every, divisions)]) / 2 + 1.0 > seg * every
@@ -579,20 +627,41 @@ def scale_bar(x: float, top: float, length: float, value: float, unit: str, *, r
         gap = (widths[shown[-2]] + widths[-1]) / 2 + 1.0
         if (divisions - shown[-2]) * seg < gap:
             shown.pop(-2)
+    unit_x = x + length + 1.2
+    unit_box = measure(plain(unit, ts)).box(unit_x, y_bar + SCALE_BAR_HEIGHT)
+    # the boxes text_at gives the first and the last number
+    first = exts[shown[0]].box(x + shown[0] * seg - widths[shown[0]] / 2, y_num)
+    last = exts[shown[-1]].box(x + shown[-1] * seg - widths[shown[-1]] / 2, y_num)
+    box = Rect.from_edges(min(x, first.left), top, max(unit_box.right, last.right),
+                          max(y_bar + SCALE_BAR_HEIGHT, unit_box.bottom))
+    return _BarPlan(divisions, seg, y_num, y_tick0, y_bar, labels, tuple(shown), unit_x, box)
+
+
+def scale_bar(x: float, top: float, length: float, value: float, unit: str, *, region: str = "",
+              name: str = "scale bar") -> tuple[list[Command], Rect]:
+    """A scale bar ``length`` mm long standing for ``value`` ``unit``, numbers above, top at ``top``.
+
+    Alternate black and white segments (reads in black and white), a tick and number at every
+    division where the numbers fit, the unit after the bar.  Returns the commands and the bounding box.
+    """
+    bp = _bar_plan(x, top, length, value, unit)
+    seg, ts = bp.seg, SCALE_TEXT
+    cmds: list[Command] = []
+    for i in range(bp.divisions):
+        cmds.append(Rectangle(x + i * seg, bp.y_bar, seg, SCALE_BAR_HEIGHT,
+                              "bar_dark" if i % 2 == 0 else "bar_light", f"{name} segment {i}"))
+    cmds.append(Rectangle(x, bp.y_bar, length, SCALE_BAR_HEIGHT, "tick", f"{name} outline"))
     texts: list[Text] = []
-    for i in range(divisions + 1):
+    for i in range(bp.divisions + 1):
         xi = x + i * seg
-        cmds.append(Line(xi, y_tick0, xi, y_bar, "tick", f"{name} tick {i}"))
-        if i in shown:
-            texts.append(text_at(xi, y_num, plain(labels[i], ts), anchor="middle", region=region,
+        cmds.append(Line(xi, bp.y_tick0, xi, bp.y_bar, "tick", f"{name} tick {i}"))
+        if i in bp.shown:
+            texts.append(text_at(xi, bp.y_num, plain(bp.labels[i], ts), anchor="middle", region=region,
                                  name=f"{name} number {i}"))
-    unit_t = text_at(x + length + 1.2, y_bar + SCALE_BAR_HEIGHT, plain(unit, ts), region=region,
-                     name=f"{name} unit")
-    texts.append(unit_t)
+    texts.append(text_at(bp.unit_x, bp.y_bar + SCALE_BAR_HEIGHT, plain(unit, ts), region=region,
+                         name=f"{name} unit"))
     cmds.extend(texts)
-    box = Rect.from_edges(min(x, texts[0].box.left), top, max(unit_t.box.right, texts[-2].box.right),
-                          max(y_bar + SCALE_BAR_HEIGHT, unit_t.box.bottom))
-    return cmds, box
+    return cmds, bp.box
 
 
 def _divisions(value: float) -> int:
@@ -626,10 +695,18 @@ class Header:
     height: float
 
 
-def viewport_header(rect: Rect, heading: str, paper_per_unit: float | None, unit: str, *, region: str,
-                    name: str) -> Header:
-    """Heading at the top left of a viewport and the scale bar at the top right (or under it); a panel
-    without a scale (a chart: ``paper_per_unit`` None) has the heading only."""
+@dataclass(frozen=True)
+class _HeaderPlan:
+    """Where a viewport header's heading and scale bar go (see :func:`viewport_header`)."""
+
+    head: tuple[Span, ...]
+    x: float
+    y: float
+    bar: tuple[float, float, float, float] | None    # x, top, length and value of the scale bar
+    height: float
+
+
+def _header_plan(rect: Rect, heading: str, paper_per_unit: float | None, unit: str, name: str) -> _HeaderPlan:
     hs = HEADING
     head = plain(heading, hs)
     hext = measure(head)
@@ -640,37 +717,45 @@ def viewport_header(rect: Rect, heading: str, paper_per_unit: float | None, unit
         if hext.width > rect.w - 2:
             raise LayoutError(f"the {name} viewport is too narrow for its heading")
     x0 = rect.x + 1.5
-    ht = text_at(x0, rect.y + HEADER_GAP - hext.top, head, style="heading", region=region,
-                 name=f"heading {name}")
+    y0 = rect.y + HEADER_GAP - hext.top
+    hbox = hext.box(x0, y0)
     if paper_per_unit is None:
-        return Header((ht,), ht.box.bottom - rect.y + HEADER_GAP)
+        return _HeaderPlan(head, x0, y0, None, hbox.bottom - rect.y + HEADER_GAP)
     unit_w = measure(plain(unit, SCALE_TEXT)).width + 1.2
     overhang = 4.0
-    side_room = rect.right - 1.5 - unit_w - overhang - (ht.box.right + 6.0)
+    side_room = rect.right - 1.5 - unit_w - overhang - (hbox.right + 6.0)
     bar = choose_bar(paper_per_unit, side_room, min_len=25.0)
-    cmds: list[Command] = [ht]
-    if bar is not None:
+    if bar is not None:                     # beside the heading, centred on it
         v, length = bar
         bx = rect.right - 1.5 - unit_w - length
-        _, probe = scale_bar(bx, 0.0, length, v, unit)
-        top = rect.y + HEADER_GAP + max(0.0, (ht.box.h - probe.h) / 2)
-        bc, box = scale_bar(bx, top, length, v, unit, region=region, name=f"scale bar {name}")
-        cmds.extend(bc)
-        height = max(ht.box.bottom, box.bottom) - rect.y + HEADER_GAP
-    else:
-        bar = choose_bar(paper_per_unit, rect.w - 3.0 - unit_w - overhang, min_len=10.0)
-        if bar is None:
-            raise LayoutError(f"the {name} viewport is too narrow for its scale bar; use A3")
-        v, length = bar
-        top = ht.box.bottom + 1.5
-        bc, box = scale_bar(x0 + 1.5, top, length, v, unit, region=region, name=f"scale bar {name}")
-        cmds.extend(bc)
-        height = box.bottom - rect.y + HEADER_GAP
-    return Header(tuple(cmds), height)
+        probe = _bar_plan(bx, 0.0, length, v, unit).box
+        top = rect.y + HEADER_GAP + max(0.0, (hbox.h - probe.h) / 2)
+        box = _bar_plan(bx, top, length, v, unit).box
+        return _HeaderPlan(head, x0, y0, (bx, top, length, v), max(hbox.bottom, box.bottom) - rect.y + HEADER_GAP)
+    bar = choose_bar(paper_per_unit, rect.w - 3.0 - unit_w - overhang, min_len=10.0)
+    if bar is None:
+        raise LayoutError(f"the {name} viewport is too narrow for its scale bar; use A3")
+    v, length = bar                         # under the heading
+    top = hbox.bottom + 1.5
+    box = _bar_plan(x0 + 1.5, top, length, v, unit).box
+    return _HeaderPlan(head, x0, y0, (x0 + 1.5, top, length, v), box.bottom - rect.y + HEADER_GAP)
+
+
+def viewport_header(rect: Rect, heading: str, paper_per_unit: float | None, unit: str, *, region: str,
+                    name: str) -> Header:
+    """Heading at the top left of a viewport and the scale bar at the top right (or under it); a panel
+    without a scale (a chart: ``paper_per_unit`` None) has the heading only."""
+    hp = _header_plan(rect, heading, paper_per_unit, unit, name)
+    cmds: list[Command] = [text_at(hp.x, hp.y, hp.head, style="heading", region=region, name=f"heading {name}")]
+    if hp.bar is not None:
+        bx, top, length, v = hp.bar
+        cmds.extend(scale_bar(bx, top, length, v, unit, region=region, name=f"scale bar {name}")[0])
+    return Header(tuple(cmds), hp.height)
 
 
 def header_height(width: float, heading: str, paper_per_unit: float | None, unit: str) -> float:
-    return viewport_header(Rect(0, 0, width, 100), heading, paper_per_unit, unit, region="", name="probe").height
+    """The height :func:`viewport_header` gives a viewport ``width`` wide, without making its commands."""
+    return _header_plan(Rect(0, 0, width, 100), heading, paper_per_unit, unit, "probe").height
 
 
 # ---- title block --------------------------------------------------------------------------------

@@ -14,7 +14,9 @@ shapes and text only, no scripts, no links or external references, no DOCTYPE or
 
 from __future__ import annotations
 
+import functools
 from typing import Callable
+from xml.etree import ElementTree
 
 import svgwrite
 
@@ -26,14 +28,13 @@ from .textsafe import xml_safe
 
 
 def fmt(v: float) -> str:
-    """A coordinate in mm with at most 3 decimals and no '-0'."""
-    r = round(float(v), 3)
-    if r == 0:
-        r = 0.0
-    s = f"{r:.3f}".rstrip("0").rstrip(".")
+    """A coordinate in mm with at most 3 decimals and no '-0' (``.3f`` rounds as ``round(v, 3)`` does:
+    both are correctly rounded)."""
+    s = f"{float(v):.3f}".rstrip("0").rstrip(".")
     return "0" if s in ("", "-0") else s
 
 
+@functools.lru_cache(maxsize=None)
 def _paint(name: str) -> dict[str, str]:
     st = style(name)
     a: dict[str, str] = {"fill": st.fill or "none"}
@@ -116,4 +117,5 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
         if attrs is not None:
             el.attribs.update(attrs(c))
         dwg.add(el)
-    return xml_safe(dwg.tostring())        # and once more over the whole: nothing unsafe gets through
+    # svgwrite's tostring() encodes to UTF-8 and decodes again; the same text straight as a str
+    return xml_safe(ElementTree.tostring(dwg.get_xml(), encoding="unicode"))   # and once more over the whole

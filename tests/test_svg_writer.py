@@ -40,3 +40,29 @@ def test_an_empty_text_is_an_empty_element():
     svg = sheet_to_svg(_sheet([Text(1, 2, (), "text", Rect(1, 0, 1, 2), "r", "t")]))
     assert '<text fill="black" font-family="DejaVu Sans" font-size="3.5" x="1" xml:space="preserve" y="2" />' in svg
     ET.fromstring(svg)
+
+
+def _fmt_by_round(v: float) -> str:
+    """The coordinate format as first written: round to 3 decimals, then print."""
+    r = round(float(v), 3)
+    if r == 0:
+        r = 0.0
+    s = f"{r:.3f}".rstrip("0").rstrip(".")
+    return "0" if s in ("", "-0") else s
+
+
+def test_a_coordinate_prints_as_its_rounding_prints():
+    """``.3f`` rounds correctly, as ``round(v, 3)`` does, ties to even included: the shorter format
+    writes every coordinate as the first one did."""
+    from hypothesis import given, settings, strategies as st
+    from drafting.svg import fmt
+
+    @settings(max_examples=2000, deadline=None)
+    @given(st.floats(-1e7, 1e7, allow_nan=False) | st.integers(-10**7, 10**7).map(lambda i: i / 2000)
+           | st.integers(-10**6, 10**6).map(lambda i: i / 16))
+    def check(v):
+        assert fmt(v) == _fmt_by_round(v)
+    check()
+    ties = (-0.0004, 0.0005, 0.0015, 0.0625, -0.0625, 2.5e-7, -12.3456, 1e20)
+    assert [fmt(v) for v in ties] == [_fmt_by_round(v) for v in ties]
+    assert [fmt(v) for v in (-0.0004, 0.0625, -12.3456)] == ["0", "0.062", "-12.346"]

@@ -37,3 +37,27 @@ def test_a_paragraph_s_height_without_commands_is_its_laid_out_height(ws, width,
             p.height(width, size)
         return
     assert p.height(width, size) == placed.height                 # bit for bit
+
+
+cell = st.lists(st.sampled_from(["V_CB", "197.4", "mm/s", "0.0%", "ω_2", "perpendicular to O_1B", "", "—",
+                                 "the Coriolis component 2ω_3V_{A3A}", "1.2e-09"]), min_size=1, max_size=3).map(" ".join)
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.integers(2, 5).flatmap(lambda n: st.tuples(st.lists(cell, min_size=n, max_size=n),
+                                                      st.lists(st.lists(cell, min_size=n, max_size=n), max_size=8),
+                                                      st.booleans())),
+       st.floats(20.0, 200.0), st.sampled_from([2.5, 3.0, 3.25, 3.5]))
+def test_a_table_s_height_without_commands_is_its_laid_out_height(table, width, size):
+    """The results table's height row by row from the word table is its laid-out height exactly, wrapped
+    last column included."""
+    from drafting.layout import TableItem, TooWide
+    header, rows, wrap_last = table
+    t = TableItem(tuple(header), tuple(tuple(r) for r in rows), ("l",) + ("r",) * (len(header) - 1), wrap_last)
+    try:
+        placed = t.layout(width, size)
+    except TooWide:
+        with pytest.raises(TooWide):
+            t.height(width, size)
+        return
+    assert t.height(width, size) == placed.height                 # bit for bit
