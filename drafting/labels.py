@@ -200,55 +200,53 @@ def _best_candidate(cands: np.ndarray, hw: float, hh: float, plot: Rect, near_pl
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
     or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
     part of a thick line.  A score is the candidate's cost plus what it hides of the lines (never
-    negative), so the candidates are clipped against the lines cheapest first, a few at a time, until
-    no candidate left can score lower than the best found.  The arithmetic of a score is the scalar
-    test's, operation for operation, so the choice is the same to the last bit (a test holds it to
-    the exhaustive search)."""
+    negative), so the candidates are tried cheapest first and the search stops at the first whose cost
+    exceeds the best score found: most labels are placed by their first few candidates.  The arithmetic
+    of a score is the exhaustive test's, operation for operation, so the choice is the same to the last
+    bit (a property test holds it to the exhaustive search, ties included)."""
     if not len(cands):
         return None
-    c = cands
-    cx, cy, cost = c[:, 0], c[:, 1], c[:, 2]
+    cx, cy, cost = cands[:, 0], cands[:, 1], cands[:, 2]
     left, top = cx - hw, cy - hh
     right, bottom = left + 2 * hw, top + 2 * hh
-    tol = 1e-6
-    ok = ((left >= plot.left - tol) & (right <= plot.right + tol)
-          & (top >= plot.top - tol) & (bottom <= plot.bottom + tol))
-    for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)):
-        if rects:
-            o = np.array([(r.left, r.top, r.right, r.bottom) for r in rects])
-            hit = ((left[:, None] < o[:, 2] + gap) & (o[:, 0] < right[:, None] + gap)
-                   & (top[:, None] < o[:, 3] + gap) & (o[:, 1] < bottom[:, None] + gap))
-            ok &= ~hit.any(axis=1)
-    k = np.flatnonzero(ok)
-    if not len(k):
-        return None
-    k = k[np.argsort(cost[k], kind="stable")]         # cheapest first, ties in their order
-    # a candidate whose box meets no line's box hides nothing: its score is its cost, and the first of
-    # them bounds the best; only the candidates cheaper than that (or as cheap) are clipped
     bx = near_segs.boxes
-    touch = ((bx[:, 0] <= right[k, None]) & (bx[:, 2] >= left[k, None])
-             & (bx[:, 1] <= bottom[k, None]) & (bx[:, 3] >= top[k, None])).any(axis=1)
-    free = np.flatnonzero(~touch)
-    best_total, best_i = (float(cost[k[free[0]]]), int(k[free[0]])) if len(free) else (math.inf, -1)
-    clip = k[touch & (cost[k] <= best_total)]
-    for start in range(0, len(clip), _CHUNK):
-        if cost[clip[start]] > best_total:        # nothing left can score lower (or tie)
+    # which line boxes each candidate box meets (the others add exactly 0.0 to its sums)
+    touch = ((bx[:, 0] <= right[:, None]) & (bx[:, 2] >= left[:, None])
+             & (bx[:, 1] <= bottom[:, None]) & (bx[:, 3] >= top[:, None]))
+    order = np.argsort(cost, kind="stable").tolist()          # cheapest first, ties in their order
+    L, T, R, B, C = left.tolist(), top.tolist(), right.tolist(), bottom.tolist(), cost.tolist()
+    tol = 1e-6
+    pl, pt, pr, pb = plot.left - tol, plot.top - tol, plot.right + tol, plot.bottom + tol
+    obstacles = [(o.left, o.top, o.right + gap, o.bottom + gap, gap)
+                 for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)) for o in rects]
+    ends, heavy, length = near_segs.ends.tolist(), near_segs.heavy.tolist(), near_segs.length.tolist()
+    best_total, best_i = math.inf, -1
+    for i in order:
+        if C[i] > best_total:                   # nothing left can score lower (or tie)
             break
-        idx = clip[start:start + _CHUNK]
-        thin, thick = near_segs.covered(left[idx], top[idx], right[idx], bottom[idx])
-        total = cost[idx] + 3.0 * thin + 20.0 * thick
-        if not mandatory:
-            total[thick > 0] = math.inf           # an optional label never hides part of a thick line
-        for i, t in zip(idx.tolist(), total.tolist()):
-            if t < best_total or (t == best_total and t < math.inf and i < best_i):
-                best_total, best_i = t, i
+        le, to, ri, bo = L[i], T[i], R[i], B[i]
+        if not (le >= pl and ri <= pr and to >= pt and bo <= pb):
+            continue
+        if any(le < o_r and o_l < ri + gap and to < o_b and o_t < bo + gap
+               for o_l, o_t, o_r, o_b, gap in obstacles):
+            continue
+        thin = thick = 0.0
+        for j in np.flatnonzero(touch[i]).tolist():
+            a0, a1, b0, b1 = ends[j]
+            got = _clip(a0, a1, b0 - a0, b1 - a1, le, to, ri, bo) * length[j]
+            if heavy[j]:
+                thick += got
+            else:
+                thin += got
+        if not mandatory and thick > 0:         # an optional label never hides part of a thick line
+            continue
+        total = C[i] + 3.0 * thin + 20.0 * thick
+        if total < best_total or (total == best_total and i < best_i):
+            best_total, best_i = total, i
     if best_i < 0:
         return None
     centre = (float(cx[best_i]), float(cy[best_i]))
     return best_total, centre, Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
-
-
-_CHUNK = 8      # candidates clipped at a time (most labels find their place among the first few)
 
 
 class _Segments:
@@ -277,29 +275,6 @@ class _Segments:
         sub = object.__new__(_Segments)
         sub.ends, sub.boxes, sub.heavy, sub.length = self.ends[keep], b[keep], self.heavy[keep], self.length[keep]
         return sub
-
-    def covered(self, left, top, right, bottom) -> tuple[np.ndarray, np.ndarray]:
-        """(thin, thick): the length of thin and of thick line inside each box (boxes by their edge
-        arrays; Liang-Barsky clipping), summed segment after segment in order.  Only the pairs whose
-        boxes meet are clipped (the others add exactly 0.0), one by one: a label's boxes meet a few
-        lines, and a few scalar clips cost less than array arithmetic over all of them."""
-        n = len(left)
-        thin, thick = [0.0] * n, [0.0] * n
-        bx = self.boxes
-        if n and len(bx):
-            touch = ((bx[:, 0] <= right[:, None]) & (bx[:, 2] >= left[:, None])
-                     & (bx[:, 1] <= bottom[:, None]) & (bx[:, 3] >= top[:, None]))
-            rows, cols = np.nonzero(touch)              # row by row, each row's segments in order
-            ends, heavy, length = self.ends.tolist(), self.heavy.tolist(), self.length.tolist()
-            lt, tp, rt, bt = left.tolist(), top.tolist(), right.tolist(), bottom.tolist()
-            for i, j in zip(rows.tolist(), cols.tolist()):
-                a0, a1, b0, b1 = ends[j]
-                got = _clip(a0, a1, b0 - a0, b1 - a1, lt[i], tp[i], rt[i], bt[i]) * length[j]
-                if heavy[j]:
-                    thick[i] += got
-                else:
-                    thin[i] += got
-        return np.array(thin), np.array(thick)
 
 
 def _clip(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
