@@ -19,6 +19,7 @@ from typing import Callable
 from xml.etree import ElementTree
 
 import svgwrite
+from svgwrite import shapes, text as svg_text
 
 from .font_embed import css_for
 from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Text
@@ -50,38 +51,39 @@ def _paint(name: str) -> dict[str, str]:
     return a
 
 
+def _line(dwg, c: Line):
+    return shapes.Line((fmt(c.x1), fmt(c.y1)), (fmt(c.x2), fmt(c.y2)), factory=dwg)
+
+
+def _polyline(dwg, c: Polyline):
+    return shapes.Polyline([(fmt(x), fmt(y)) for x, y in c.points], factory=dwg)
+
+
+def _polygon(dwg, c: Polygon):
+    return shapes.Polygon([(fmt(x), fmt(y)) for x, y in c.points], factory=dwg)
+
+
+def _rect(dwg, c: Rectangle):
+    return shapes.Rect((fmt(c.x), fmt(c.y)), (fmt(c.w), fmt(c.h)), factory=dwg)
+
+
+def _circle(dwg, c: Circle):
+    return shapes.Circle((fmt(c.cx), fmt(c.cy)), fmt(c.r), factory=dwg)
+
+
 def _element(dwg: svgwrite.Drawing, c: Command):
-    if isinstance(c, Line):
-        el = dwg.line(start=(0, 0), end=(0, 0))
-        el.attribs.update({"x1": fmt(c.x1), "y1": fmt(c.y1), "x2": fmt(c.x2), "y2": fmt(c.y2)})
+    make = _MAKERS.get(type(c))
+    if make is None:
+        raise TypeError(f"not a drawing command: {c!r}")
+    el = make(dwg, c)
+    if make is not _text:
         el.attribs.update(_paint(c.style))
-        return el
-    if isinstance(c, Polyline):
-        el = dwg.polyline([(fmt(x), fmt(y)) for x, y in c.points])
-        el.attribs.update(_paint(c.style))
-        return el
-    if isinstance(c, Polygon):
-        el = dwg.polygon([(fmt(x), fmt(y)) for x, y in c.points])
-        el.attribs.update(_paint(c.style))
-        return el
-    if isinstance(c, Rectangle):
-        el = dwg.rect()
-        el.attribs.update({"x": fmt(c.x), "y": fmt(c.y), "width": fmt(c.w), "height": fmt(c.h)})
-        el.attribs.update(_paint(c.style))
-        return el
-    if isinstance(c, Circle):
-        el = dwg.circle()
-        el.attribs.update({"cx": fmt(c.cx), "cy": fmt(c.cy), "r": fmt(c.r)})
-        el.attribs.update(_paint(c.style))
-        return el
-    if isinstance(c, Text):
-        return _text(dwg, c)
-    raise TypeError(f"not a drawing command: {c!r}")
+    return el
 
 
 def _text(dwg: svgwrite.Drawing, c: Text):
     base = c.spans[0].size if c.spans else 3.5
-    el = dwg.text("")
+    el = svg_text.Text("", factory=dwg)
     el.attribs.update({"x": fmt(c.x), "y": fmt(c.y), "font-family": FONT_FAMILY, "font-size": fmt(base),
                        "fill": "black", "xml:space": "preserve"})
     shift = 0.0
@@ -89,7 +91,7 @@ def _text(dwg: svgwrite.Drawing, c: Text):
         if i == 0 and s.shift == 0 and not s.italic:
             el.text = xml_safe(s.text)
             continue
-        ts = dwg.tspan(xml_safe(s.text))
+        ts = svg_text.TSpan(xml_safe(s.text), factory=dwg)
         dy = s.shift - shift
         if abs(dy) > 5e-4:
             ts.attribs["dy"] = fmt(dy)
@@ -100,6 +102,9 @@ def _text(dwg: svgwrite.Drawing, c: Text):
             ts.attribs["font-style"] = "italic"
         el.add(ts)
     return el
+
+
+_MAKERS = {Line: _line, Polyline: _polyline, Polygon: _polygon, Rectangle: _rect, Circle: _circle, Text: _text}
 
 
 def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None = None) -> str:
