@@ -106,7 +106,9 @@ def fill(rows: Sequence[Sequence[Panel]], w: float, h: float, *, climb: bool = T
     return _fill(rows, w, h, climb)
 
 
-def _fill(rows, w: float, h: float, climb: bool) -> Fill | None:
+def _smallest(rows, w: float, h: float) -> tuple[list, dict[str, int], dict[str, float]] | None:
+    """The rows' panel widths, and every panel at its smallest legible rung with the height it needs;
+    None when that does not fit ``w`` x ``h`` (then no rung does)."""
     widths = []
     for row in rows:
         ws = _row_widths(row, w)
@@ -122,11 +124,19 @@ def _fill(rows, w: float, h: float, climb: bool) -> Fill | None:
             if got is None:
                 return None
             rungs[p.key], needs[p.key] = r, got[1]
+    if sum(max(needs[p.key] for p in row) for row in rows) > h + 1e-9:
+        return None
+    return widths, rungs, needs
+
+
+def _fill(rows, w: float, h: float, climb: bool) -> Fill | None:
+    got = _smallest(rows, w, h)
+    if got is None:
+        return None
+    widths, rungs, needs = got
 
     def heights() -> list[float]:
         return [max(needs[p.key] for p in row) for row in rows]
-    if sum(heights()) > h + 1e-9:
-        return None
     order = sorted(((p, pw) for row, ws in zip(rows, widths) for p, pw in zip(row, ws)
                     if climb or not (isinstance(p, VectorPanel) and p.free)), key=lambda t: t[0].priority)
     if order:
@@ -617,8 +627,11 @@ def _document(paper, groups, mode, sections, tb_height, cache) -> Document | Non
 
 def _check_blocks(paper, panels, sections, tb_height, cache) -> None:
     """LayoutError when a single block cannot fit an empty page."""
+    F = paper.frame
     for p in panels:
-        if diagram_page(paper, [p], tb_height) is None:
+        # as diagram_page([p]) is None, without climbing the scales: one panel has one arrangement,
+        # and a page of it fails only when its smallest legible rung does
+        if _smallest(((p,),), F.w, F.h - tb_height(paper.title_block_max_width, [p])) is None:
             r = p.min_rung()
             got = p.need(r, 10_000.0)
             size = f" ({got[0]:.0f} x {got[1]:.0f} mm)" if got else ""
