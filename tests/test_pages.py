@@ -269,3 +269,37 @@ def test_long_text_spills_onto_a_text_sheet():
     assert not any(k.startswith("viewport:") for k in last.regions)
     assert any(t.name.startswith("results") for s in sheets for t in s.texts())
     assert all(s.text_size >= MIN_TEXT for s in sheets)
+
+
+class _Block:
+    """A panel stand-in: legible from rung ``first`` on, ``mm`` tall at every rung; counts the rungs asked."""
+
+    kind, priority, blank, index = "space", 0, False, 0
+
+    def __init__(self, key: str, mm: float, first: int = 0) -> None:
+        self.key, self.title, self.mm, self.first, self.asked = key, f"Block {key}", mm, first, []
+
+    def rungs(self) -> int:
+        return 6
+
+    def min_rung(self) -> int:
+        return self.first
+
+    def min_width(self) -> float:
+        return 50.0
+
+    def need(self, rung: int, width: float):
+        self.asked.append(rung)
+        return (50.0, self.mm + rung) if width >= 50.0 else None
+
+
+def test_a_block_too_tall_for_an_empty_page_is_named_and_its_scales_are_not_climbed():
+    """The check that every block fits an empty page reads the smallest legible rung only."""
+    from drafting.pages import _check_blocks
+    from drafting.paper import paper
+    pp = paper("A4", "landscape")
+    fits, tall = _Block("fits", 60.0, first=2), _Block("tall", 500.0, first=1)
+    with pytest.raises(LayoutError, match="block tall does not fit an empty A4 landscape sheet.*use A3"):
+        _check_blocks(pp, [fits, tall], [], lambda w, panels: 20.0, {})
+    assert set(fits.asked) == {2} and set(tall.asked) == {1}
+    _check_blocks(pp, [fits], [], lambda w, panels: 20.0, {})           # fits: no error
