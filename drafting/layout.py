@@ -778,9 +778,19 @@ def _cell_value_lines(value: str, width: float) -> tuple[list[tuple[Span, ...]],
     return wrap_words(value, width, 2.5), 2.5
 
 
-def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence[tuple[str, str]]], *,
-                region: str = "title_block") -> TitleBlock:
-    """The title block at the bottom right of ``frame``: the title over rows of captioned fields."""
+@dataclass(frozen=True)
+class _BlockPlan:
+    """What :func:`title_block` sets where, found without making a command: the title's size and
+    lines, and per row of fields its cells (caption x, caption baseline, value lines and size, value
+    top) and column rules; the height of every row."""
+
+    size: float
+    title_lines: tuple
+    rows: tuple
+    heights: tuple[float, ...]
+
+
+def _block_plan(width: float, title: str, fields: Sequence[Sequence[tuple[str, str]]]) -> _BlockPlan:
     # the title row: 7 mm, shrunk to 3.5, then wrapped
     inner = width - 2 * TB_PAD
     size = TITLE
@@ -791,13 +801,11 @@ def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence
         title_lines = [plain(title, size)]
     else:
         title_lines = wrap_words(title, inner, size)
-    rows_cmds: list[list[Command]] = []
-    heights: list[float] = []
-    t_texts, t_bottom = stack_lines(title_lines, TB_PAD, TB_PAD + 0.6, size, style="title", name="title")
-    rows_cmds.append(list(t_texts))
-    heights.append(max(12.0, t_bottom + TB_PAD + 0.6))
+    t_bottom = _baselines([(m.top, m.bottom) for m in map(measure, title_lines)], TB_PAD + 0.6, size)[1]
+    heights: list[float] = [max(12.0, t_bottom + TB_PAD + 0.6)]
     cap_ext = measure(plain("Xg", TB_CAPTION))
-    for fi, row in enumerate(fields):
+    rows = []
+    for row in fields:
         n = len(row)
         caps = [measure(plain(c, TB_CAPTION)).width for c, _ in row]
         vals = [measure(rich(v, 3.5)).width for _, v in row]
@@ -816,28 +824,48 @@ def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence
             tot = sum(extra) or 1.0
             widths = [m + rest * e / tot for m, e in zip(mins, extra)]
         x = 0.0
-        cmds: list[Command] = []
         row_h = 0.0
-        col_x: list[float] = []
+        cells, col_x = [], []
         for (cap, val), w in zip(row, widths):
-            ct = text_at(x + TB_PAD, 0.5 - cap_ext.top, plain(cap, TB_CAPTION), name=f"title block caption {cap}")
+            cap_spans = plain(cap, TB_CAPTION)
+            cap_y = 0.5 - cap_ext.top
             lines, vs = _cell_value_lines(val, w - 2 * TB_PAD)
-            vt, vb = stack_lines(lines, x + TB_PAD, ct.box.bottom + 0.6, vs, name=f"title block {cap}")
-            cmds.append(ct)
-            cmds.extend(vt)
+            v_top = measure(cap_spans).box(x + TB_PAD, cap_y).bottom + 0.6    # under the caption (text_at's box)
+            vb = _baselines([(m.top, m.bottom) for m in map(measure, lines)], v_top, vs)[1]
+            cells.append((cap, x, cap_spans, cap_y, lines, vs, v_top))
             row_h = max(row_h, vb + 0.7)
             if x > 0:
                 col_x.append(x)
             x += w
         row_h = max(row_h, 9.0)
+        rows.append((tuple(cells), tuple(col_x)))
+        heights.append(row_h)
+    return _BlockPlan(size, tuple(title_lines), tuple(rows), tuple(heights))
+
+
+def title_block_height(width: float, title: str, fields: Sequence[Sequence[tuple[str, str]]]) -> float:
+    """The height of :func:`title_block` ``width`` wide, without making its commands."""
+    return sum(_block_plan(width, title, fields).heights)
+
+
+def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence[tuple[str, str]]], *,
+                region: str = "title_block") -> TitleBlock:
+    """The title block at the bottom right of ``frame``: the title over rows of captioned fields."""
+    bp = _block_plan(width, title, fields)
+    rows_cmds: list[list[Command]] = [list(stack_lines(bp.title_lines, TB_PAD, TB_PAD + 0.6, bp.size,
+                                                       style="title", name="title")[0])]
+    for (cells, col_x), row_h in zip(bp.rows, bp.heights[1:]):
+        cmds: list[Command] = []
+        for cap, x, cap_spans, cap_y, lines, vs, v_top in cells:
+            cmds.append(text_at(x + TB_PAD, cap_y, cap_spans, name=f"title block caption {cap}"))
+            cmds.extend(stack_lines(lines, x + TB_PAD, v_top, vs, name=f"title block {cap}")[0])
         cmds.extend(Line(cx, 0.0, cx, row_h, "rule", "title block column") for cx in col_x)
         rows_cmds.append(cmds)
-        heights.append(row_h)
-    total_h = sum(heights)
+    total_h = sum(bp.heights)
     rect = Rect(frame.right - width, frame.bottom - total_h, width, total_h)
     out: list[Command] = [Rectangle(rect.x, rect.y, rect.w, rect.h, "title_block", "title block")]
     y = rect.y
-    for i, (cmds, h) in enumerate(zip(rows_cmds, heights)):
+    for i, (cmds, h) in enumerate(zip(rows_cmds, bp.heights)):
         if i:
             out.append(Line(rect.x, y, rect.right, y, "rule", "title block row"))
         out.extend(with_region([translated(c, rect.x, y) for c in cmds], region))

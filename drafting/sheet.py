@@ -311,7 +311,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
         probe_text = "; ".join(t for t in (_probe_scale(p) for p in on_page) if t) or "\u2014 (no drawing on this sheet)"
         key = (round(width, 6), probe_text)
         if key not in tb_memo:
-            tb_memo[key] = L.title_block(frame, width, info.title, tb_fields(probe_text, 10, 10)).rect.h
+            tb_memo[key] = L.title_block_height(width, info.title, tb_fields(probe_text, 10, 10))
         return tb_memo[key]
 
     text_cache: dict = {}
