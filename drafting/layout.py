@@ -603,16 +603,22 @@ class _BarPlan:
     box: Rect
 
 
-def _bar_plan(x: float, top: float, length: float, value: float, unit: str) -> _BarPlan:
+@functools.lru_cache(maxsize=1024)
+def _bar_numbers(value: float) -> tuple[int, tuple[str, ...], tuple[Extent, ...]]:
+    """A bar standing for ``value``: its divisions, and the number at every division with its extent."""
     divisions = _divisions(value)
+    labels = tuple(number_text(value * i / divisions) for i in range(divisions + 1))
+    return divisions, labels, tuple(measure(plain(t, SCALE_TEXT)) for t in labels)
+
+
+def _bar_plan(x: float, top: float, length: float, value: float, unit: str) -> _BarPlan:
+    divisions, labels, exts = _bar_numbers(value)
     seg = length / divisions
     ts = SCALE_TEXT
     num_ext = measure(plain("0", ts))
     y_num = top - num_ext.top
     y_tick0 = y_num + num_ext.bottom + 0.4
     y_bar = y_tick0 + SCALE_TICK
-    labels = tuple(number_text(value * i / divisions) for i in range(divisions + 1))
-    exts = [measure(plain(t, ts)) for t in labels]
     widths = [e.width for e in exts]
     every = 1
     while every < divisions and any(
