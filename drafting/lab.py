@@ -327,5 +327,6 @@ def write_lab(lab: Lab, out_dir: Path | str, stem: str, formats: Sequence[str] =
 
 
 def dimensioned(scene):
-    """The scene with its space diagram dimensioned (problem sheets are, by default)."""
-    return replace(scene, dimensions=True) if scene.kind == "linkage" else scene
+    """The scene with its space diagram dimensioned: problem sheets are, unless the scene says
+    ``[drawing] dimensions = false``."""
+    return replace(scene, dimensions=True) if scene.kind == "linkage" and scene.dimensions is None else scene

@@ -71,7 +71,8 @@ class Scene:
     torque: float | None = None   # torque on the crank, N m CCW positive: alpha follows from it (not given)
     model: Any = None
     effects: Effects = NO_EFFECTS
-    dimensions: bool = False   # [drawing] dimensions: the space diagram dimensioned as a drafter would
+    dimensions: bool | None = None   # [drawing] dimensions: the space diagram dimensioned as a drafter would
+                                     # (None: not said; a problem sheet dimensions it then)
 
     def _repr_html_(self) -> str:
         """Jupyter: what the scene is (a Study shows what it gives)."""
@@ -276,8 +277,8 @@ class _Reader:
         orientation = drawing.get("orientation", "landscape")
         if orientation not in ORIENTATIONS:
             raise self.fail("drawing.orientation", f"{orientation!r} must be landscape or portrait")
-        dimensions = drawing.get("dimensions", False)
-        if not isinstance(dimensions, bool):
+        dimensions = drawing.get("dimensions")
+        if dimensions is not None and not isinstance(dimensions, bool):
             raise self.fail("drawing.dimensions", "must be true or false (dimension the space diagram)")
         units = self.units()
         if "vary" in self.data:

@@ -117,3 +117,21 @@ def test_render_lab_writes_the_three_documents_and_the_key_csv(tmp_path, capsys)
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
         [f"{stem}-problem.svg", f"{stem}.svg", f"{stem}-key.svg", f"{stem}-key.csv"])
     assert "wrote" in capsys.readouterr().out
+
+
+def test_a_scene_that_says_dimensions_false_keeps_its_problem_sheet_undimensioned(tmp_path):
+    """Problem sheets are dimensioned by default; ``[drawing] dimensions = false`` is honoured."""
+    src = (ROOT / "gallery" / "notes-velocity-example-1.toml").read_text()
+    assert "dimensions" not in src
+    said = tmp_path / "said.toml"
+    said.write_text(src.replace("[drawing]\n", "[drawing]\ndimensions = false\n", 1))
+    unsaid = load_scene(ROOT / "gallery" / "notes-velocity-example-1.toml")
+    assert unsaid.dimensions is None and dimensioned(unsaid).dimensions is True
+    scene = load_scene(said)
+    assert scene.dimensions is False and dimensioned(scene).dimensions is False
+    texts = [t for s in lab_for(Study(dimensioned(scene)).run()).problem for t in svg_texts(s.svg())]
+    assert "94.00 mm" not in texts and "50.00 mm" not in texts
+    with pytest.raises(Exception, match="drawing.dimensions"):
+        bad = tmp_path / "bad.toml"
+        bad.write_text(src.replace("[drawing]\n", '[drawing]\ndimensions = "yes"\n', 1))
+        load_scene(bad)
