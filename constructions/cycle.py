@@ -67,6 +67,24 @@ def _runs(x: np.ndarray, y: np.ndarray) -> list[tuple[Vec, ...]]:
     return out
 
 
+def one_turn(th: tuple[float, ...]) -> tuple[list[int], tuple[float, ...]]:
+    """The sweep's samples in the order a chart draws them over one turn, 0 to 360 deg: the indices and
+    the crank angles reduced to [0, 2 pi).  The sweep starts at the drawn pose and its last sample closes
+    the turn (the first pose again); a sample at 0 is drawn again at 2 pi, so the curve spans the turn."""
+    turn = 2 * math.pi
+    n = len(th)
+    if n > 1 and abs(th[-1] - th[0] - turn) < 1e-9:
+        n -= 1                                          # the closing sample is the first pose again
+    phi = [t % turn for t in th[:n]]
+    phi = [0.0 if p < 1e-9 or p > turn - 1e-9 else p for p in phi]
+    order = sorted(range(n), key=phi.__getitem__)
+    xs = [phi[i] for i in order]
+    if order and xs[0] < 1e-9:
+        order.append(order[0])
+        xs.append(turn)
+    return order, tuple(xs)
+
+
 def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Construction:
     """The charts and coupler curves of the sweep ``s``; ``degrees(rad)`` writes an angle for a caption."""
     th = tuple(float(t) for t in s.thetas)
@@ -80,8 +98,11 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
                     f"point) and it keeps to that branch, the way on whose velocities run on smoothly"
                     if s.change_points else "") + ".", kind=StepKind.GIVEN)
 
+    order, xs = one_turn(th)
+
     def series(label: str, y, kind: str) -> Series:
-        return Series(label, th, tuple(float(v) for v in y), kind)
+        ys = tuple(float(y[i]) for i in order)
+        return Series(label, xs, ys, kind)
 
     # the output's motion
     blocks = m.blocks()

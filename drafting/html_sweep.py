@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from constructions.cycle import one_turn
 from constructions.geometry import Vec
 from constructions.linkage import Mechanism
 from constructions.sweep import crank_points
@@ -503,6 +504,10 @@ class _Card:
         cursors: list[dict] = []
         heads = [f"\u03b8<sub>{self.m.crank}</sub>"]
         cols = [[u.format("angle", float(th[i]) % (2 * math.pi)) for i in range(count)]]
+        # a chart runs over one turn from 0 (constructions.cycle.one_turn): where each slider angle is in it
+        where: dict[int, int] = {}
+        for j, i in enumerate(one_turn(tuple(float(t) for t in th))[0]):
+            where.setdefault(i, j)
         for ci, chart in enumerate(charts):
             r = Rect(MECH_W + (ci % 2) * cw, (ci // 2) * ch, cw, ch)
             if ci % 2:
@@ -517,7 +522,7 @@ class _Card:
             for ser in chart.series:
                 col = []
                 for i in range(count):
-                    v = float(ser.y[i]) if i < len(ser.y) else math.nan
+                    v = float(ser.y[where[i]]) if where.get(i, len(ser.y)) < len(ser.y) else math.nan
                     text = u.format(ser.y_kind, v) if math.isfinite(v) else "\u2014"
                     for lo, hi, band in chart.bands:
                         if math.isfinite(v) and not min(lo, hi) <= v <= max(lo, hi):
@@ -525,14 +530,14 @@ class _Card:
                     col.append(text)
                 heads.append(markup_html(ser.label))
                 cols.append(col)
-            xs = [round(at.x(axes.convert(chart.x_kind, float(th[i]))), 3) for i in range(count)]
+            xs = [round(at.x(axes.convert(chart.x_kind, chart.series[0].x[where[i]])), 3) for i in range(count)]
             cid = f"sw-cursor-{ci}"
             self.tag(Line(xs[0], at.top, xs[0], at.bottom, "series 4", f"sweep cursor {ci}"), cid, "sw-cursor")
             dots = []
             for si, ser in enumerate(chart.series):
                 did = f"sw-dot-{ci}-{si}"
-                ys = [round(at.y(axes.convert(ser.y_kind, float(ser.y[i]))), 3)
-                      if i < len(ser.y) and math.isfinite(ser.y[i]) else None for i in range(count)]
+                ys = [round(at.y(axes.convert(ser.y_kind, float(ser.y[where[i]]))), 3)
+                      if math.isfinite(ser.y[where[i]]) else None for i in range(count)]
                 self.tag(Circle(xs[0], ys[0] if ys[0] is not None else at.bottom, CURSOR_DOT, "dot",
                                 f"sweep dot {ci} {si}"), did, "sw-dot")
                 dots.append({"id": did, "y": ys})

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from constructions.classify import classify_four_bar
-from constructions.cycle import BAND, transmission_angles
+from constructions.cycle import BAND, one_turn, transmission_angles
 from constructions.record import Chart, Curve, Diagram
 from constructions.sweep import sweep
 from drafting.chart import DEGREE_STEPS, ticks
@@ -43,10 +43,13 @@ def test_the_cycle_sheet_has_its_charts_and_the_coupler_curve():
     assert charts["Transmission angle"].bands == (BAND,)
     assert {x.label for x in charts["Angular velocities"].series} == {"\u03c9_3", "\u03c9_4"}
     w3 = charts["Angular velocities"].series[0]
-    assert len(w3.x) == 361 and w3.x[0] == pytest.approx(s.scene.angle) and w3.x[-1] == pytest.approx(
-        s.scene.angle + 2 * math.pi)
+    # over one turn from 0 to 360 deg (the sweep starts at the drawn pose, 60 deg)
+    assert len(w3.x) == 361 and w3.x[0] == 0.0 and w3.x[-1] == 2 * math.pi and s.scene.angle != 0
+    assert all(b > a for a, b in zip(w3.x, w3.x[1:])) and w3.y[0] == w3.y[-1]
     # the chart's omega_3 at the drawn angle is the polygon's
-    assert w3.y[0] == pytest.approx(s.computed("velocity").angular[3], rel=1e-9)
+    at = min(range(len(w3.x)), key=lambda j: abs(w3.x[j] - s.scene.angle))
+    assert w3.x[at] == pytest.approx(s.scene.angle, abs=1e-12)
+    assert w3.y[at] == pytest.approx(s.computed("velocity").angular[3], rel=1e-9)
     paths = [e for e in s.construction.entities(Diagram.SPACE) if isinstance(e, Curve)]
     assert len(paths) == 1 and paths[0].closed and paths[0].label == "path of D"
     assert "sweep over the cycle" in s.ran and s.to_json()["sweep"]["gaps_deg"] == []
@@ -61,12 +64,14 @@ def test_a_linkage_that_cannot_turn_fully_has_gaps_and_a_warning():
     assert 0 < res.assembles.sum() < res.thetas.size
     charts = {e.diagram.name: e for e in s.construction.entities() if isinstance(e, Chart)}
     mu = np.array(charts["Transmission angle"].series[0].y)
+    order, _ = one_turn(tuple(res.thetas))           # the charts' order of the sweep's angles
+    assembles = res.assembles[order]
     # where coupler and rocker line up (mu 0 or 180 deg) the rocker cannot be driven: no finite speed
-    dead = res.assembles & (np.minimum(mu, math.pi - mu) < 1e-6)
+    dead = assembles & (np.minimum(mu, math.pi - mu) < 1e-6)
     for c in charts.values():
         for ser in c.series:
             y = np.array(ser.y)
-            assert np.isnan(y[~res.assembles]).all() and np.isfinite(y[res.assembles & ~dead]).all()
+            assert np.isnan(y[~assembles]).all() and np.isfinite(y[assembles & ~dead]).all()
     paths = [e for e in s.construction.entities(Diagram.SPACE) if isinstance(e, Curve)]
     runs = int(np.count_nonzero(np.diff(res.assembles.astype(int)) == -1)) + int(res.assembles[-1])
     assert len(paths) == runs >= 1
@@ -102,3 +107,23 @@ def test_limit_positions_drawn_are_the_ends_of_the_rockers_swing():
     assert swing.end_angle - swing.start_angle == pytest.approx(y.max() - y.min(), abs=1e-4)
     labels = {e.label for e in s.construction.entities(Diagram.SPACE) if isinstance(e, Point)}
     assert {"C'", "C''"} <= labels
+
+
+@pytest.mark.parametrize("start_deg, closed", [(60.0, True), (60.5, True), (0.0, True), (-30.0, True), (350.0, False)])
+def test_a_chart_runs_over_one_turn_from_0_to_360_deg(start_deg, closed):
+    """The sweep starts at the drawn pose; its charts are drawn over the turn from 0: every pose once (the
+    closing sample is the first pose again), in order of the crank angle, and where a pose lies at 0 deg
+    it closes the curve at 360 deg."""
+    n = 36
+    th = tuple(math.radians(start_deg) + 2 * math.pi * np.arange(n + 1 if closed else n) / n)
+    order, xs = one_turn(th)
+    on_grid = (start_deg % 10.0) == 0.0
+    assert sorted(set(order)) == list(range(n)) and len(order) == n + on_grid
+    assert all(b > a for a, b in zip(xs, xs[1:])) and 0.0 <= xs[0] and xs[-1] <= 2 * math.pi
+    if on_grid:
+        assert (xs[0], xs[-1]) == (0.0, 2 * math.pi)
+    else:
+        assert xs[0] == pytest.approx(math.radians(0.5), abs=1e-12) and xs[-1] == pytest.approx(math.radians(350.5))
+    for i, x in zip(order, xs):
+        d = abs(x - th[i]) % (2 * math.pi)
+        assert min(d, 2 * math.pi - d) < 1e-12                       # the same pose
