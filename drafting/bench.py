@@ -97,9 +97,13 @@ def format_render_rows(rows: list[dict]) -> str:
 def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
     repeats = 3 if quick else 7
     sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
+    import gc
+    from .parallel import GC_YOUNG
+    collector = ("tuned as in the drafting command" if gc.get_threshold()[0] == GC_YOUNG
+                 else "Python's defaults (the drafting command tunes it: drafting.parallel.tune_gc)")
     lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; layout = "
              "every page's drawing commands; SVG, PDF and PNG (150 dpi) made in memory; to SVG = solve + layout + "
-             "SVG):" % repeats, format_render_rows(render_rows(repeats))]
+             "SVG; garbage collector: %s):" % (repeats, collector), format_render_rows(render_rows(repeats))]
     lines.append("")
     lines.append("Analytic sweep, full states -- positions, velocities and accelerations of every joint "
                  "(one core, numpy):")

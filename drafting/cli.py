@@ -436,6 +436,9 @@ def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
     """The command.  SIGINT and SIGTERM end it cleanly, temporary files removed, with exit code 130 or
     143; whatever reaches the terminal has its control characters escaped (a title cannot move the
     cursor)."""
+    if exiting:                                 # the process is the command's own
+        from .parallel import tune_gc
+        tune_gc()
     with safe_streams():
         try:
             # the signal may come while the handlers are being put in place: the try holds that too

@@ -25,6 +25,7 @@ Faults, with the default process pool:
 from __future__ import annotations
 
 import concurrent.futures as cf
+import gc
 import multiprocessing
 import os
 import signal
@@ -52,9 +53,23 @@ def cores() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+#: The young-generation threshold of a process the command owns (the default is 700).
+GC_YOUNG = 20_000
+
+
+def tune_gc() -> None:
+    """For a process the command owns (never a caller's, such as a notebook's): what is loaded so far --
+    modules, unit tables, fonts -- is moved out of the garbage collector's way (``gc.freeze``), and young
+    collections run less often (a sheet allocates many small short-lived objects and few cycles).
+    Measured on the default sheet: ~10 % off solve + layout + SVG (median 25.2 -> 22.2 ms)."""
+    gc.freeze()
+    gc.set_threshold(GC_YOUNG, 20, 20)
+
+
 def _worker_init() -> None:
     """In each pool worker: SIGINT ignored (the parent coordinates), SIGTERM a clean end, and SIGTERM
-    when the parent dies (Linux)."""
+    when the parent dies (Linux); the collector tuned as in the command's own process."""
+    tune_gc()
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, faults.end_worker)
     try:

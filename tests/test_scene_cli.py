@@ -383,3 +383,19 @@ def test_rendering_several_scenes_shows_progress_on_a_terminal_only(tmp_path, ca
     assert main(["render", *scenes, "-o", str(tmp_path), "--format", "svg"]) == 0
     err = capsys.readouterr().err
     assert "\rrender [" in err and "100.0 %" in err
+
+
+def test_the_command_tunes_the_collector_of_its_own_process_only(tmp_path):
+    """``drafting`` freezes what it loaded and collects the young generation less often, in its own
+    process; called from Python (a notebook, these tests) it leaves the caller's collector alone."""
+    import gc
+    before = gc.get_threshold(), gc.get_freeze_count()
+    assert main(["solve", str(builtin_example())]) == 0
+    assert (gc.get_threshold(), gc.get_freeze_count()) == before
+    code = ("import gc, sys\nfrom drafting.cli import main\n"
+            "rc = main(['solve', sys.argv[1]], exiting=True)\n"
+            "print(gc.get_threshold()[0], gc.get_freeze_count() > 0, rc)")
+    out = subprocess.run([sys.executable, "-c", code, str(builtin_example())], capture_output=True, text=True,
+                         check=True).stdout.split()
+    from drafting.parallel import GC_YOUNG
+    assert out[-3:] == [str(GC_YOUNG), "True", "0"]
