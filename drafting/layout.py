@@ -457,12 +457,14 @@ class Section:
 LayoutCache = MutableMapping[tuple, "Placed | TooWide"]
 
 
-def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None = None) -> Placed:
+def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None = None, *,
+                w: float | None = None) -> Placed:
     """``item.layout(width, size)``, remembered in ``cache`` (items are immutable): the same text is
-    set once per width and size however many plans are tried."""
+    set once per width and size however many plans are tried.  ``w`` is ``round(width, 6)`` when the
+    caller has it already."""
     if cache is None:
         return item.layout(width, size)
-    key = (item, round(width, 6), size)
+    key = (item, round(width, 6) if w is None else w, size)
     got = cache.get(key)
     if got is None:
         try:
@@ -475,12 +477,15 @@ def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None
     return got
 
 
-def item_height(item: Item, width: float, size: float, cache: LayoutCache | None = None) -> float:
+def item_height(item: Item, width: float, size: float, cache: LayoutCache | None = None, *,
+                w: float | None = None) -> float:
     """The height ``item`` takes at ``width`` and ``size`` (raises :class:`TooWide`), without making its
-    commands when the item can; remembered in ``cache`` beside :func:`layout_item`'s results."""
+    commands when the item can; remembered in ``cache`` beside :func:`layout_item`'s results (``w`` as
+    there)."""
     if cache is None:
         return item.height(width, size)
-    w = round(width, 6)
+    if w is None:
+        w = round(width, 6)
     got = cache.get((item, w, size))                      # set in full already
     if isinstance(got, Placed):
         return got.height
@@ -529,8 +534,24 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
         return True
 
     placements: list[tuple[str, float, float, Item, float]] = []
-    measure_item = item_height if plan else (lambda it, w, sz, c: layout_item(it, w, sz, c).height)
-    for sec in sections:
+    measure_item = item_height if plan else (lambda it, wd, sz, c, w: layout_item(it, wd, sz, c, w=w).height)
+    widths = [round(r.w, 6) for _, r in slots]
+    memo: dict[tuple[int, int, int], float | TooWide] = {}      # (section, item, slot): this flow's heights
+
+    def height_of(k: int, i: int, item: Item) -> float:
+        key = (k, i, si)
+        got = memo.get(key)
+        if got is None:
+            try:
+                got = measure_item(item, slot.w, size, cache, w=widths[si])
+            except TooWide as e:
+                got = e
+            memo[key] = got
+        if isinstance(got, TooWide):
+            raise got
+        return got
+
+    for k, sec in enumerate(sections):
         items: list[Item] = [Heading(sec.heading), *sec.items] if sec.heading else list(sec.items)
         if used:
             y += section_gap
@@ -538,10 +559,10 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
         while i < len(items):
             item = items[i]
             try:
-                height = measure_item(item, slot.w, size, cache)
+                height = height_of(k, i, item)
                 need = height
                 if item.keep_with_next and i + 1 < len(items):
-                    need += item_gap + measure_item(items[i + 1], slot.w, size, cache)
+                    need += item_gap + height_of(k, i + 1, items[i + 1])
             except TooWide:
                 height = None
                 need = math.inf
@@ -558,7 +579,7 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
         return [name for name, _, _, _, _ in placements]
     # everything fits: now make the commands
     for name, x, y, item, w in placements:
-        placed = layout_item(item, w, size, cache)
+        placed = layout_item(item, w, size, cache)      # (set in full already when measured so)
         moved = with_region([translated(c, x, y) for c in placed.commands], name)
         out.extend(((name, c) for c in moved) if tagged else moved)
     return out
