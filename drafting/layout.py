@@ -504,17 +504,46 @@ def item_height(item: Item, width: float, size: float, cache: LayoutCache | None
     return h
 
 
-def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: float,
+class FlowText:
+    """Sections made ready to flow many times (a page planner tries many plans): their items in order,
+    each section's heading made once, and every item's height remembered per slot width, lettering
+    size and kind of measure, in lists (no hashing of items on the way)."""
+
+    def __init__(self, sections: Sequence[Section]) -> None:
+        self.sections = tuple(sections)
+        self.groups = [tuple([Heading(sec.heading), *sec.items]) if sec.heading else tuple(sec.items)
+                       for sec in self.sections]
+        self._heights: dict[tuple, list[list]] = {}
+
+    def __len__(self) -> int:
+        return len(self.sections)
+
+    def __iter__(self):
+        return iter(self.sections)
+
+    def heights(self, w: float, size: float, plan: bool) -> list[list]:
+        """Per section, per item: the height at width key ``w`` and ``size`` (a float or the TooWide
+        raised), or None while unasked."""
+        key = (w, size, plan)
+        got = self._heights.get(key)
+        if got is None:
+            got = self._heights[key] = [[None] * len(g) for g in self.groups]
+        return got
+
+
+def flow(sections: Sequence[Section] | FlowText, slots: Sequence[tuple[str, Rect]], size: float,
          cache: LayoutCache | None = None, *, tagged: bool = False, plan: bool = False) -> list | None:
     """Set the sections into the slots in order at lettering ``size``; None when they do not fit.
     Each text command's region is the name of the slot it went into; with ``tagged`` the result is
     ``(slot name, command)`` pairs (a rule of a table has no region of its own).  With ``plan`` no
     command is made: the result is the name of the slot each item went into, in order (what a page
-    planner needs to know of a trial)."""
+    planner needs to know of a trial).  A planner that flows the same sections many times passes them
+    as one :class:`FlowText`."""
     if not sections:
         return []
     if not slots:
         return None
+    text = sections if isinstance(sections, FlowText) else FlowText(sections)
     out: list[Command] = []
     si = 0
     name, slot = slots[si]
@@ -536,23 +565,22 @@ def flow(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]], size: f
     placements: list[tuple[str, float, float, Item, float]] = []
     measure_item = item_height if plan else (lambda it, wd, sz, c, w: layout_item(it, wd, sz, c, w=w).height)
     widths = [round(r.w, 6) for _, r in slots]
-    memo: dict[tuple[int, int, int], float | TooWide] = {}      # (section, item, slot): this flow's heights
+    tables = [text.heights(w, size, plan) for w in widths]
 
     def height_of(k: int, i: int, item: Item) -> float:
-        key = (k, i, si)
-        got = memo.get(key)
+        row = tables[si][k]
+        got = row[i]
         if got is None:
             try:
                 got = measure_item(item, slot.w, size, cache, w=widths[si])
             except TooWide as e:
                 got = e
-            memo[key] = got
+            row[i] = got
         if isinstance(got, TooWide):
             raise got
         return got
 
-    for k, sec in enumerate(sections):
-        items: list[Item] = [Heading(sec.heading), *sec.items] if sec.heading else list(sec.items)
+    for k, items in enumerate(text.groups):
         if used:
             y += section_gap
         i = 0
@@ -595,8 +623,9 @@ def flow_shrinking(sections: Sequence[Section], slots: Sequence[tuple[str, Rect]
     ``plan``, the slots the items went into: see :func:`flow`)."""
     # (a lower bound of the height, set at the widest slot, used to skip sizes first: it cost more than it
     # saved -- each plan's slots have their own widths -- and never changed a sheet)
+    text = sections if isinstance(sections, FlowText) else FlowText(sections)
     for size in sizes:
-        out = flow(sections, slots, size, cache, tagged=tagged, plan=plan)
+        out = flow(text, slots, size, cache, tagged=tagged, plan=plan)
         if out is not None:
             return out, size
     return None

@@ -532,6 +532,7 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     the fewest pages (see the module docstring)."""
     panels = list(panels)
     cache = {} if cache is None else cache
+    sections = L.FlowText(sections)             # flowed once per plan tried: made ready once
     # one page
     options = []
     for plan in text_page_options(paper, panels, tb_height):
@@ -643,6 +644,6 @@ def _check_blocks(paper, panels, sections, tb_height, cache) -> None:
         slots = [(n, r) for n, r in tp.text_slots if r.w > 20 and r.h > 10]
         for sec in sections:
             for item in sec.items:
-                if L.flow([L.Section("", (item,))], slots[:1], L.TEXT_SIZES[-1], cache) is None:
+                if L.flow([L.Section("", (item,))], slots[:1], L.TEXT_SIZES[-1], cache, plan=True) is None:
                     raise LayoutError(f"a text block ({type(item).__name__}) does not fit an empty "
                                       f"{paper.name} {paper.orientation} sheet even with 2.5 mm lettering")
