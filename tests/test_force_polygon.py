@@ -21,7 +21,7 @@ from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.record import Arrow, Dimension, Point, Segment, TrialLine
+from constructions.record import AngleMark, Arrow, Dimension, Point, Segment, TrialLine
 from mechanisms import quick_return, rocker_with_slot, slot_and_guide
 from test_linkage_velocity import angles, coords, four_bars, sizes, slider_cranks, speeds, transmission
 
@@ -66,12 +66,35 @@ def test_static_sample_agrees_with_the_equilibrium_system_and_virtual_work():
     assert fa.torque == pytest.approx(virtual_work_torque(m, theta, 10.0, 0.0, GAS), rel=1e-12)
 
 
+def _torque_arcs(fa):
+    return [e for st in fa.construction.steps for e in st.entities
+            if isinstance(e, AngleMark) and e.diagram.kind == "free-body" and e.text == "T_2"]
+
+
+@pytest.mark.parametrize("angle_deg", [45.0, 100.0, 250.0])
+def test_the_driving_torque_is_drawn_on_the_crank_s_free_body(angle_deg):
+    """An arc about the crank's pivot, three quarters of a turn the torque's way, open around the crank."""
+    m, theta = compressor(angle_deg)
+    fa = solve(m, theta, GAS)
+    (arc,) = _torque_arcs(fa)
+    pose = locate(m, theta)
+    arm = pose["B"] - pose["O2"]
+    assert arc.vertex == pose["O2"] and arc.diagram.name == "link 2" and fa.torque != 0.0
+    span = arc.end_angle - arc.start_angle
+    assert span == pytest.approx(math.copysign(1.5 * math.pi, fa.torque), rel=1e-12)
+    # the crank's direction lies in the quarter the arc leaves open
+    off = (math.atan2(arm.y, arm.x) - arc.end_angle) % (2 * math.pi) if span > 0 else \
+        (arc.end_angle - math.atan2(arm.y, arm.x)) % (2 * math.pi)
+    assert off == pytest.approx(math.pi / 4, abs=1e-9)
+
+
 @pytest.mark.parametrize("angle_deg", [0.0, 180.0])
 def test_a_dead_centre_needs_no_static_torque(angle_deg):
     m, theta = compressor(angle_deg)
     fa = solve(m, theta, GAS)
     assert fa.torque == 0.0
     assert any("dead centre" in s.words for s in fa.construction.steps)
+    assert not _torque_arcs(fa)                                   # and none is drawn
     assert math.isfinite(next(x.value.norm() for x in fa.measured(m) if x.name == "F_32"))
 
 

@@ -28,7 +28,8 @@ from ..errors import IndeterminatePosition
 from ..geometry import Vec
 from ..linkage import CircleAndGuide, CrankTip, SlotThrough, TwoCircles, TwoLines, describe_angle, slide_line
 from ..polygons.common import WARN_SINE, rounding_estimate
-from ..record import Arrow, Diagram, Dimension, Point, Role, ScaleBar, Segment, StepKind, TrialLine, Value
+from ..record import (AngleMark, Arrow, Diagram, Dimension, Point, Role, ScaleBar, Segment, StepKind, TrialLine,
+                      Value)
 from .bodies import force_name, torque_name
 from .board import (ORIGIN, PARALLEL_SINE, Drawing, Force, ForcesNotDrawn, answer, body_label, close, contact,
                     force_value, is_loaded, meet, moment_step, outer_carrier, resultant, resultant_line,
@@ -222,6 +223,10 @@ no torque.  Rounding-level only: a larger arm is a small torque the check still 
 the scene times a bearing force larger than the loads is a torque beyond the 1e-9 agreement)."""
 
 
+TORQUE_ARC = 0.35
+"""The radius of the driving torque's arc on the crank's free body, as a fraction of the crank."""
+
+
 def driving_crank(d: Drawing, crank: CrankTip) -> None:
     """The crank: its bearing force closes its polygon; the driving torque is the resultant of the other
     forces times its perpendicular distance from the pivot."""
@@ -273,6 +278,14 @@ def driving_crank(d: Drawing, crank: CrankTip) -> None:
                  + (" (with the couples on the crank)" if cpl else "")
                  + f" = $r \u00d7 $h = $t {sense}.")
         vals = {"r": force_value(r.norm()), "h": Value("length", h), "t": Value("torque", abs(torque))}
+        arm = pos[crank.tip] - pos[o]
+        if torque and arm.norm() > 0:
+            # on the crank's free body, an arc about its pivot turning the torque's way, open around the crank
+            a = math.atan2(arm.y, arm.x)
+            start = a + math.copysign(math.pi / 4, torque)
+            ents.append(AngleMark(f"fbd {body_label(m, n)}: {t_name}", Role.RESULT, fb, pos[o],
+                                  TORQUE_ARC * arm.norm(), start, start + math.copysign(1.5 * math.pi, torque),
+                                  t_name))
     d.steps.append((words, tuple(ents), None, vals, StepKind.ANSWER))
     d.torque = torque
     d.record_pin(o, d.frame, n, -r)
