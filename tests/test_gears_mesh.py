@@ -241,3 +241,30 @@ def test_an_internal_pair_built_at_the_limit(n1, n2, phi):
     assert verdict(n1, n2) == AT_LIMIT
     assert verdict(n1 + 1, n2) == CLEAR and verdict(n1 - 1, n2) == INTERFERENCE
     check_pair(Pair(Gear(n1, s), Gear(n2, s), internal=True))
+
+
+@pytest.mark.parametrize("n1,n2,start,end", [(7, None, True, False), (8, None, False, False), (9, None, False, False),
+                                             (10, 10, True, True), (30, 60, False, False)])
+def test_interference_is_dimensioned_on_the_drawing(n1, n2, start, end):
+    """Where contact runs off the involutes the stretch is dimensioned on the path of contact: A to T1
+    (AP - PT1), T2 to B (PB - PT2); none at the limit or clear."""
+    from constructions.record import Dimension
+    s = system(0.01, 30.0 if n2 is None else 20.0)
+    pair = Pair(Gear(n1, s)) if n2 is None else Pair(Gear(n1, s), Gear(n2, s))
+    a = mesh_analysis(pair)
+    geo = a.geometry
+    dims = {e.name: (e, st) for st in a.construction.steps for e in st.entities
+            if isinstance(e, Dimension) and e.name.startswith("interference")}
+    assert ("interference at A" in dims) == start and ("interference at B" in dims) == end
+    assert (geo.start == INTERFERENCE) == start and (geo.end == INTERFERENCE) == end
+    said = " ".join(a.warnings)
+    assert ("starts before T1" in said) == start and ("ends after T2" in said) == end
+    if start:
+        dim, st = dims["interference at A"]
+        assert (dim.start, dim.end) == (geo.points["A"], geo.points["T1"])
+        assert st.value("i1").value == pytest.approx(dim.start.distance_to(dim.end), rel=1e-9)
+        assert st.value("i1").value == pytest.approx(geo.approach - geo.limits[0], rel=1e-12)
+    if end:
+        dim, st = dims["interference at B"]
+        assert (dim.start, dim.end) == (geo.points["T2"], geo.points["B"])
+        assert st.value("i2").value == pytest.approx(dim.start.distance_to(dim.end), rel=1e-9)
