@@ -429,11 +429,26 @@ def draw_angle_mark(e: AngleMark, ctx: DrawContext) -> None:
         ctx.d.labels.append(LabelReq("point", words, at(mid), True, e.name, r0=0.6))
 
 
+NOTE_GAP = 0.3
+"""The least room between the grounds of two notes, mm."""
+
+
 @drawer(Note, points=lambda e: (e.at,))
 def draw_note(e: Note, ctx: DrawContext) -> None:
+    """The words on a white ground centred at the note's point -- where they would cover a note set
+    before (names of circles a few mm apart, say), moved up or down just clear of it, the least way."""
     words = ctx.text(e, e.text)
-    if words:
-        _boxed_text(ctx, ctx.T(e.at), words, e.name)
+    if not words:
+        return
+    x, y0 = ctx.T(e.at)
+    hw, hh = _text_half(words)
+
+    def free(y: float) -> bool:
+        return not any(Rect(x - hw, y - hh, 2 * hw, 2 * hh).overlaps(o, NOTE_GAP) for o in ctx.notes)
+    clear = NOTE_GAP + hh + 1e-6                # (a hair more: the test is strict)
+    ys = [y0] + [v for o in ctx.notes for v in (o.top - clear, o.bottom + clear)]
+    y = min((v for v in ys if free(v)), key=lambda v: (abs(v - y0), v))
+    ctx.notes.append(_boxed_text(ctx, (x, y), words, e.name))
 
 
 __all__ = ["trial_crossings", "diagram_facts", "draw_pins", "TRIAL_EXT", "BLOCK_L", "BLOCK_H"]

@@ -262,6 +262,7 @@ class DrawContext:
     blocks: list[Pt]
     pins: list[Pt] = field(default_factory=list)
     text_fn: TextFn = _plain_text
+    notes: list[Rect] = field(default_factory=list)      # the grounds of the notes set so far
 
     def add_pin(self, p: Pt) -> None:
         if all(_dist(p, q) > 0.01 for q in self.pins + self.pivots):

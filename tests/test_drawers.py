@@ -264,3 +264,24 @@ def test_a_sheet_with_every_new_entity_renders():
     assert any("30.00 mm from the centre" in t for t in texts)
     root = ET.fromstring(sheet_to_svg(sheet))
     assert root.iter("{http://www.w3.org/2000/svg}circle")
+
+
+def test_notes_close_together_are_set_clear_of_each_other_the_least_way():
+    """Names of circles a few mm apart (a gear's pitch, base, addendum circles): each note that would cover
+    one set before it moves up or down just clear of it, whichever is nearer; a note with room stays put."""
+    notes = [Note("pitch", Role.NOTE, S, Vec(0.0, 0.0), "pitch circle"),
+             Note("base", Role.NOTE, S, Vec(0.001, -0.002), "base circle"),          # 2 mm lower: overlaps
+             Note("addendum", Role.NOTE, S, Vec(-0.002, 0.0045), "addendum circle"),  # 4.5 mm higher: just touches
+             Note("far", Role.NOTE, S, Vec(0.2, 0.2), "far away")]
+    d = draw_entities(notes, 1000.0)
+    grounds = {c.name.split(":")[0]: c.rect for c in d.commands if c.style == "note_bg"}
+    texts = {c.name.split(":")[0]: c for c in d.commands if c.style == "label"}
+    names = list(grounds)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            assert not grounds[a].overlaps(grounds[b], 0.3 - 1e-9), (a, b)
+    assert grounds["pitch"].center == pytest.approx((0.0, 0.0), abs=1e-9)          # the first stays
+    assert grounds["far"].center == pytest.approx((200.0, -200.0), abs=1e-9)       # room: stays put
+    assert grounds["base"].top == pytest.approx(grounds["pitch"].bottom + 0.3, abs=1e-5)     # just below
+    assert grounds["addendum"].bottom == pytest.approx(grounds["pitch"].top - 0.3, abs=1e-5)  # just above
+    assert all(texts[n].box.x >= grounds[n].x for n in names)
