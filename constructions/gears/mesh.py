@@ -22,7 +22,6 @@ from ..geometry import Circle as GCircle, Contact, Line, Tolerance, Vec, interse
 from ..quantities import Measured
 from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dimension, Note, Pivot, Point, Role,
                       Segment, StepKind, Value)
-from ..tolerance import DECISION
 from .tooth import Gear, ToothSystem, inv, ring_outline, roll_angle, unwinding_points
 
 SPACE = Diagram("overall")
@@ -351,7 +350,6 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
                  else "") + "$ra2 (dedendum circles thin).")
     rec = rec.then(words, *ents, values=vals)
     # 6 the path of contact
-    n = d.perp()
     off = -0.3 * h
     ents = [Point("A", Role.LABEL, DETAIL, A, "A"), Point("B", Role.LABEL, DETAIL, B, "B"),
             Segment("path of contact", Role.RESULT, DETAIL, A, B),
