@@ -638,7 +638,7 @@ def main(argv: list[str] | None = None) -> int:
     for p in PROBLEMS:
         print(f"| {p} | {counts[p]} |")
     slowest.sort(reverse=True)
-    print(f"\nslowest: " + "; ".join(f"{s:.2f} s ({n[:60]})" for s, n in slowest[:3]))
+    print("\nslowest: " + "; ".join(f"{s:.2f} s ({n[:60]})" for s, n in slowest[:3]))
     for p, rs in examples.items():
         print(f"\n{p}:")
         for r in rs[:args.show]:

@@ -190,7 +190,6 @@ def _train_notes(study) -> tuple[str, ...]:
         out.append("Reverted: the coaxial shafts' stages have equal sums of pitch radii (r1 + r2 = r3 + r4), checked "
                    "on the layout.")
     if train.planetary:
-        ring = [g for g in train.gears if g.internal]
         out.append(f"Planetary train, carrier {train.carrier}; speeds by the tabular method and the notes' formula, "
                    f"checked by velocity matching at every pitch point.")
     chk = study.get("check")

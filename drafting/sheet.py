@@ -297,7 +297,6 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     probe = SheetFormatter(units, {}, values, probe=True)
     sections = _sections(construction, results, info.notes, probe, given)
     summary = _units_summary(units, construction, panels, unit_kinds)
-    frame = pp.frame
 
     def tb_fields(scale_text: str, n: int = 1, m: int = 1):
         return [[("Scale", scale_text), ("Units", summary)],
