@@ -14,7 +14,8 @@ from dataclasses import dataclass
 from .geometry import Vec
 
 KINDS = ("length", "angle", "velocity", "angular velocity", "acceleration", "angular acceleration",
-         "force", "torque")
+         "force", "torque", "ratio")
+"""The kinds of a measured quantity; a "ratio" is a plain number (a gear pair's contact ratio)."""
 
 
 @dataclass(frozen=True, slots=True)

@@ -280,23 +280,34 @@ def mark_one(item: KeyItem, ans: Answer, units) -> Mark:
 
 def mark(items: Sequence[KeyItem], pairs: Iterable[tuple[str, object]], path, units) -> tuple[list[Mark], list[str]]:
     """Mark ``pairs`` (name, value) against the key ``items``: one Mark per key item, in the key's order,
-    and the names of the file that are not quantities of the scene."""
-    by_key = {quantity_key(i.name): i for i in items}
+    and the names of the file that are not quantities of the scene.  A name is the key's own, or one
+    spelled loosely ("vcb" for V_CB) where that fits one item only: where it fits several (PB and p_b of
+    a gear pair) the file must write the name as the key does."""
+    exact = {i.name: i for i in items}
+    loose: dict[str, list[KeyItem]] = {}
+    for i in items:
+        loose.setdefault(quantity_key(i.name), []).append(i)
     got: dict[str, Answer] = {}
     unknown: list[str] = []
     for name, raw in pairs:
         if not isinstance(name, str) or not name.strip():
             raise AnswersError(path, str(name), "is not a quantity name")
-        k = quantity_key(name.strip())
-        item = by_key.get(k)
+        nm = name.strip()
+        item = exact.get(nm)
         if item is None:
-            unknown.append(name.strip())
+            fits = loose.get(quantity_key(nm), [])
+            if len(fits) > 1:
+                raise AnswersError(path, nm, f"could be {' or '.join(f.name for f in fits)}; write the name as "
+                                             f"the key does")
+            item = fits[0] if fits else None
+        if item is None:
+            unknown.append(nm)
             continue
-        if k in got:
+        if item.name in got:
             raise AnswersError(path, name, "is answered twice")
-        got[k] = parse_answer(path, name.strip(), raw, item.kind, units.of(item.kind))
+        got[item.name] = parse_answer(path, nm, raw, item.kind, units.of(item.kind))
     marks = []
     for i in items:
-        a = got.get(quantity_key(i.name))
+        a = got.get(i.name)
         marks.append(Mark(i, "missing") if a is None else mark_one(i, a, units))
     return marks, unknown

@@ -164,7 +164,7 @@ class Study:
     def difference_text(self, c: Comparison) -> str:
         if c.difference is None:
             return "n/a"
-        return f"{self.scene.units.convert(c.kind, c.difference):.1e} {self.scene.units.symbol(c.kind)}"
+        return f"{self.scene.units.convert(c.kind, c.difference):.1e} {self.scene.units.symbol(c.kind)}".rstrip()
 
     def table(self) -> list[tuple[str, str, str, str]]:
         return [(display_name(c.name), self.value_text(c, c.graphical), self.value_text(c, c.analytic),

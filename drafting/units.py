@@ -32,6 +32,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "moment of inertia": ("kg m^2", "[mass] * [length] ** 2"),
     "stiffness": ("N/m", "[mass] / [time] ** 2"),
     "power": ("W", "[mass] * [length] ** 2 / [time] ** 3"),
+    "ratio": ("", ""),              # a plain number (a contact ratio): no unit at all
 }
 
 DEFAULT_UNITS: dict[str, str] = {
@@ -47,12 +48,13 @@ DEFAULT_UNITS: dict[str, str] = {
     "moment of inertia": "kg m^2",
     "stiffness": "N/mm",
     "power": "kW",
+    "ratio": "",
 }
 
 _EXAMPLES = {"length": "50 mm", "velocity": "500 mm/s", "angular velocity": "10 rad/s", "angle": "70 deg",
              "acceleration": "2000 mm/s^2", "angular acceleration": "5 rad/s^2", "force": "100 N",
              "torque": "20 N m", "mass": "2.5 kg", "moment of inertia": "0.01 kg m^2",
-             "stiffness": "2 N/mm", "power": "30 kW"}
+             "stiffness": "2 N/mm", "power": "30 kW", "ratio": "1.6"}
 
 # names pint does not know that people write
 _ALIASES = {"rev": "revolution", "revs": "revolution", "\u00b0": "degree", "sec": "second"}
@@ -165,6 +167,10 @@ def _ratio(unit: str, kind: str) -> tuple[float, float]:
     unit is not of that kind."""
     if kind not in KINDS:
         raise UnitError(f"{kind!r} is not a kind of quantity ({', '.join(KINDS)})")
+    if kind == "ratio":                 # a plain number: no unit, and no dimensionless unit either
+        if unit.strip():
+            raise UnitError(f"a ratio is a plain number, e.g. 1.6, without a unit ({_q(unit)} given)")
+        return 1.0, 1.0
     f, root = _root(unit)
     kf, kroot = _kind_root(kind)
     if root != kroot:
@@ -273,7 +279,7 @@ def unit_symbol(unit: str) -> str:
 
 def format_value(value: float, kind: str, unit: str, digits: int = 4) -> str:
     v = from_si(value, kind, unit)
-    return f"{_sig(v, digits)} {unit_symbol(unit)}"
+    return f"{_sig(v, digits)} {unit_symbol(unit)}".rstrip()      # (a ratio has no unit)
 
 
 def _sig(v: float, digits: int) -> str:

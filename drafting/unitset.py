@@ -49,7 +49,9 @@ class Units:
     stiffness: str = _default("stiffness", "N/mm")
 
     def of(self, kind: str) -> str:
-        """The unit of quantity ``kind`` ("length", "angular velocity", ...)."""
+        """The unit of quantity ``kind`` ("length", "angular velocity", ...); a ratio has none ("")."""
+        if kind == "ratio":
+            return ""
         for key, k in KEYS.items():
             if k == kind:
                 return getattr(self, key)

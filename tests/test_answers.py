@@ -109,3 +109,31 @@ def test_marking_a_batch_variant(tmp_path, capsys):
 def test_variant_needs_its_seed(tmp_path, capsys, args, words):
     code, _ = check(tmp_path, "V_C,568 mm/s\n", extra=args)
     assert code == 2 and words in capsys.readouterr().err
+
+
+GEARS = ROOT / "gallery" / "gear-pair-20-40.toml"
+# the 20/40 pair, module 5, 20 deg: PB 11.49 mm, p_b 14.76 mm, contact ratio 1.635
+
+
+def test_names_that_spell_alike_are_marked_apart_and_a_loose_one_that_fits_both_is_refused(tmp_path, capsys):
+    """PB (the recess) and p_b (the base pitch) spell alike loosely; written as the key writes them each
+    is marked on its own, and "pb" is one sentence asking for the key's spelling (it used to mark both)."""
+    code, _ = check(tmp_path, "PB,11.5 mm\np_b,14.8 mm\nC.R.,1.63\n", scene=GEARS)
+    out = capsys.readouterr().out
+    got = verdicts(out)
+    assert (got["PB"], got["p_b"], got["C.R."]) == ("right", "right", "right")
+    code, _ = check(tmp_path, "PB,25 mm\n", scene=GEARS)
+    got = verdicts(capsys.readouterr().out)
+    assert (got["PB"], got["p_b"]) == ("wrong", "missing")
+    code, f = check(tmp_path, "pb,11.5 mm\n", scene=GEARS)
+    err = capsys.readouterr().err
+    assert code == 2 and "pb: could be PB or p_b; write the name as the key does" in err and str(f) in err
+    assert len(err.strip().splitlines()) == 1
+
+
+def test_a_ratio_is_answered_as_a_plain_number(tmp_path, capsys):
+    code, _ = check(tmp_path, "C.R.,1.7\n", scene=GEARS)
+    assert verdicts(capsys.readouterr().out)["C.R."] == "wrong"            # 2 % of 1.635 is 0.033
+    code, f = check(tmp_path, "C.R.,1.63 mm\n", scene=GEARS)
+    err = capsys.readouterr().err
+    assert code == 2 and "a ratio is a plain number, e.g. 1.6, without a unit ('mm' given)" in err

@@ -42,6 +42,11 @@ def test_the_20_40_pair_scene_agrees_and_reads_its_contact_ratio(capsys):
                                            "pinion_with_this_gear": 15}
     assert data["gears"]["1"]["pitch_radius"] == pytest.approx(50.0) and data["gears"]["2"]["base_radius"] == pytest.approx(93.969, abs=1e-3)
     assert data["analyses"] == ["contact geometry"]
+    # the contact ratio is a results row of its own: a plain number beside its closed form
+    assert r["C.R."].graphical == pytest.approx(1.6351859635714578, rel=1e-12)
+    assert abs(r["C.R."].graphical - r["C.R."].analytic) <= 1e-9 * r["C.R."].analytic
+    row = next(t for t in study.table() if t[0] == "C.R.")
+    assert row[1:3] == ("1.635", "1.635") and not row[3].endswith(" ")
 
 
 def test_the_rack_scene_is_at_the_limit_without_a_warning():

@@ -124,6 +124,7 @@ class MeshAnalysis:
         if math.isfinite(g.limits[1]):
             out.append(Measured("PT_2", "length", g.limits[1]))
         out.append(Measured("phi'", "angle", g.working_pressure_angle))
+        out.append(Measured("C.R.", "ratio", g.contact_ratio))      # AB / p_b, the notes' C.R.
         return out
 
 

@@ -41,6 +41,7 @@ class ClosedForm:
                "phi'": self.working_pressure_angle}
         if math.isfinite(self.pt2):
             out["PT_2"] = self.pt2
+        out["C.R."] = self.contact_ratio
         return out
 
 
