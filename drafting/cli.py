@@ -26,6 +26,7 @@ from typing import Sequence
 from constructions.errors import ConstructionError, IndeterminatePosition
 
 from .faults import Interrupted, remove_temporaries, signals_handled
+from .parallel import tune_gc
 from .scene import PAPERS, SceneError, load_scene
 from .study import Study
 from .worked import builtin_example, sheet_for, sheets_for  # noqa: F401  (sheet_for: API)
@@ -436,11 +437,10 @@ def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
     """The command.  SIGINT and SIGTERM end it cleanly, temporary files removed, with exit code 130 or
     143; whatever reaches the terminal has its control characters escaped (a title cannot move the
     cursor)."""
-    if exiting:                                 # the process is the command's own
-        from .parallel import tune_gc
-        tune_gc()
     with safe_streams():
         try:
+            if exiting:                         # the process is the command's own
+                tune_gc()
             # the signal may come while the handlers are being put in place: the try holds that too
             # a process about to exit (``exiting``) ignores a late signal: its status is the work's
             with signals_handled(after=signal.SIG_IGN if exiting else None):
