@@ -6,11 +6,14 @@ A linkage scene may say which of its values a batch of lab sheets varies, each o
     crank_angle = ["30 deg", "150 deg"]                 # the crank angle ([input] angle)
     omega = { from = "5 rad/s", to = "15 rad/s", step = "0.5 rad/s" }
     length.BC = ["90 mm", "110 mm"]                     # the length of the link joining B and C
+    load.P = ["30 N", "50 N"]                           # the force of the [[load]] named P
 
 Keys: ``crank_angle``, ``omega``, ``tip_speed``, ``alpha``, ``torque`` (the [input] value the scene
 gives: a scene that gives ``tip_speed`` varies ``tip_speed``, not ``omega``; ``alpha`` unless the scene
-gives a torque instead) and ``length.<joints>``
-(the link between two joints, named as the notes name it: ``length.O1B``, ``length.BC``).  A range is
+gives a torque instead), ``length.<joints>``
+(the link between two joints, named as the notes name it: ``length.O1B``, ``length.BC``) and
+``load.<name>`` (the force of a ``[[load]]``, its magnitude: the range must stay positive; its angle
+stays as given).  A range is
 ``[from, to]`` or ``{ from, to, step }``; plain numbers are in the scene's ``[units]``.  A variant takes
 each value on the grid ``from + k step`` (k = 0, 1, ...; never beyond ``to``), so the numbers on a sheet
 are round; without a step, the step is the largest of 1, 2, 5 x 10^n units of ``from`` that divides the
@@ -51,7 +54,7 @@ class Range:
     ``low + k step`` (k = 0 .. count - 1) in ``unit``."""
 
     key: str
-    where: tuple            # ("input", "angle") or ("link", index in [[link]], "length")
+    where: tuple            # ("input", "angle"), ("link", index in [[link]], "length") or ("load", index, "force")
     kind: str
     unit: str
     low: Decimal
@@ -94,7 +97,7 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
     if not vary:
         raise _fail(path, "vary", "is empty; give at least one range, e.g. crank_angle = [\"30 deg\", \"150 deg\"]")
     out: list[Range] = []
-    choices = ", ".join(list(INPUT_KEYS) + ["length.<joints>"])
+    choices = ", ".join(list(INPUT_KEYS) + ["length.<joints>", "load.<name>"])
     inp = data.get("input") if isinstance(data.get("input"), dict) else {}
     for name, spec in vary.items():
         if name == "length":
@@ -104,6 +107,17 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
                 idx = _link_index(data, path, joints)
                 out.append(_range(path, f"vary.length.{joints}", ("link", idx, "length"), "length", sub, units,
                                   f"length.{joints}"))
+            continue
+        if name == "load":
+            if not isinstance(spec, dict) or not spec:
+                raise _fail(path, "vary.load", "must name loads, e.g. load.P = [\"30 N\", \"50 N\"]")
+            for load, sub in spec.items():
+                idx = _load_index(data, path, load)
+                r = _range(path, f"vary.load.{load}", ("load", idx, "force"), "force", sub, units, f"load.{load}")
+                if not r.low > 0:
+                    raise _fail(path, f"vary.load.{load}", "varies the load's magnitude: the range must stay above "
+                                                         "0 (turn its angle by 180 deg for the other sense)")
+                out.append(r)
             continue
         if name not in INPUT_KEYS:
             raise _fail(path, f"vary.{name}", f"unknown key; choose from {choices}")
@@ -132,6 +146,16 @@ def _link_index(data, path, joints: str) -> int:
                 return i
     known = f"; the links are {', '.join(names)}" if names else ""
     raise _fail(path, f"vary.length.{joints}", f"no link joins the joints {joints!r}{known}")
+
+
+def _load_index(data, path, name: str) -> int:
+    loads = data.get("load") if isinstance(data.get("load"), list) else []
+    names = [t.get("name") for t in loads if isinstance(t, dict) and isinstance(t.get("name"), str)]
+    for i, t in enumerate(loads):
+        if isinstance(t, dict) and t.get("name") == name:
+            return i
+    known = f"; the loads are {', '.join(names)}" if names else "; the scene has no [[load]]"
+    raise _fail(path, f"vary.load.{name}", f"no load is named {name!r}{known}")
 
 
 def _range(path, full: str, where: tuple, kind: str, spec, units, key_name: str) -> Range:
@@ -214,8 +238,8 @@ def variant_data(data: dict[str, Any], ranges, ks, index: int) -> dict[str, Any]
     for r, k in zip(ranges, ks):
         if r.where[0] == "input":
             out.setdefault("input", {})[r.where[1]] = r.text(k)
-        else:
-            out["link"][r.where[1]]["length"] = r.text(k)
+        else:                                   # ("link", i, "length") or ("load", i, "force")
+            out[r.where[0]][r.where[1]][r.where[2]] = r.text(k)
     drawing = out.setdefault("drawing", {})
     if isinstance(drawing, dict):
         drawing["number"] = f"{drawing.get('number', 'TOM-000')}-{index:03d}"

@@ -195,3 +195,39 @@ def test_alpha_may_vary_where_the_scene_leaves_it_at_zero(tmp_path):
     with pytest.raises(SceneError, match=r"vary.alpha: varies input.alpha, which the scene does not give"):
         parse_scene(text.replace('omega = "10 rad/s"', 'omega = "10 rad/s"\ntorque = "0 N m"')
                     + '[vary]\nalpha = ["-20 rad/s^2", "20 rad/s^2"]\n', "lab.toml")
+
+
+STATIC = Path(__file__).resolve().parents[1] / "gallery" / "notes-static-force-sample.toml"     # load P = 40 N
+
+
+def test_a_load_s_force_is_varied_by_name(tmp_path):
+    """``load.P`` varies the magnitude of the [[load]] named P (its angle stays): the variant is solved
+    with the drawn force, and its forces scale with it (a static analysis is linear in the load)."""
+    import tomllib
+    from drafting.batch import variant_study
+    from drafting.vary import read_vary
+    text = STATIC.read_text() + '\n[vary]\nload.P = { from = "20 N", to = "60 N", step = "5 N" }\n'
+    data = tomllib.loads(text)
+    scene = parse_scene(text, tmp_path / "p.toml")
+    (r,) = read_vary(data, "p.toml", scene.units)
+    assert (r.key, r.where, r.kind, r.count) == ("load.P", ("load", 0, "force"), "force", 9)
+    base = parse_scene(STATIC.read_text(), STATIC)
+    from drafting.study import Study
+    t0 = {q: c.graphical for q, c in Study(base).results.items()}
+    study, values = variant_study(data, tmp_path / "p.toml", seed=3, index=1)
+    (header, shown), = values
+    p = float(shown)
+    assert header.startswith("load.P") and 20 <= p <= 60 and (p - 20) % 5 == 0
+    t1 = {q: c.graphical for q, c in study.results.items()}
+    assert t1["T_2"] == pytest.approx(t0["T_2"] * p / 40.0, rel=1e-9)
+    assert t1["F_14"].norm() == pytest.approx(t0["F_14"].norm() * p / 40.0, rel=1e-9)
+
+
+@pytest.mark.parametrize("vary, key, words", [
+    ('[vary]\nload.Q = ["20 N", "60 N"]', "vary.load.Q", "no load is named 'Q'; the loads are P"),
+    ('[vary]\nload.P = ["-10 N", "60 N"]', "vary.load.P", "the range must stay above 0"),
+    ('[vary]\nload.P = ["20 mm", "60 mm"]', "vary.load.P", "is not a value of force"),
+])
+def test_a_bad_load_range_is_one_sentence(vary, key, words):
+    with pytest.raises(SceneError, match=rf"lab.toml: {key}: .*{words}"):
+        parse_scene(STATIC.read_text() + "\n" + vary, "lab.toml")
