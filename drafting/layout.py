@@ -457,6 +457,20 @@ class Section:
 LayoutCache = MutableMapping[tuple, "Placed | TooWide"]
 
 
+def _remembered(cache: LayoutCache, key: tuple, make):
+    """``make()`` remembered in ``cache`` under ``key``, a TooWide it raises included (raised again)."""
+    got = cache.get(key)
+    if got is None:
+        try:
+            got = make()
+        except TooWide as e:
+            got = e
+        cache[key] = got
+    if isinstance(got, TooWide):
+        raise got
+    return got
+
+
 def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None = None, *,
                 w: float | None = None) -> Placed:
     """``item.layout(width, size)``, remembered in ``cache`` (items are immutable): the same text is
@@ -464,17 +478,7 @@ def layout_item(item: Item, width: float, size: float, cache: LayoutCache | None
     caller has it already."""
     if cache is None:
         return item.layout(width, size)
-    key = (item, round(width, 6) if w is None else w, size)
-    got = cache.get(key)
-    if got is None:
-        try:
-            got = item.layout(width, size)
-        except TooWide as e:
-            got = e
-        cache[key] = got
-    if isinstance(got, TooWide):
-        raise got
-    return got
+    return _remembered(cache, (item, round(width, 6) if w is None else w, size), lambda: item.layout(width, size))
 
 
 def item_height(item: Item, width: float, size: float, cache: LayoutCache | None = None, *,
@@ -491,17 +495,7 @@ def item_height(item: Item, width: float, size: float, cache: LayoutCache | None
         return got.height
     if isinstance(got, TooWide):
         raise got
-    key = ("height", item, w, size)
-    h = cache.get(key)
-    if h is None:
-        try:
-            h = item.height(width, size)
-        except TooWide as e:
-            h = e
-        cache[key] = h
-    if isinstance(h, TooWide):
-        raise h
-    return h
+    return _remembered(cache, ("height", item, w, size), lambda: item.height(width, size))
 
 
 class FlowText:

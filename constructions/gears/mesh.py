@@ -373,17 +373,18 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
               "interference point), no interference.", INTERFERENCE: ": INTERFERENCE -- contact off the involutes, "
               "below a base circle."}[geo.verdict]
     # the stretch of the path of contact off the involutes, dimensioned on the far side from AP and PB
-    marks = []
+    marks, said = [], []
     if geo.start == INTERFERENCE:
         vals["i1"] = _v("length", geo.approach - geo.limits[0])
         marks.append(Dimension("interference at A", Role.DIMENSION, DETAIL, A, T1, -off, "interference $i1"))
+        said.append("AT1 = $i1")
     if geo.end == INTERFERENCE:
         vals["i2"] = _v("length", geo.recess - geo.limits[1])
         marks.append(Dimension("interference at B", Role.DIMENSION, DETAIL, pts["T2"], B, -off,
                                "interference $i2"))
-    if marks:
-        words += " The stretch off the involutes is dimensioned: " + " and ".join(
-            ("AT1 = $i1" if m.name.endswith("A") else "T2B = $i2") for m in marks) + "."
+        said.append("T2B = $i2")
+    if said:
+        words += " The stretch off the involutes is dimensioned: " + " and ".join(said) + "."
     rec = rec.then(words, *marks, values=vals, kind=StepKind.ANSWER)
     if geo.verdict == INTERFERENCE:
         where = [w for w, v in (("starts before T1", geo.start), ("ends after T2", geo.end)) if v == INTERFERENCE]
