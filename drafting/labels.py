@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 
 from .drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
 from .errors import LayoutError
@@ -34,47 +33,109 @@ def _edge(u: Pt, hw: float, hh: float) -> float:
 _DIRS = tuple((math.cos(2 * math.pi * i / 16), -math.sin(2 * math.pi * i / 16)) for i in range(16))
 _DIR_ATAN = tuple(math.atan2(u[1], u[0]) for u in _DIRS)
 _DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in range(16))
-_UX, _UY, _LEAN = np.array([u[0] for u in _DIRS]), np.array([u[1] for u in _DIRS]), np.array(_DIR_LEAN)
 
 
-def _candidates(req: LabelReq, hw: float, hh: float, incident: list[float], relax: int):
-    """(centre, cost) candidates for a label box of half sizes hw, hh."""
-    dists = (0.7, 1.6, 3.0, 4.5) if relax == 0 else (6.0, 8.0, 11.0, 15.0)
-    p = req.anchor
-    if req.kind in ("point", "polygon"):
-        if req.kind == "polygon" and relax == 0:
-            yield p, 0.0
-        gaps = [min((angle_gap(ap, b) for b in incident), default=math.pi) for ap in _DIR_ATAN]
+_DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0))      # mm from the anchor, then relaxed
+_ARROW_F = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)                # where along an arrow, best first
+_TRIAL_S = (3.0, 6.0, 10.0, 15.0, 22.0)                       # mm in from either end of a trial line
+
+
+_TAU = 2 * math.pi
+
+
+def _gaps(incident: list[float]) -> list[float]:
+    """For each of the 16 directions, the angle to the nearest line at the anchor (pi when none):
+    :func:`~drafting.drawing.angle_gap` written out, the same arithmetic."""
+    if not incident:
+        return [math.pi] * 16
+    out = []
+    for ap in _DIR_ATAN:
+        best = math.inf
+        for b in incident:
+            d = abs(ap - b) % _TAU
+            g = _TAU - d
+            if d < g:
+                g = d
+            if g < best:
+                best = g
+        out.append(best)
+    return out
+
+
+class _Candidates:
+    """The candidate centres of a label box of half sizes hw, hh, as their costs (all at once: the search
+    goes cheapest first) and their centres, each made only when the search reaches it.
+
+    In order: a polygon's own anchor first (when not relaxed); a point's 16 directions at each distance;
+    an arrow's places along it (middle first) at each distance, left of it then right; a trial line's
+    places in from its near end then from its far end, at each distance and side.  The cost of a place is
+    its distance, how far it strays from the widest gap between the lines at the anchor (a point), from
+    the middle (an arrow) or from the end (a trial line)."""
+
+    __slots__ = ("costs", "centre")
+
+    def __init__(self, req: LabelReq, hw: float, hh: float, incident: list[float], relax: int) -> None:
+        dists = _DISTS[relax]
+        if req.kind in ("point", "polygon"):
+            self._around(req, hw, hh, incident, dists, req.kind == "polygon" and relax == 0)
+        elif req.kind == "arrow":
+            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists)
+        elif req.kind == "trial":
+            self._along_trial(req, hw, hh, dists[:3] if relax == 0 else dists)
+        else:
+            self.costs, self.centre = [], None
+
+    def __len__(self) -> int:
+        return len(self.costs)
+
+    def _around(self, req, hw, hh, incident, dists, anchor_first) -> None:
+        p, r0 = req.anchor, req.r0
+        gaps = _gaps(incident)
         edges = [_edge(u, hw, hh) for u in _DIRS]
-        for dist in dists:
-            for u, gap, edge, lean in zip(_DIRS, gaps, edges, _DIR_LEAN):
-                t = req.r0 + dist + edge
-                cost = 2.0 * (math.pi - gap) + 0.8 * dist + lean
-                yield shifted(p, u, t), cost
-    elif req.kind == "arrow":
+        away = [2.0 * (math.pi - gap) for gap in gaps]
+        first = [0.0] if anchor_first else []
+        self.costs = first + [a + 0.8 * dist + lean for dist in dists for a, lean in zip(away, _DIR_LEAN)]
+        skip = len(first)
+
+        def centre(i: int) -> Pt:
+            if i < skip:
+                return p
+            k, j = divmod(i - skip, 16)
+            return shifted(p, _DIRS[j], r0 + dists[k] + edges[j])
+        self.centre = centre
+
+    def _along_arrow(self, req, hw, hh, dists) -> None:
         tail, tip = req.other, req.anchor
         v = (tip[0] - tail[0], tip[1] - tail[1])
         u = unit_vector(v)
-        n = (-u[1], u[0])
-        for dist in dists[:3] if relax == 0 else dists:
-            for f in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8):
-                a = shifted(tail, v, f)
-                for side in (1.0, -1.0):
-                    nn = (n[0] * side, n[1] * side)
-                    yield shifted(a, nn, dist + 0.3 + _edge(nn, hw, hh)), 3.0 * abs(f - 0.5) + 0.8 * dist + (side < 0) * 0.1
-    elif req.kind == "trial":
+        sides = ((-u[1], u[0]), (u[1], -u[0]))
+        self.costs = [3.0 * abs(f - 0.5) + 0.8 * dist + side * 0.1
+                      for dist in dists for f in _ARROW_F for side in (0, 1)]
+        n_f = len(_ARROW_F)
+
+        def centre(i: int) -> Pt:
+            k, rest = divmod(i, 2 * n_f)
+            f, side = divmod(rest, 2)
+            nn = sides[side]
+            return shifted(shifted(tail, v, _ARROW_F[f]), nn, dists[k] + 0.3 + _edge(nn, hw, hh))
+        self.centre = centre
+
+    def _along_trial(self, req, hw, hh, dists) -> None:
         end, start = req.anchor, req.other
         v = unit_vector((start[0] - end[0], start[1] - end[1]))
-        n = (-v[1], v[0])
-        for dist in dists[:3] if relax == 0 else dists:
-            for s in (3.0, 6.0, 10.0, 15.0, 22.0):
-                a = shifted(end, v, s)
-                for side in (1.0, -1.0):
-                    nn = (n[0] * side, n[1] * side)
-                    yield shifted(a, nn, dist + _edge(nn, hw, hh)), 0.1 * s + 0.8 * dist
-                    # the other end of the line as well
-                    b = shifted(start, v, -s)
-                    yield shifted(b, nn, dist + _edge(nn, hw, hh)), 0.1 * s + 0.8 * dist + 1.0
+        sides = ((-v[1], v[0]), (v[1], -v[0]))
+        self.costs = [0.1 * s + 0.8 * dist + far * 1.0
+                      for dist in dists for s in _TRIAL_S for _ in sides for far in (0, 1)]
+        n_s = len(_TRIAL_S)
+
+        def centre(i: int) -> Pt:
+            k, rest = divmod(i, 4 * n_s)
+            s, rest = divmod(rest, 4)
+            side, far = divmod(rest, 2)
+            nn = sides[side]
+            a = shifted(start, v, -_TRIAL_S[s]) if far else shifted(end, v, _TRIAL_S[s])
+            return shifted(a, nn, dists[k] + _edge(nn, hw, hh))
+        self.centre = centre
 
 
 def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> list[Command]:
@@ -104,7 +165,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
         for relax in (0, 1):
-            best = _best_candidate(_candidate_array(req, hw, hh, incident, relax), hw, hh, plot,
+            best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
                                    near_placed, near_hard, near_segs, req.mandatory)
             if best is not None:
                 break
@@ -113,7 +174,9 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 continue
             # last resort: the nearest position inside the plot that overlaps no other label
             for relax in (0, 1):
-                for centre, cost in _candidates(req, hw, hh, incident, relax):
+                cands = _Candidates(req, hw, hh, incident, relax)
+                for i, cost in enumerate(cands.costs):
+                    centre = cands.centre(i)
                     box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
                     if plot.contains(box) and not any(box.overlaps(o, 0.3) for o in near_placed):
                         if best is None or cost < best[0]:
@@ -129,151 +192,84 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     return out
 
 
-def _edges(ux: np.ndarray, uy: np.ndarray, hw: float, hh: float) -> np.ndarray:
-    """:func:`_edge` of each unit vector (ux, uy)."""
-    ax, ay = np.abs(ux), np.abs(uy)
-    with np.errstate(divide="ignore"):
-        return np.minimum(np.where(ax > 1e-9, hw / ax, np.inf), np.where(ay > 1e-9, hh / ay, np.inf))
-
-
-_ATAN = np.array(_DIR_ATAN)
-_ARROW_F = np.array((0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8))
-_TRIAL_S = np.array((3.0, 6.0, 10.0, 15.0, 22.0))
-_SIDES = np.array((1.0, -1.0))
-
-
-def _candidate_array(req: LabelReq, hw: float, hh: float, incident: list[float], relax: int) -> np.ndarray:
-    """:func:`_candidates` as an (n, 3) array of centre x, y and cost, in the same order and to the last
-    bit (computed at once, with the generator's arithmetic operation for operation)."""
-    dists = np.array((0.7, 1.6, 3.0, 4.5) if relax == 0 else (6.0, 8.0, 11.0, 15.0))
-    if req.kind in ("point", "polygon"):
-        if incident:
-            d = np.abs(_ATAN[:, None] - np.array(incident)[None, :]) % (2 * math.pi)
-            gaps = np.minimum(d, 2 * math.pi - d).min(axis=1)
-        else:
-            gaps = np.full(16, math.pi)
-        edges = _edges(_UX, _UY, hw, hh)
-        t = (req.r0 + dists)[:, None] + edges[None, :]
-        cost = (2.0 * (math.pi - gaps))[None, :] + (0.8 * dists)[:, None] + _LEAN[None, :]
-        p = req.anchor
-        out = np.stack([(p[0] + _UX[None, :] * t).ravel(), (p[1] + _UY[None, :] * t).ravel(), cost.ravel()], axis=1)
-        if req.kind == "polygon" and relax == 0:
-            out = np.vstack([np.array([[p[0], p[1], 0.0]]), out])
-        return out
-    if req.kind == "arrow":
-        tail, tip = req.other, req.anchor
-        v = (tip[0] - tail[0], tip[1] - tail[1])
-        u = unit_vector(v)
-        n = (-u[1], u[0])
-        dd = dists[:3] if relax == 0 else dists
-        e = _edge(n, hw, hh)                            # the same on either side
-        t = (dd + 0.3) + e                              # (dist,)
-        ax, ay = tail[0] + v[0] * _ARROW_F, tail[1] + v[1] * _ARROW_F      # (f,)
-        nx, ny = n[0] * _SIDES, n[1] * _SIDES            # (side,)
-        cx = ax[None, :, None] + nx[None, None, :] * t[:, None, None]
-        cy = ay[None, :, None] + ny[None, None, :] * t[:, None, None]
-        cost = ((3.0 * np.abs(_ARROW_F - 0.5))[None, :, None] + (0.8 * dd)[:, None, None]) \
-            + np.array((0.0, 0.1))[None, None, :]
-        shape = cx.shape
-    elif req.kind == "trial":
-        end, start = req.anchor, req.other
-        v = unit_vector((start[0] - end[0], start[1] - end[1]))
-        n = (-v[1], v[0])
-        dd = dists[:3] if relax == 0 else dists
-        t = dd + _edge(n, hw, hh)                       # (dist,)
-        nx, ny = n[0] * _SIDES, n[1] * _SIDES            # (side,)
-        # (dist, s, side, end): from the near end, then from the far end
-        bx = np.stack([end[0] + v[0] * _TRIAL_S, start[0] + v[0] * -_TRIAL_S], axis=1)       # (s, end)
-        by = np.stack([end[1] + v[1] * _TRIAL_S, start[1] + v[1] * -_TRIAL_S], axis=1)
-        cx = bx[None, :, None, :] + nx[None, None, :, None] * t[:, None, None, None]
-        cy = by[None, :, None, :] + ny[None, None, :, None] * t[:, None, None, None]
-        base = (0.1 * _TRIAL_S)[None, :] + (0.8 * dd)[:, None]                             # (dist, s)
-        cost = np.stack([base, base + 1.0], axis=2)[:, :, None, :]
-        shape = cx.shape
-    else:
-        return np.zeros((0, 3))
-    return np.stack([cx.ravel(), cy.ravel(), np.broadcast_to(cost, shape).ravel()], axis=1)
-
-
-def _best_candidate(cands: np.ndarray, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
+def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
                     near_hard: list[Rect], near_segs: "_Segments", mandatory: bool):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
     or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
     part of a thick line.  A score is the candidate's cost plus what it hides of the lines (never
     negative), so the candidates are tried cheapest first and the search stops at the first whose cost
-    exceeds the best score found: most labels are placed by their first few candidates.  The arithmetic
-    of a score is the exhaustive test's, operation for operation, so the choice is the same to the last
-    bit (a property test holds it to the exhaustive search, ties included)."""
-    if not len(cands):
+    exceeds the best score found: most labels are placed by their first few candidates, and only their
+    centres are made.  The arithmetic of a score is the exhaustive test's, operation for operation, so
+    the choice is the same to the last bit (a property test holds it to the exhaustive search, ties
+    included)."""
+    costs = cands.costs
+    if not costs:
         return None
-    cx, cy, cost = cands[:, 0], cands[:, 1], cands[:, 2]
-    left, top = cx - hw, cy - hh
-    right, bottom = left + 2 * hw, top + 2 * hh
-    bx = near_segs.boxes
-    # which line boxes each candidate box meets (the others add exactly 0.0 to its sums)
-    touch = ((bx[:, 0] <= right[:, None]) & (bx[:, 2] >= left[:, None])
-             & (bx[:, 1] <= bottom[:, None]) & (bx[:, 3] >= top[:, None]))
-    order = np.argsort(cost, kind="stable").tolist()          # cheapest first, ties in their order
-    L, T, R, B, C = left.tolist(), top.tolist(), right.tolist(), bottom.tolist(), cost.tolist()
+    centre_of = cands.centre
     tol = 1e-6
     pl, pt, pr, pb = plot.left - tol, plot.top - tol, plot.right + tol, plot.bottom + tol
     obstacles = [(o.left, o.top, o.right + gap, o.bottom + gap, gap)
                  for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)) for o in rects]
-    ends, heavy, length = near_segs.ends.tolist(), near_segs.heavy.tolist(), near_segs.length.tolist()
+    segments = near_segs.rows
+    w, h = 2 * hw, 2 * hh
     best_total, best_i = math.inf, -1
-    for i in order:
-        if C[i] > best_total:                   # nothing left can score lower (or tie)
+    for i in sorted(range(len(costs)), key=costs.__getitem__):     # cheapest first, ties in their order
+        cost = costs[i]
+        if cost > best_total:                   # nothing left can score lower (or tie)
             break
-        le, to, ri, bo = L[i], T[i], R[i], B[i]
+        x, y = centre_of(i)
+        le, to = x - hw, y - hh
+        ri, bo = le + w, to + h
         if not (le >= pl and ri <= pr and to >= pt and bo <= pb):
             continue
         if any(le < o_r and o_l < ri + gap and to < o_b and o_t < bo + gap
                for o_l, o_t, o_r, o_b, gap in obstacles):
             continue
         thin = thick = 0.0
-        for j in np.flatnonzero(touch[i]).tolist():
-            a0, a1, b0, b1 = ends[j]
-            got = _clip(a0, a1, b0 - a0, b1 - a1, le, to, ri, bo) * length[j]
-            if heavy[j]:
-                thick += got
-            else:
-                thin += got
+        for x0, y0, x1, y1, a0, a1, dx, dy, heavy, length in segments:
+            if x0 <= ri and x1 >= le and y0 <= bo and y1 >= to:      # else it adds exactly 0.0
+                got = _clip(a0, a1, dx, dy, le, to, ri, bo) * length
+                if heavy:
+                    thick += got
+                else:
+                    thin += got
         if not mandatory and thick > 0:         # an optional label never hides part of a thick line
             continue
-        total = C[i] + 3.0 * thin + 20.0 * thick
+        total = cost + 3.0 * thin + 20.0 * thick
         if total < best_total or (total == best_total and i < best_i):
             best_total, best_i = total, i
     if best_i < 0:
         return None
-    centre = (float(cx[best_i]), float(cy[best_i]))
-    return best_total, centre, Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
+    x, y = centre_of(best_i)
+    return best_total, (x, y), Rect(x - hw, y - hh, w, h)
 
 
 class _Segments:
-    """The line segments of a drawing as arrays: ends, bounding boxes, lengths and weights."""
+    """The line segments of a drawing, one row each: the bounding box, the start, the run (end minus
+    start), whether the line is heavy and its length."""
+
+    __slots__ = ("rows",)
 
     def __init__(self, segments) -> None:
-        self.ends = np.array([(a[0], a[1], b[0], b[1]) for a, b, _ in segments], dtype=float).reshape(-1, 4)
-        e = self.ends
-        self.boxes = np.stack([np.minimum(e[:, 0], e[:, 2]), np.minimum(e[:, 1], e[:, 3]),
-                               np.maximum(e[:, 0], e[:, 2]), np.maximum(e[:, 1], e[:, 3])], axis=1)
-        self.heavy = np.array([bool(h) for _, _, h in segments], dtype=bool)
-        self.length = np.array([math.hypot(b[0] - a[0], b[1] - a[1]) for a, b, _ in segments], dtype=float)
+        rows = []
+        for a, b, heavy, *_ in segments:
+            a0, a1, b0, b1 = float(a[0]), float(a[1]), float(b[0]), float(b[1])
+            rows.append((min(a0, b0), min(a1, b1), max(a0, b0), max(a1, b1), a0, a1, b0 - a0, b1 - a1,
+                         bool(heavy), math.hypot(b0 - a0, b1 - a1)))
+        self.rows = rows
 
     def around(self, p: Pt, margin: float) -> list[int]:
         """Indices, in order, of the segments whose boxes grown by ``margin`` hold ``p`` (every line
         that can leave ``p`` within a tolerance below ``margin`` / 2 is among them)."""
-        b = self.boxes
-        keep = ((b[:, 0] - margin <= p[0]) & (p[0] <= b[:, 2] + margin)
-                & (b[:, 1] - margin <= p[1]) & (p[1] <= b[:, 3] + margin))
-        return np.flatnonzero(keep).tolist()
+        x, y = p
+        return [i for i, (x0, y0, x1, y1, *_) in enumerate(self.rows)
+                if x0 - margin <= x <= x1 + margin and y0 - margin <= y <= y1 + margin]
 
     def near(self, reach: Rect) -> "_Segments":
         """The segments whose boxes meet ``reach``, in their order."""
-        b = self.boxes
-        keep = (b[:, 0] <= reach.right) & (b[:, 2] >= reach.left) & (b[:, 1] <= reach.bottom) & (b[:, 3] >= reach.top)
+        le, to, ri, bo = reach.left, reach.top, reach.right, reach.bottom
         sub = object.__new__(_Segments)
-        sub.ends, sub.boxes, sub.heavy, sub.length = self.ends[keep], b[keep], self.heavy[keep], self.length[keep]
+        sub.rows = [r for r in self.rows if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
         return sub
 
 
@@ -301,7 +297,7 @@ _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin
 
 
 def _reach(req: LabelReq, hw: float, hh: float) -> Rect:
-    """A rectangle holding every candidate box of ``req`` (see :func:`_candidates`)."""
+    """A rectangle holding every candidate box of ``req`` (see :class:`_Candidates`)."""
     r = req.r0 + _FAR + 2 * (hw + hh)
     if req.kind in ("point", "polygon") or req.other is None:
         x, y = req.anchor

@@ -1,11 +1,10 @@
-"""Label placement: the clip is shapely's, the candidates are the generator's to the last bit, and the
-pruned search picks what the exhaustive one picks."""
+"""Label placement: the clip is shapely's, the candidates are the plain generator's to the last bit, and
+the pruned search picks what the exhaustive one picks."""
 
 from __future__ import annotations
 
 import math
 
-import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
@@ -59,18 +58,65 @@ def test_a_segment_along_an_edge_or_outside_covers_nothing():
     assert _clip(20.0, 5.0, 10.0, 0.0, 0.0, 1.0, 5.0, 3.0) == 0.0
 
 
-@settings(max_examples=100, deadline=None)
+def reference_candidates(req, hw, hh, incident, relax):
+    """(centre, cost) of every candidate, in order, written out plainly: the reference."""
+    from drafting.drawing import angle_gap, shifted, unit_vector
+    from drafting.labels import _DIR_ATAN, _DIR_LEAN, _DIRS, _edge
+    dists = (0.7, 1.6, 3.0, 4.5) if relax == 0 else (6.0, 8.0, 11.0, 15.0)
+    p = req.anchor
+    if req.kind in ("point", "polygon"):
+        if req.kind == "polygon" and relax == 0:
+            yield p, 0.0
+        gaps = [min((angle_gap(ap, b) for b in incident), default=math.pi) for ap in _DIR_ATAN]
+        edges = [_edge(u, hw, hh) for u in _DIRS]
+        for dist in dists:
+            for u, gap, edge, lean in zip(_DIRS, gaps, edges, _DIR_LEAN):
+                yield shifted(p, u, req.r0 + dist + edge), 2.0 * (math.pi - gap) + 0.8 * dist + lean
+    elif req.kind == "arrow":
+        tail, tip = req.other, req.anchor
+        v = (tip[0] - tail[0], tip[1] - tail[1])
+        u = unit_vector(v)
+        n = (-u[1], u[0])
+        for dist in dists[:3] if relax == 0 else dists:
+            for f in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8):
+                a = shifted(tail, v, f)
+                for side in (1.0, -1.0):
+                    nn = (n[0] * side, n[1] * side)
+                    yield (shifted(a, nn, dist + 0.3 + _edge(nn, hw, hh)),
+                           3.0 * abs(f - 0.5) + 0.8 * dist + (side < 0) * 0.1)
+    elif req.kind == "trial":
+        end, start = req.anchor, req.other
+        v = unit_vector((start[0] - end[0], start[1] - end[1]))
+        n = (-v[1], v[0])
+        for dist in dists[:3] if relax == 0 else dists:
+            for s in (3.0, 6.0, 10.0, 15.0, 22.0):
+                for side in (1.0, -1.0):
+                    nn = (n[0] * side, n[1] * side)
+                    yield shifted(shifted(end, v, s), nn, dist + _edge(nn, hw, hh)), 0.1 * s + 0.8 * dist
+                    yield shifted(shifted(start, v, -s), nn, dist + _edge(nn, hw, hh)), 0.1 * s + 0.8 * dist + 1.0
+
+
+@settings(max_examples=150, deadline=None)
 @given(st.sampled_from(["point", "polygon", "arrow", "trial"]), coord, coord, coord, coord,
        st.floats(0.0, 2.0), st.floats(0.5, 12.0), st.floats(0.5, 4.0),
        st.lists(st.floats(-math.pi, math.pi), max_size=4), st.sampled_from([0, 1]))
-def test_the_candidate_array_is_the_generator_to_the_last_bit(kind, x, y, ox, oy, r0, hw, hh, incident, relax):
+def test_the_candidates_are_the_plain_generators_to_the_last_bit(kind, x, y, ox, oy, r0, hw, hh, incident, relax):
+    """Costs made at once and centres made on demand, by index, are the plainly written candidates."""
     from drafting.drawing import LabelReq
-    from drafting.labels import _candidate_array, _candidates
+    from drafting.labels import _Candidates
     other = None if kind in ("point", "polygon") else (ox, oy if (ox, oy) != (x, y) else oy + 1.0)
     req = LabelReq(kind, "A", (x, y), True, "a", r0, other)
-    want = [(c[0], c[1], k) for c, k in _candidates(req, hw, hh, incident, relax)]
-    got = _candidate_array(req, hw, hh, incident, relax)
-    assert [tuple(row) for row in got.tolist()] == want
+    want = list(reference_candidates(req, hw, hh, incident, relax))
+    got = _Candidates(req, hw, hh, incident, relax)
+    assert [(got.centre(i), c) for i, c in enumerate(got.costs)] == want
+
+
+class Listed:
+    """Candidates given as (x, y, cost) rows."""
+
+    def __init__(self, rows) -> None:
+        self.costs = [c for _, _, c in rows]
+        self.centre = lambda i: (rows[i][0], rows[i][1])
 
 
 def exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory):
@@ -115,8 +161,7 @@ def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, se
     plot = Rect(-40.0, -40.0, 80.0, 80.0)
     placed = [Rect(*r) for r in placed]
     hard = [Rect(*r) for r in hard]
-    got = _best_candidate(np.array(cands, dtype=float).reshape(-1, 3), hw, hh, plot, placed, hard,
-                          _Segments(segments), mandatory)
+    got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, _Segments(segments), mandatory)
     want = exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory)
     if want is None:
         assert got is None
