@@ -91,8 +91,9 @@ class Drawing:
         pts = [p for c in self.commands for p in command_points(c)]
         return Rect.bounding(pts) if pts else None
 
-    def moved(self, dx: float, dy: float) -> "Drawing":
-        d = Drawing({k: [translated(c, dx, dy) for c in v] for k, v in self.layers.items()})
+    def moved(self, dx: float, dy: float, region: str | None = None) -> "Drawing":
+        """The drawing moved by ``(dx, dy)`` mm, its texts put in ``region`` when given."""
+        d = Drawing({k: [translated(c, dx, dy, region) for c in v] for k, v in self.layers.items()})
         d.labels = [LabelReq(r.kind, r.markup, (r.anchor[0] + dx, r.anchor[1] + dy), r.mandatory, r.name, r.r0,
                              None if r.other is None else (r.other[0] + dx, r.other[1] + dy), r.pivot_digits)
                     for r in self.labels]

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import MutableMapping, Sequence
 
 from constructions.record import Term, VectorEquation
@@ -40,17 +40,13 @@ def text_at(x: float, y: float, spans: Sequence[Span], *, style: str = "text", r
     return Text(x, y, spans, style, ext.box(x, y), region, name)
 
 
-def with_region(cmds: Sequence[Command], region: str) -> list[Command]:
-    return [replace(c, region=region) if isinstance(c, Text) else c for c in cmds]
-
-
 def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]:
     """Greedy word wrap of rich text into lines no wider than ``width`` mm; neighbouring runs of one
     size, shift and slant are joined into one span as the line is built."""
     words = _words(markup, size)
     if not words:
         return []
-    breaks = _breaks(words, width, text_width(" ", size))
+    breaks = _breaks(_word_columns(markup, size)[0], width, text_width(" ", size))
     if breaks is None:
         return _wrap_splitting(markup, width, size)
     space = Span(" ", size)
@@ -73,13 +69,21 @@ def _words(markup: str, size: float) -> tuple[tuple[tuple[Span, ...], float, flo
     return tuple(_word(w, size) for w in markup.split())
 
 
-def _breaks(words, width: float, space: float) -> list[tuple[int, int]] | None:
-    """The greedy wrap of ``words`` (see :func:`_words`) into lines no wider than ``width``: the lines as
+@functools.lru_cache(maxsize=4096)
+def _word_columns(markup: str, size: float) -> tuple[list[float], list[float], list[float]]:
+    """The widths, tops and bottoms of the words of ``markup`` at ``size`` (see :func:`_words`), as
+    lists (never changed: they are remembered)."""
+    words = _words(markup, size)
+    return [w[1] for w in words], [w[2] for w in words], [w[3] for w in words]
+
+
+def _breaks(widths: Sequence[float], width: float, space: float) -> list[tuple[int, int]] | None:
+    """The greedy wrap of words of the given ``widths`` into lines no wider than ``width``: the lines as
     (first, end) word indices; None when a word is longer than the line (it must be split:
     :func:`_wrap_splitting`)."""
     lines: list[tuple[int, int]] = []
     start, cur_w = 0, 0.0
-    for i, (_, w, _, _) in enumerate(words):
+    for i, w in enumerate(widths):
         if w > width:
             return None
         if i > start and cur_w + space + w > width:
@@ -88,7 +92,7 @@ def _breaks(words, width: float, space: float) -> list[tuple[int, int]] | None:
         if i > start:
             cur_w += space
         cur_w += w
-    lines.append((start, len(words)))
+    lines.append((start, len(widths)))
     return lines
 
 
@@ -184,17 +188,18 @@ def wrapped_extents(markup: str, width: float, size: float) -> list[tuple[float,
     """The (top, bottom) extent of each line of ``markup`` wrapped to ``width``, as :func:`measure` takes
     the line :func:`wrap_words` makes, found from the word table without making a span; None when a
     word would have to be split."""
-    words = _words(markup, size)
-    got = _breaks(words, width, text_width(" ", size)) if words else []
+    widths, tops, bottoms = _word_columns(markup, size)
+    got = _breaks(widths, width, text_width(" ", size)) if widths else []
     if got is None:
         return None
     asc, desc = font_metrics()
     sp_top, sp_bottom = -asc * size, desc * size              # the space between words
     ext = []
     for i0, i1 in got:
-        t = min(min(w[2] for w in words[i0:i1]), sp_top if i1 - i0 > 1 else 0.0)
-        b = max(max(w[3] for w in words[i0:i1]), sp_bottom if i1 - i0 > 1 else 0.0)
-        ext.append((t, b))
+        if i1 - i0 > 1:
+            ext.append((min(min(tops[i0:i1]), sp_top), max(max(bottoms[i0:i1]), sp_bottom)))
+        else:
+            ext.append((min(tops[i0], 0.0), max(bottoms[i0], 0.0)))
     return ext
 
 
@@ -602,7 +607,8 @@ def flow(sections: Sequence[Section] | FlowText, slots: Sequence[tuple[str, Rect
     # everything fits: now make the commands
     for name, x, y, item, w in placements:
         placed = layout_item(item, w, size, cache)      # (set in full already when measured so)
-        moved = with_region([translated(c, x, y) for c in placed.commands], name)
+        region = name.partition("#")[2] or name          # "<page>#<slot>": the page's region is the slot
+        moved = [translated(c, x, y, region) for c in placed.commands]
         out.extend(((name, c) for c in moved) if tagged else moved)
     return out
 
@@ -918,6 +924,6 @@ def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence
     for i, (cmds, h) in enumerate(zip(rows_cmds, bp.heights)):
         if i:
             out.append(Line(rect.x, y, rect.right, y, "rule", "title block row"))
-        out.extend(with_region([translated(c, rect.x, y) for c in cmds], region))
+        out.extend(translated(c, rect.x, y, region) for c in cmds)
         y += h
     return TitleBlock(tuple(out), rect)

@@ -240,13 +240,13 @@ class Text:
 Command = Union[Line, Polyline, Polygon, Rectangle, Circle, Text]
 
 
-def translated(cmd: Command, dx: float, dy: float) -> Command:
-    """The same command moved by ``(dx, dy)`` mm."""
+def translated(cmd: Command, dx: float, dy: float, region: str | None = None) -> Command:
+    """The same command moved by ``(dx, dy)`` mm (a text put in ``region`` when given)."""
     t = type(cmd)
     if t is Text:
         b = cmd.box
-        return Text(cmd.x + dx, cmd.y + dy, cmd.spans, cmd.style, Rect(b.x + dx, b.y + dy, b.w, b.h), cmd.region,
-                    cmd.name)
+        return Text(cmd.x + dx, cmd.y + dy, cmd.spans, cmd.style, Rect(b.x + dx, b.y + dy, b.w, b.h),
+                    cmd.region if region is None else region, cmd.name)
     if t is Line:
         return Line(cmd.x1 + dx, cmd.y1 + dy, cmd.x2 + dx, cmd.y2 + dy, cmd.style, cmd.name)
     if t is Polyline or t is Polygon:

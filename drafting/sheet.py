@@ -355,7 +355,7 @@ def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, t
     for slot, c in text_cmds:
         if slot.startswith(prefix):
             used.add(slot[len(prefix):])
-            mine.append(replace(c, region=c.region[len(prefix):]) if isinstance(c, Text) else c)
+            mine.append(c)                       # (its region is the slot's, without the page)
     n_of_m = number or (index + 1, m)
     in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
     scale_list = [(p.key, p.scale_text(r)) for p, r, _ in in_order if p.scale_text(r)]

@@ -29,7 +29,7 @@ from .diagram import Drawing, TextFn, draw_entities, model_points
 from .errors import LayoutError
 from .formats import DiagramScale, per_si, symbol_of
 from .labels import place_labels
-from .paper import Command, Rect, Rectangle, Text
+from .paper import Command, Rect, Rectangle
 from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
 from .transform import Transform
 
@@ -126,8 +126,15 @@ class Panel:
     def rungs(self) -> int:
         raise NotImplementedError
 
+    _first: int | None = None
+
     def min_rung(self) -> int:
-        """The first rung at which the diagram is legible."""
+        """The first rung at which the diagram is legible (found once: the packer asks many times)."""
+        if self._first is None:
+            self._first = self.first_legible_rung()
+        return self._first
+
+    def first_legible_rung(self) -> int:
         return 0
 
     def need(self, rung: int, width: float) -> Size | None:
@@ -190,15 +197,10 @@ def _render_drawing(d: Drawing, k: float, header: L.Header, rect: Rect, region: 
                           f"use A3")
     dx = plot.center[0] - (bb.x + bb.w / 2)
     dy = plot.center[1] - (bb.y + bb.h / 2)
-    moved = d.moved(dx, dy)
-    cmds.extend(_regioned(moved.commands, region))
+    moved = d.moved(dx, dy, region)
+    cmds.extend(moved.commands)
     cmds.extend(place_labels(moved, plot, region))
     return cmds, Transform(k, dx, dy)
-
-
-def _regioned(cmds: Sequence[Command], region: str) -> list[Command]:
-    from dataclasses import replace
-    return [replace(c, region=region) if isinstance(c, Text) else c for c in cmds]
 
 
 class SpacePanel(Panel):
@@ -225,7 +227,7 @@ class SpacePanel(Panel):
     def heading(self, rung: int) -> str:
         return f"{self.title} {ratio_text(self.ratios[rung])}"
 
-    def min_rung(self) -> int:
+    def first_legible_rung(self) -> int:
         """The first rung at which the diagram is at least SPACE_MIN_MM and its labelled points at least
         LABEL_GAP_MM apart (a crowd of labels, as in a diagram of instant centres, needs room to be read),
         the second only as long as the diagram stays within LABEL_ROOM_MAX_MM."""
@@ -318,7 +320,7 @@ class VectorPanel(Panel):
     def k(self, rung: int) -> float:
         return 1.0 / self.upm(rung)
 
-    def min_rung(self) -> int:
+    def first_legible_rung(self) -> int:
         if self.fixed is not None:
             return 0
         for i in range(len(self.values)):

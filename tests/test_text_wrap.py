@@ -16,10 +16,10 @@ words = st.lists(st.sampled_from(["V_CB", "the", "polygon", "ω_2", "=", "197.4"
 def test_the_two_greedy_wraps_agree(ws, width, size):
     """wrap_words takes its breaks from the word table and falls back to splitting a word only when one is
     longer than the line; the splitting wrap, on text where nothing needs splitting, breaks the same."""
-    from drafting.layout import _breaks, _words, _wrap_splitting, wrap_words
+    from drafting.layout import _breaks, _word_columns, _words, _wrap_splitting, wrap_words
     from drafting.style import text_width
     text = " ".join(ws)
-    split = _breaks(_words(text, size), width, text_width(" ", size)) is None
+    split = _breaks(_word_columns(text, size)[0], width, text_width(" ", size)) is None
     assert split == any(w[1] > width for w in _words(text, size))
     assert wrap_words(text, width, size) == _wrap_splitting(text, width, size)
 
