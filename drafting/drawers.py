@@ -160,10 +160,12 @@ def _hatched_line(d: Drawing, a: Pt, b: Pt, side: Pt, name: str) -> None:
     u = unit_vector((b[0] - a[0], b[1] - a[1]))
     length = _dist(a, b)
     s = HATCH_STEP / 2
+    hatch = f"{name}:hatch"
+    ux, uy, sx, sy = u[0], u[1], side[0] * HATCH_LEN, side[1] * HATCH_LEN
+    back_x, back_y = ux * -HATCH_LEN, uy * -HATCH_LEN
     while s < length:
-        q = shifted(a, u, s)
-        r = shifted(shifted(q, side, HATCH_LEN), u, -HATCH_LEN)
-        d.add(LINKS, Line(*q, *r, "hatch", f"{name}:hatch"))
+        qx, qy = a[0] + ux * s, a[1] + uy * s                    # shifted(a, u, s)
+        d.add(LINKS, Line(qx, qy, qx + sx + back_x, qy + sy + back_y, "hatch", hatch))
         s += HATCH_STEP
 
 
@@ -206,7 +208,10 @@ def draw_arc(e: Arc, ctx: DrawContext) -> None:
         return
     T = ctx.T
     segs = int(min(200, max(8, math.ceil(abs(span) * e.radius * T.k / 1.0))))
-    pts = tuple(T(e.center + Vec.polar(e.radius, e.start_angle + span * i / segs)) for i in range(segs + 1))
+    # T(centre + Vec.polar(radius, angle)), written out with the same arithmetic
+    cx, cy, r, a0, k, ox, oy = e.center.x, e.center.y, e.radius, e.start_angle, T.k, T.ox, T.oy
+    pts = tuple((ox + k * (cx + r * math.cos(a)), oy - k * (cy + r * math.sin(a)))
+                for a in (a0 + span * i / segs for i in range(segs + 1)))
     ctx.d.add(PATHS, Polyline(pts, line_style_for(e.role), e.name))
 
 
@@ -416,7 +421,8 @@ def draw_angle_mark(e: AngleMark, ctx: DrawContext) -> None:
     # the arrowhead: its apex at the end of the arc, along the chord of the last ~ARROW_LEN of arc
     back = min(abs(span), ARROW_LEN / r) * (1 if span > 0 else -1)
     head, _ = arrowhead(at(e.end_angle - back), pts[-1], e.name)
-    keep = [p for p in pts if _dist(p, pts[-1]) >= 0.8 * min(ARROW_LEN, 0.5 * _dist(at(e.end_angle - back), pts[-1]))]
+    clear = 0.8 * min(ARROW_LEN, 0.5 * _dist(at(e.end_angle - back), pts[-1]))     # of the arrowhead
+    keep = [p for p in pts if _dist(p, pts[-1]) >= clear]
     if len(keep) >= 2:
         ctx.d.add(TRIALS, Polyline(tuple(keep), "dimension", e.name))
     ctx.d.layers.setdefault(HEADS, []).append(head)

@@ -70,9 +70,12 @@ class Drawing:
     segments: list[tuple[Pt, Pt, bool]] = field(default_factory=list)     # (a, b, thick)
 
     def add(self, layer: int, cmd: Command) -> None:
-        self.layers.setdefault(layer, []).append(cmd)
-        thick = getattr(cmd, "style", "") in THICK_STYLES
-        if isinstance(cmd, Line):
+        got = self.layers.get(layer)
+        if got is None:
+            got = self.layers[layer] = []
+        got.append(cmd)
+        thick = cmd.style in THICK_STYLES
+        if type(cmd) is Line:
             self.segments.append(((cmd.x1, cmd.y1), (cmd.x2, cmd.y2), thick))
         elif isinstance(cmd, (Polyline, Polygon)) and cmd.style not in NO_SEGMENT_STYLES:
             pts = list(cmd.points) + ([cmd.points[0]] if isinstance(cmd, Polygon) else [])
