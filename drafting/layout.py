@@ -169,11 +169,17 @@ def stack_lines(lines: Sequence[tuple[Span, ...]], x: float, top: float, size: f
     return [Text(x, y, tuple(line), style, m.box(x, y), "", name) for line, m, y in zip(lines, ms, ys)], bottom
 
 
+@functools.lru_cache(maxsize=64)
+def _line_room(size: float) -> tuple[float, float]:
+    """The top and bottom every line at ``size`` is given room for (a subscript included)."""
+    asc, desc = font_metrics()
+    return -asc * size, SUB_SHIFT * size + desc * sub_size(size)
+
+
 def _baselines(extents: Sequence[tuple[float, float]], top: float, size: float) -> tuple[list[float], float]:
     """The baselines of lines of the given (top, bottom) extents stacked from ``top``, and the bottom.
     Every line is given room for a subscript, so lines with and without one are evenly spaced."""
-    asc, desc = font_metrics()
-    n_top, n_bottom = -asc * size, SUB_SHIFT * size + desc * sub_size(size)
+    n_top, n_bottom = _line_room(size)
     ys: list[float] = []
     y_prev = prev_bottom = 0.0
     for t, b in extents:

@@ -7,9 +7,11 @@ uses what cairosvg cannot render: arrowheads are filled polygons (no markers), s
 moved with ``dy`` (no ``baseline-shift``), label backgrounds are white rectangles (no ``paint-order``).
 
 Every text that reaches the document -- titles, drawing numbers, names, labels, file names -- passes
-:func:`drafting.textsafe.xml_safe` here, the one place that writes SVG: characters XML 1.0 forbids
-become U+FFFD, and svgwrite escapes ``&``, ``<``, ``>`` and quotes.  The document stays inert: plain
-shapes and text only, no scripts, no links or external references, no DOCTYPE or entities.
+:func:`drafting.textsafe.xml_safe` here, the one place that writes SVG: the document is made safe once
+it is serialised, so characters XML 1.0 forbids become U+FFFD wherever they came from (ElementTree
+leaves them as they are, so one pass over the whole is the same as one per text), and svgwrite escapes
+``&``, ``<``, ``>`` and quotes.  The document stays inert: plain shapes and text only, no scripts, no
+links or external references, no DOCTYPE or entities.
 """
 
 from __future__ import annotations
@@ -31,7 +33,7 @@ from .textsafe import xml_safe
 def fmt(v: float) -> str:
     """A coordinate in mm with at most 3 decimals and no '-0' (``.3f`` rounds as ``round(v, 3)`` does:
     both are correctly rounded)."""
-    s = f"{float(v):.3f}".rstrip("0").rstrip(".")
+    s = f"{v:.3f}".rstrip("0").rstrip(".")
     return "0" if s in ("", "-0") else s
 
 
@@ -89,9 +91,9 @@ def _text(dwg: svgwrite.Drawing, c: Text):
     shift = 0.0
     for i, s in enumerate(c.spans):
         if i == 0 and s.shift == 0 and not s.italic:
-            el.text = xml_safe(s.text)
+            el.text = s.text
             continue
-        ts = svg_text.TSpan(xml_safe(s.text), factory=dwg)
+        ts = svg_text.TSpan(s.text, factory=dwg)
         dy = s.shift - shift
         if abs(dy) > 5e-4:
             ts.attribs["dy"] = fmt(dy)
@@ -123,4 +125,4 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
             el.attribs.update(attrs(c))
         dwg.add(el)
     # svgwrite's tostring() encodes to UTF-8 and decodes again; the same text straight as a str
-    return xml_safe(ElementTree.tostring(dwg.get_xml(), encoding="unicode"))   # and once more over the whole
+    return xml_safe(ElementTree.tostring(dwg.get_xml(), encoding="unicode"))
