@@ -504,15 +504,40 @@ def _flow(sections, pages, cache) -> tuple[list, float] | None:
     return cache[key]
 
 
-def _pick(options: list[Document]) -> Document:
-    """The classic rule: the first option sets the lettering size; another is taken when it keeps that
-    size, or keeps comfortable lettering (3 mm) while drawing the space diagram (when reduced) or the
-    polygons larger; of those, the largest space scale, then the largest polygons, then lettering."""
+def _pick(plans: Sequence[PagePlan], document: Callable[[PagePlan], "Document | None"], *,
+          prune: bool = True) -> Document | None:
+    """The classic rule over the one-page ``plans`` (``document(plan)`` flows the text into a plan: None
+    when it does not fit): the first plan the text fits sets the lettering size; another is taken when
+    it keeps that size, or keeps comfortable lettering (3 mm) while drawing the space diagram (when
+    reduced) or the polygons larger; of those, the largest space scale, then the largest polygons, then
+    lettering.  None when the text fits no plan.
+
+    Plans are flowed only as far as the choice needs: where the sheet chooses a polygon's scale, a plan
+    that keeps comfortable lettering is taken whatever the first one's size, so the plans of the best
+    drawings are flowed first and, when one of them keeps 3 mm, the others are never flowed (a plan
+    whose drawings are smaller cannot win).  Otherwise (or without ``prune``: the test's reference) every
+    plan is flowed."""
+    docs: dict[int, Document | None] = {}
+
+    def doc(i: int) -> Document | None:
+        if i not in docs:
+            docs[i] = document(plans[i])
+        return docs[i]
+    free = bool(plans) and any(isinstance(p, VectorPanel) and p.free for p, _, _ in plans[0].panels)
+    if free and prune:
+        # the plans of the best drawings (their order kept among them)
+        top = max(pl.quality() for pl in plans)
+        best = [i for i, pl in enumerate(plans) if pl.quality() == top]
+        comfortable = [i for i in best if doc(i) is not None and doc(i).size >= COMFORTABLE_LETTERING - 1e-9]
+        if comfortable:
+            return doc(max(comfortable, key=lambda i: doc(i).size))     # the first of the largest
+    options = [d for d in (doc(i) for i in range(len(plans))) if d is not None]
+    if not options:
+        return None
     first = options[0]
     ref = first.size
     reduced = any(isinstance(p, SpacePanel) and ratio_factor(p.ratios[r]) < 1.0
                   for pg in first.pages for p, r, _ in pg.panels)
-    free = any(isinstance(p, VectorPanel) and p.free for pg in first.pages for p, _, _ in pg.panels)
 
     def acceptable(o: Document) -> bool:
         return o is first or o.size >= ref - 1e-9 or ((reduced or free) and o.size >= COMFORTABLE_LETTERING - 1e-9)
@@ -534,13 +559,12 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     cache = {} if cache is None else cache
     sections = L.FlowText(sections)             # flowed once per plan tried: made ready once
     # one page
-    options = []
-    for plan in text_page_options(paper, panels, tb_height):
+    def one_page(plan: PagePlan) -> Document | None:
         got = _flow(sections, [plan], cache)
-        if got is not None:
-            options.append(Document([plan], got[0], got[1]))
-    if options:
-        return _pick(options)
+        return None if got is None else Document([plan], got[0], got[1])
+    picked = _pick(text_page_options(paper, panels, tb_height), one_page)
+    if picked is not None:
+        return picked
     _check_blocks(paper, panels, sections, tb_height, cache)
     # several pages: the panels in order over the pages; text on the first, all, the last or no
     # diagram page, and pages of text only after them as needed

@@ -303,3 +303,37 @@ def test_a_block_too_tall_for_an_empty_page_is_named_and_its_scales_are_not_clim
         _check_blocks(pp, [fits, tall], [], lambda w, panels: 20.0, {})
     assert set(fits.asked) == {2} and set(tall.asked) == {1}
     _check_blocks(pp, [fits], [], lambda w, panels: 20.0, {})           # fits: no error
+
+
+def test_the_pruned_pick_of_a_one_page_plan_is_the_exhaustive_one(monkeypatch):
+    """Flowing only the plans of the best drawings when one keeps comfortable lettering chooses the plan
+    (and lettering) flowing every plan chooses, on every gallery scene that is not a lab sheet."""
+    from pathlib import Path
+
+    from drafting import pages
+    from drafting.scene import load_scene
+    from drafting.study import Study
+    from drafting.worked import sheets_for
+    pick = pages._pick
+    seen = {"pruned": 0, "all": 0}
+
+    def both(plans, document, **kw):
+        flowed: list = []
+
+        def counting(plan):
+            flowed.append(plan)
+            return document(plan)
+        got = pick(plans, counting)
+        want = pick(plans, document, prune=False)
+        assert (got is None) == (want is None)
+        if got is not None:
+            assert got.pages == want.pages and got.size == want.size and got.text == want.text
+        seen["pruned" if len({id(p) for p in flowed}) < len(plans) else "all"] += 1
+        return got
+    monkeypatch.setattr(pages, "_pick", both)
+    gallery = Path(__file__).resolve().parent.parent / "gallery"
+    for path in sorted(gallery.glob("*.toml")):
+        if path.name.startswith("lab-"):
+            continue
+        sheets_for(Study(load_scene(path)).run())
+    assert seen["pruned"] >= 2 and seen["all"] >= 1, seen          # (the default sheet is pruned)
