@@ -109,10 +109,11 @@ def check_text(text: str) -> None:
     key_text: list[str] = []
     line = 1
     header = False
-    last_key = ""
+    last_key = ""              # (shortened and made printable only when it is named in an error)
 
     def fail(problem: str) -> LimitError:
-        where = f"line {line}" + (f" ({last_key})" if last_key else "")
+        key = _short(last_key) if last_key else ""
+        where = f"line {line}" + (f" ({key})" if key else "")
         return LimitError("", f"{where}: {problem}")
 
     for m in _TOKEN.finditer(text):
@@ -146,13 +147,13 @@ def check_text(text: str) -> None:
                 key_parts += 1
                 key_text.append(".")
                 if depth + key_parts > MAX_DEPTH:
-                    last_key = _short("".join(key_text).strip(". "))
+                    last_key = "".join(key_text).strip(". ")
                     raise fail(f"the key nests deeper than {MAX_DEPTH} levels; a scene nests at most "
                                f"{MAX_DEPTH} deep")
             continue
         if tok == "=":
             if expect_key:
-                last_key = _short("".join(key_text).strip())
+                last_key = "".join(key_text).strip()
             expect_key = False
             continue
         if tok in "[{":
@@ -172,7 +173,7 @@ def check_text(text: str) -> None:
                 stack.pop()
                 depth -= 1
             if header and not stack:
-                last_key = _short("".join(key_text).strip())
+                last_key = "".join(key_text).strip()
                 header = False
                 key_parts = 1
                 key_text = []

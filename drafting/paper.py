@@ -91,12 +91,11 @@ class Rect:
 
     @staticmethod
     def bounding(points: Iterable[tuple[float, float]]) -> "Rect":
-        xs, ys = [], []
-        for x, y in points:
-            xs.append(x)
-            ys.append(y)
-        if not xs:
+        pts = points if isinstance(points, (list, tuple)) else list(points)
+        if not pts:
             raise ValueError("no points to bound")
+        xs = [p[0] for p in pts]
+        ys = [p[1] for p in pts]
         return Rect.from_edges(min(xs), min(ys), max(xs), max(ys))
 
 

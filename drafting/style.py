@@ -308,12 +308,13 @@ def _symbol(base: str, sub: str, sup: str, size: float, italic_base: bool) -> li
     return out
 
 
+@functools.lru_cache(maxsize=8192)
 def rich(markup: str, size: float, *, pivot_digits: bool = False, italic_symbols: bool = False) -> tuple[Span, ...]:
     """Spans for ``markup`` with TeX-like sub/superscripts: "O_v", "V_CB^t", "V_{C}".
 
     With ``pivot_digits`` a label such as "O1" (one letter and digits) gets its digits as a subscript,
     as the notes print fixed pivots.  Subscripts are set with a baseline shift of the span (drawn with
-    ``dy``), never with ``baseline-shift``.
+    ``dy``), never with ``baseline-shift``.  Remembered: a sheet sets the same markup many times.
     """
     if pivot_digits:
         m = _PIVOT.match(markup)
