@@ -2,7 +2,8 @@
 
 What a user would otherwise script: every command of a laid-out sheet becomes a matplotlib artist on
 one figure the size of the paper (an axes filling it, 1 data unit = 1 mm, y down) -- lines and
-polylines as ``Line2D``, polygons, rectangles and circles as patches, each span of lettering as a
+polylines as ``Line2D``, a hatching's strokes as one ``LineCollection``, polygons, rectangles and
+circles as patches, each span of lettering as a
 ``text`` at the position the sheet's layout gave it (matplotlib has no layout of its own to offer
 here) -- and saved with matplotlib's own SVG, PDF and Agg (PNG) back ends.  Only the drawing stage has
 a peer: solving and laying out a sheet are this engine's.  matplotlib is optional (``pip install
@@ -14,7 +15,7 @@ from __future__ import annotations
 import io
 from typing import Sequence
 
-from .paper import Circle, Line, Polygon, Polyline, Rectangle, Text
+from .paper import Circle, Line, Polygon, Polyline, Rectangle, Strokes, Text
 from .sheet import Sheet
 from .style import FONT_FAMILY, measure, style
 
@@ -35,6 +36,7 @@ def available() -> str | None:
 def figure_for(sheet: Sheet):
     """A matplotlib figure holding every command of ``sheet`` as an artist."""
     from matplotlib.figure import Figure          # no pyplot, no backend switched: savefig picks by format
+    from matplotlib.collections import LineCollection
     from matplotlib.lines import Line2D
     from matplotlib import patches
 
@@ -71,6 +73,11 @@ def figure_for(sheet: Sheet):
                           linestyle=kw.get("linestyle", "-"))
             ax.add_line(line)
             continue
+        if isinstance(c, Strokes):
+            ax.add_collection(LineCollection([list(seg) for seg in c.segments], colors=st.stroke or "none",
+                                             linewidths=kw["linewidth"], capstyle=kw.get("capstyle", "butt"),
+                                             linestyles=kw.get("linestyle", "-")))
+            continue
         pkw = {"facecolor": st.fill or "none", "edgecolor": st.stroke or "none", "linewidth": kw["linewidth"]}
         if "linestyle" in kw:
             pkw["linestyle"] = kw["linestyle"]
@@ -93,11 +100,11 @@ def save(sheet: Sheet, fmt: str, dpi: float = 150.0) -> bytes:
 
 
 def artists(sheets: Sequence[Sheet]) -> int:
-    """How many artists the figures hold (lines, patches and texts): what the peer draws."""
+    """How many artists the figures hold (lines, collections, patches and texts): what the peer draws."""
     n = 0
     for sh in sheets:
         ax = figure_for(sh).axes[0]
-        n += len(ax.lines) + len(ax.patches) + len(ax.texts)
+        n += len(ax.lines) + len(ax.collections) + len(ax.patches) + len(ax.texts)
     return n
 
 

@@ -28,7 +28,7 @@ import time
 from pathlib import Path
 from typing import Sequence
 
-from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Text
+from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
 from .sheet import Sheet
 from .style import FONT_FAMILY, style
 
@@ -64,6 +64,7 @@ class _Painter:
         opts = cairo.FontOptions()
         opts.set_hint_metrics(cairo.HINT_METRICS_OFF)
         opts.set_antialias(cairo.ANTIALIAS_GRAY)           # no coloured sub-pixel fringes: a grey page
+        opts.set_hint_style(cairo.HINT_STYLE_NONE)         # outlines as drawn, whatever rendered before
         ctx.set_font_options(opts)
         self._caps = {"butt": cairo.LINE_CAP_BUTT, "round": cairo.LINE_CAP_ROUND, "square": cairo.LINE_CAP_SQUARE}
         self._joins = {"miter": cairo.LINE_JOIN_MITER, "round": cairo.LINE_JOIN_ROUND, "bevel": cairo.LINE_JOIN_BEVEL}
@@ -87,6 +88,10 @@ class _Painter:
         if isinstance(c, Line):
             ctx.move_to(c.x1, c.y1)
             ctx.line_to(c.x2, c.y2)
+        elif isinstance(c, Strokes):
+            for a, b in c.segments:
+                ctx.move_to(*a)
+                ctx.line_to(*b)
         elif isinstance(c, (Polyline, Polygon)):
             if not c.points:
                 return
@@ -103,7 +108,7 @@ class _Painter:
             ctx.close_path()
         else:
             raise TypeError(f"not a drawing command: {c!r}")
-        self.paint(c.style, fillable=not isinstance(c, Line))
+        self.paint(c.style, fillable=not isinstance(c, (Line, Strokes)))
 
     def paint(self, name: str, fillable: bool) -> None:
         st, ctx = style(name), self.ctx

@@ -22,7 +22,7 @@ from constructions.record import (AngleMark, Arc, Arrow, Bar, Block, Circle as C
 from .drawing import (ARROW_LEN, BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, NOTES, PATHS, PIN_R, PINS,
                       SHAFTS, THICK_STYLES, TRIALS, DrawContext, Drawing, LabelReq, Pt, _dist, angle_gap,
                       arrowhead, drawer, incident_directions, nonzero, shifted, unit_vector)
-from .paper import Circle, Line, Polygon, Polyline, Rect, Rectangle, Text
+from .paper import Circle, Line, Polygon, Polyline, Rect, Rectangle, Strokes, Text
 from .style import LABEL, area_style_for, line_style_for, measure, rich
 from .transform import Transform
 
@@ -137,13 +137,15 @@ def draw_pivot(e: Pivot, ctx: DrawContext) -> None:
     a, b = shifted(c, n, -4.5), shifted(c, n, 4.5)
     d.add(PINS, Line(*a, *b, "link", f"{name}:ground line"))
     pts = list(tri) + [a, b]
+    strokes = []
     s = -4.5 + HATCH_STEP / 2
     while s <= 4.5:
         q = shifted(c, n, s)
         r = shifted(shifted(q, u, HATCH_LEN), n, -HATCH_LEN)
-        d.add(PINS, Line(*q, *r, "hatch", f"{name}:hatch"))
+        strokes.append((q, r))
         pts.append(r)
         s += HATCH_STEP
+    d.add(PINS, Strokes(tuple(strokes), "hatch", f"{name}:hatch"))
     d.add(PINS, Circle(*p, PIN_R, "pin", f"{name}:pin"))
     d.hard.append(Rect.bounding(pts))
 
@@ -160,13 +162,15 @@ def _hatched_line(d: Drawing, a: Pt, b: Pt, side: Pt, name: str) -> None:
     u = unit_vector((b[0] - a[0], b[1] - a[1]))
     length = _dist(a, b)
     s = HATCH_STEP / 2
-    hatch = f"{name}:hatch"
     ux, uy, sx, sy = u[0], u[1], side[0] * HATCH_LEN, side[1] * HATCH_LEN
     back_x, back_y = ux * -HATCH_LEN, uy * -HATCH_LEN
+    strokes = []
     while s < length:
         qx, qy = a[0] + ux * s, a[1] + uy * s                    # shifted(a, u, s)
-        d.add(LINKS, Line(qx, qy, qx + sx + back_x, qy + sy + back_y, "hatch", hatch))
+        strokes.append(((qx, qy), (qx + sx + back_x, qy + sy + back_y)))
         s += HATCH_STEP
+    if strokes:
+        d.add(LINKS, Strokes(tuple(strokes), "hatch", f"{name}:hatch"))
 
 
 @drawer(Guide)

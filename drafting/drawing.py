@@ -32,7 +32,7 @@ from constructions.geometry import Vec
 from constructions.record import Entity
 
 from .errors import DrawingError
-from .paper import Command, Line, Polygon, Polyline, Rect, command_points, translated
+from .paper import Command, Line, Polygon, Polyline, Rect, Strokes, command_points, translated
 from .transform import Transform
 
 __all__ = ["LabelReq", "Drawing", "DrawContext", "drawer", "panel_drawer", "drawer_for", "drawable",
@@ -77,6 +77,8 @@ class Drawing:
         thick = cmd.style in THICK_STYLES
         if type(cmd) is Line:
             self.segments.append(((cmd.x1, cmd.y1), (cmd.x2, cmd.y2), thick))
+        elif type(cmd) is Strokes:
+            self.segments.extend((a, b, thick) for a, b in cmd.segments)
         elif isinstance(cmd, (Polyline, Polygon)) and cmd.style not in NO_SEGMENT_STYLES:
             pts = list(cmd.points) + ([cmd.points[0]] if isinstance(cmd, Polygon) else [])
             self.segments.extend((a, b, thick) for a, b in zip(pts[:-1], pts[1:]))

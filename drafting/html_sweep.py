@@ -43,7 +43,7 @@ from .drawers import BLOCK_H, BLOCK_L, HATCH_LEN, HATCH_STEP
 from .formats import per_si, symbol_of
 from .html_page import markup_html
 from .layout import text_at, viewport_header
-from .paper import Circle, Command, Line, Paper, Polygon, Polyline, Rect, Rectangle
+from .paper import Circle, Command, Line, Paper, Polygon, Polyline, Rect, Rectangle, Strokes
 from .scales import ISO_5455, ratio_factor, ratio_text
 from .sheet import Sheet
 from .style import LABEL, measure, rich
@@ -232,12 +232,13 @@ def _ground_symbol(p: tuple[float, float], away: tuple[float, float], name: str)
     out: list[Command] = [Polygon(tri, "ground", f"{name}:ground"),
                           Line(c[0] - 4.5 * n[0], c[1] - 4.5 * n[1], c[0] + 4.5 * n[0], c[1] + 4.5 * n[1], "link",
                                f"{name}:ground line")]
+    strokes = []
     s = -4.5 + HATCH_STEP / 2
     while s <= 4.5:
         q = (c[0] + s * n[0], c[1] + s * n[1])
-        r = (q[0] + HATCH_LEN * u[0] - HATCH_LEN * n[0], q[1] + HATCH_LEN * u[1] - HATCH_LEN * n[1])
-        out.append(Line(*q, *r, "hatch", f"{name}:hatch"))
+        strokes.append((q, (q[0] + HATCH_LEN * u[0] - HATCH_LEN * n[0], q[1] + HATCH_LEN * u[1] - HATCH_LEN * n[1])))
         s += HATCH_STEP
+    out.append(Strokes(tuple(strokes), "hatch", f"{name}:hatch"))
     out.append(Circle(p[0], p[1], PIN_R, "pin", f"{name}:pin"))
     return out
 
@@ -382,13 +383,15 @@ class _Card:
                 p1 = (g[0] + a0 * d[0] + off[0], g[1] + a0 * d[1] + off[1])
                 self.static.append(Line(*p1, g[0] + a1 * d[0] + off[0], g[1] + a1 * d[1] + off[1], "guide",
                                         f"sweep guide {sl.joint}:rail"))
+                strokes = []
                 t = HATCH_STEP / 2
                 while t < a1 - a0:
                     q = (p1[0] + t * d[0], p1[1] + t * d[1])
-                    self.static.append(Line(*q, q[0] + HATCH_LEN * (nrm[0] * sn - d[0]),
-                                            q[1] + HATCH_LEN * (nrm[1] * sn - d[1]), "hatch",
-                                            f"sweep guide {sl.joint}:hatch"))
+                    strokes.append((q, (q[0] + HATCH_LEN * (nrm[0] * sn - d[0]),
+                                        q[1] + HATCH_LEN * (nrm[1] * sn - d[1]))))
                     t += HATCH_STEP
+                if strokes:
+                    self.static.append(Strokes(tuple(strokes), "hatch", f"sweep guide {sl.joint}:hatch"))
 
     def traces(self) -> list[dict]:
         """The coupler curve of each point fixed to a link (not a joint): the whole path thin, broken at

@@ -178,6 +178,20 @@ class Polygon:
 
 
 @dataclass(frozen=True, slots=True)
+class Strokes:
+    """Separate straight strokes of one style drawn as one path: a hatching, ``segments`` as (start,
+    end) pairs."""
+
+    segments: tuple[tuple[Pt, Pt], ...]
+    style: str
+    name: str = ""
+
+    @property
+    def points(self) -> tuple[Pt, ...]:
+        return tuple(p for seg in self.segments for p in seg)
+
+
+@dataclass(frozen=True, slots=True)
 class Rectangle:
     x: float
     y: float
@@ -236,7 +250,7 @@ class Text:
         return tuple(s.size for s in self.spans)
 
 
-Command = Union[Line, Polyline, Polygon, Rectangle, Circle, Text]
+Command = Union[Line, Polyline, Polygon, Strokes, Rectangle, Circle, Text]
 
 
 def translated(cmd: Command, dx: float, dy: float, region: str | None = None) -> Command:
@@ -250,6 +264,9 @@ def translated(cmd: Command, dx: float, dy: float, region: str | None = None) ->
         return Line(cmd.x1 + dx, cmd.y1 + dy, cmd.x2 + dx, cmd.y2 + dy, cmd.style, cmd.name)
     if t is Polyline or t is Polygon:
         return t(tuple((x + dx, y + dy) for x, y in cmd.points), cmd.style, cmd.name)
+    if t is Strokes:
+        return Strokes(tuple(((a[0] + dx, a[1] + dy), (b[0] + dx, b[1] + dy)) for a, b in cmd.segments), cmd.style,
+                       cmd.name)
     if t is Rectangle:
         return Rectangle(cmd.x + dx, cmd.y + dy, cmd.w, cmd.h, cmd.style, cmd.name)
     if t is Circle:
@@ -261,7 +278,7 @@ def command_points(cmd: Command) -> tuple[Pt, ...]:
     """The points that bound a command's geometry (stroke width not included)."""
     if isinstance(cmd, Line):
         return cmd.points
-    if isinstance(cmd, (Polyline, Polygon)):
+    if isinstance(cmd, (Polyline, Polygon, Strokes)):
         return cmd.points
     if isinstance(cmd, Rectangle):
         return ((cmd.x, cmd.y), (cmd.x + cmd.w, cmd.y + cmd.h))

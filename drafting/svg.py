@@ -21,10 +21,10 @@ from typing import Callable
 from xml.etree import ElementTree
 
 import svgwrite
-from svgwrite import shapes, text as svg_text
+from svgwrite import path as svg_path, shapes, text as svg_text
 
 from .font_embed import css_for
-from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Text
+from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
 from .sheet import Sheet
 from .style import FONT_FAMILY, style
 from .textsafe import xml_safe
@@ -63,6 +63,11 @@ def _polyline(dwg, c: Polyline):
 
 def _polygon(dwg, c: Polygon):
     return shapes.Polygon([(fmt(x), fmt(y)) for x, y in c.points], factory=dwg)
+
+
+def _strokes(dwg, c: Strokes):
+    """One path of separate strokes: "M x y L x y" for each."""
+    return svg_path.Path([f"M{fmt(a[0])} {fmt(a[1])}L{fmt(b[0])} {fmt(b[1])}" for a, b in c.segments], factory=dwg)
 
 
 def _rect(dwg, c: Rectangle):
@@ -106,7 +111,8 @@ def _text(dwg: svgwrite.Drawing, c: Text):
     return el
 
 
-_MAKERS = {Line: _line, Polyline: _polyline, Polygon: _polygon, Rectangle: _rect, Circle: _circle, Text: _text}
+_MAKERS = {Line: _line, Polyline: _polyline, Polygon: _polygon, Strokes: _strokes, Rectangle: _rect, Circle: _circle,
+           Text: _text}
 
 
 def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None = None) -> str:

@@ -85,3 +85,19 @@ def test_pdf_pages_are_the_paper_and_the_text_is_text(sheets, monkeypatch):
 def test_an_unknown_paint_is_refused():
     with pytest.raises(ValueError, match="paint"):
         cairo_out._rgb("rgb(1,2,3)")
+
+
+def test_a_png_is_the_same_bytes_whatever_was_drawn_before_it():
+    """The PNG of a sheet does not depend on what the process drew before (cairo keeps scaled fonts
+    between surfaces: a PDF drawn first used to leave its unhinted glyphs for the PNG, so `--format png`
+    and the default formats gave different pixels).  Each order runs in a fresh process."""
+    import subprocess
+    import sys
+    code = ("import hashlib, sys; from drafting import cairo_out; from drafting.scene import load_scene; "
+            "from drafting.study import Study; from drafting.worked import builtin_example, sheets_for; "
+            "sh = sheets_for(Study(load_scene(builtin_example())).run()); "
+            "sys.argv[1] == 'pdf' and cairo_out.sheets_to_pdf(sh); "
+            "print(hashlib.sha256(cairo_out.sheet_to_png(sh[0], 150.0)).hexdigest())")
+    got = {first: subprocess.run([sys.executable, "-c", code, first], capture_output=True, text=True, check=True,
+                                 cwd=Path(__file__).resolve().parents[1]).stdout.strip() for first in ("png", "pdf")}
+    assert got["png"] == got["pdf"] and len(got["png"]) == 64
