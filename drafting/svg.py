@@ -91,8 +91,7 @@ def _element(dwg: svgwrite.Drawing, c: Command):
 def _text(dwg: svgwrite.Drawing, c: Text):
     base = c.spans[0].size if c.spans else 3.5
     el = svg_text.Text("", factory=dwg)
-    el.attribs.update({"x": fmt(c.x), "y": fmt(c.y), "font-family": FONT_FAMILY, "font-size": fmt(base),
-                       "fill": "black", "xml:space": "preserve"})
+    el.attribs.update({"x": fmt(c.x), "y": fmt(c.y), "font-size": fmt(base), "xml:space": "preserve"})
     shift = 0.0
     for i, s in enumerate(c.spans):
         if i == 0 and s.shift == 0 and not s.italic:
@@ -121,6 +120,7 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
     w, h = sheet.width, sheet.height
     dwg = svgwrite.Drawing(size=(f"{fmt(w)}mm", f"{fmt(h)}mm"), profile="full", debug=False)
     dwg.attribs["viewBox"] = f"0 0 {fmt(w)} {fmt(h)}"
+    dwg.attribs["font-family"] = FONT_FAMILY          # every text's (black, the default fill)
     page = dwg.rect()
     page.attribs.update({"x": "0", "y": "0", "width": fmt(w), "height": fmt(h), "fill": "white", "stroke": "none"})
     dwg.add(page)
