@@ -84,11 +84,14 @@ def remove_stale_temporaries(out_dir: Path | str) -> list[Path]:
     Files this process is writing are left alone.  Returns what was removed."""
     removed: list[Path] = []
     now = time.time()
-    ours = faults.tracked()
     try:
         entries = list(os.scandir(out_dir))
     except OSError:
         return removed
+    # what this process is writing, asked after the folder was read: a write registers its temporary
+    # before creating it, so every temporary of ours seen above is in this set, however the threads ran
+    # (asked before, another thread's write begun in between was taken for a leftover and removed)
+    ours = faults.tracked()
     for e in entries:
         m = _TEMP_NAME.match(e.name)
         if not m or e.path in ours:

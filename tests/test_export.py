@@ -373,6 +373,27 @@ def test_stale_temporary_files_are_removed_by_the_next_run(tmp_path):
     assert sorted(os.listdir(tmp_path)) == sorted([alive.name, mine.name, "sheet.svg"])
 
 
+def test_a_write_another_thread_begins_during_the_sweep_is_not_taken_for_a_leftover(tmp_path, monkeypatch):
+    """The sweep for leftovers reads the folder, then asks what this process is writing: a write that a
+    second thread registers and begins while the folder is read keeps its temporary (it used to be
+    removed under that thread, which then failed with "No such file or directory")."""
+    from drafting import faults
+    from drafting.export import _create_temp, _temp_name, remove_stale_temporaries
+    busy = _temp_name(tmp_path, "other", "svg")
+    real_scandir = export_mod.os.scandir
+
+    def scandir_while_another_write_begins(path):
+        faults.track(busy)                       # the other thread, as write_outputs does: track, then create
+        os.close(_create_temp(busy))
+        return real_scandir(path)
+    monkeypatch.setattr(export_mod.os, "scandir", scandir_while_another_write_begins)
+    try:
+        assert remove_stale_temporaries(tmp_path) == []
+        assert busy.exists()
+    finally:
+        faults.untrack(busy)
+
+
 def test_temporary_files_are_tracked_while_they_exist(tmp_path, monkeypatch):
     """While a conversion runs, the temporary files of the formats done so far are registered with
     faults (so a signal handler can remove them) and carry the recognisable name."""
