@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Iterable, Union
+from typing import Iterable, NamedTuple, Union
 
 # ISO 216 sizes, landscape (width, height) in mm.
 PAPER_SIZES: dict[str, tuple[float, float]] = {
@@ -214,9 +214,9 @@ class Circle:
     name: str = ""
 
 
-@dataclass(frozen=True, slots=True)
-class Span:
-    """A run of text: its size in mm and its baseline shift in mm (positive = down, a subscript)."""
+class Span(NamedTuple):
+    """A run of text: its size in mm and its baseline shift in mm (positive = down, a subscript).  A named
+    tuple: text is measured by its runs, and a tuple hashes and compares in C."""
 
     text: str
     size: float
