@@ -165,6 +165,7 @@ def _stop_pool(executor: cf.Executor, folders: Iterable[os.PathLike | str]) -> N
     with faults.deferred():
         procs = list((getattr(executor, "_processes", None) or {}).values()) \
             if isinstance(executor, cf.ProcessPoolExecutor) else []
+        manager = getattr(executor, "_executor_manager_thread", None)       # (shutdown forgets it)
         try:          # the pool's own thread cancels what has not started (cancelling it here races it)
             executor.shutdown(wait=False, cancel_futures=True)
         except Exception:
@@ -183,6 +184,11 @@ def _stop_pool(executor: cf.Executor, folders: Iterable[os.PathLike | str]) -> N
                 except (OSError, ValueError):
                     pass
                 p.join(5.0)
+        # the pool's own thread, which notices its workers gone and closes its wake-up pipe, ends before
+        # this returns: at exit Python 3.11 wakes that thread through the pipe, and if the two cross the
+        # write hits the closed pipe ("Exception ignored ... Bad file descriptor" after the interrupt line)
+        if manager is not None:
+            manager.join(GRACE_SECONDS + 5.0)
         from .export import remove_stale_temporaries
         for folder in folders:
             remove_stale_temporaries(folder)
