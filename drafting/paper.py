@@ -30,9 +30,9 @@ class PaperError(ValueError):
     """An unknown paper size or orientation."""
 
 
-@dataclass(frozen=True, slots=True)
-class Rect:
-    """An axis-aligned rectangle on paper: top-left corner ``(x, y)``, width ``w``, height ``h``."""
+class Rect(NamedTuple):
+    """An axis-aligned rectangle on paper: top-left corner ``(x, y)``, width ``w``, height ``h`` (a named
+    tuple: layout makes and compares thousands)."""
 
     x: float
     y: float

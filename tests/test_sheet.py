@@ -200,7 +200,8 @@ def test_labels_with_subscripts(a4):
     svg = sheet_to_svg(sheet)
     for banned in ("baseline-shift", "marker", "paint-order", "context-stroke", "non-scaling-stroke"):
         assert banned not in svg
-    assert all(t.get("font-family") == "DejaVu Sans" for t in texts)
+    assert root.get("font-family") == "DejaVu Sans"                     # said once, inherited by every text
+    assert all(t.get("font-family") in (None, "DejaVu Sans") for t in texts)
 
 
 def test_every_text_is_at_least_2_5_mm(a4, a3):

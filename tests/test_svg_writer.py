@@ -38,8 +38,17 @@ def test_text_and_attributes_read_back_exactly():
 
 def test_an_empty_text_is_an_empty_element():
     svg = sheet_to_svg(_sheet([Text(1, 2, (), "text", Rect(1, 0, 1, 2), "r", "t")]))
-    assert '<text fill="black" font-family="DejaVu Sans" font-size="3.5" x="1" xml:space="preserve" y="2" />' in svg
-    ET.fromstring(svg)
+    assert '<text font-size="3.5" x="1" xml:space="preserve" y="2" />' in svg
+    root = ET.fromstring(svg)
+    assert root.get("font-family") == "DejaVu Sans"               # every text inherits it; black is the default fill
+
+
+def test_a_hatching_is_one_path_of_separate_strokes():
+    from drafting.paper import Strokes
+    svg = sheet_to_svg(_sheet([Strokes((((0.0, 0.0), (1.0, 1.5)), ((2.25, -0.5), (3.0, 4.0))), "hatch", "h")]))
+    paths = ET.fromstring(svg).findall(f"{NS}path")
+    assert len(paths) == 1 and paths[0].get("d") == "M0 0L1 1.5 M2.25 -0.5L3 4"
+    assert paths[0].get("fill") == "none" and paths[0].get("stroke-width") == "0.25"
 
 
 def _fmt_by_round(v: float) -> str:
