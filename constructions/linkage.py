@@ -273,7 +273,16 @@ def coincident_name(joint: str, link: int) -> str:
 
 def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
     """Order in which the joints are constructed; raises DegenerateInput when the linkage is not 1-DoF or
-    is not a crank followed by dyads (it says which joint cannot be reached and why)."""
+    is not a crank followed by dyads (it says which joint cannot be reached and why).  Found once per
+    mechanism (it is immutable; a study asks for its plan several times)."""
+    got = m.__dict__.get("_assembly_plan")
+    if got is None:
+        got = _assembly_plan(m)
+        object.__setattr__(m, "_assembly_plan", got)
+    return got
+
+
+def _assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
     crank = m.link(m.crank)
     pivots = [j for j in crank.joints if j in m.ground]
     if len(pivots) != 1:

@@ -12,6 +12,7 @@ and ``LayoutError`` used to live here and are still importable from here.
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 from dataclasses import dataclass
 from typing import MutableMapping, Sequence
@@ -50,16 +51,33 @@ def wrap_words(markup: str, width: float, size: float) -> list[tuple[Span, ...]]
     if breaks is None:
         return _wrap_splitting(markup, width, size)
     space = Span(" ", size)
+    plain_words = _plain_words(markup, size)
     lines = []
     for i0, i1 in breaks:
-        run: list[list] = []                   # runs [text, size, shift, italic], merged as they come
-        for i in range(i0, i1):
-            if i > i0:
-                _add(run, space)
-            for sp in words[i][0]:
-                _add(run, sp)
-        lines.append(tuple(Span(*r) for r in run))
+        texts = plain_words[i0:i1]
+        if None not in texts:                  # plain words only: the runs merge into one span
+            lines.append((Span(" ".join(texts), size),))
+            continue
+        flat: list[Span] = list(words[i0][0])
+        for i in range(i0 + 1, i1):
+            flat.append(space)
+            flat.extend(words[i][0])
+        # neighbouring runs of one size, shift and slant joined (as _add joins them)
+        lines.append(tuple(Span("".join(sp.text for sp in group), *key)
+                           for key, group in itertools.groupby(flat, key=_run_key)))
     return lines
+
+
+def _run_key(s: Span) -> tuple[float, float, bool]:
+    return s[1:]
+
+
+@functools.lru_cache(maxsize=4096)
+def _plain_words(markup: str, size: float) -> list[str | None]:
+    """Each word of ``markup`` at ``size`` as its text when it is one upright span on the baseline at
+    ``size`` (a space joins such words into the same run), else None (never changed: remembered)."""
+    return [sp[0].text if len(sp) == 1 and sp[0].size == size and sp[0].shift == 0.0 and not sp[0].italic
+            else None for sp, _, _, _ in _words(markup, size)]
 
 
 @functools.lru_cache(maxsize=4096)
