@@ -38,6 +38,25 @@ class Timing(float):
 
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 
+
+def _reference_work() -> int:
+    total = 0
+    for i in range(200_000):
+        total += i * i
+    return total
+
+
+def machine_speed(repeats: int = 7) -> "Timing":
+    """A fixed piece of plain Python (a sum of 200,000 squares) timed as the sheets are: on a machine
+    shared with others its time moves with the neighbours, and the sheet figures of the same run move
+    with it -- the yardstick that says whether a run fell in a quiet or a busy minute."""
+    return _median_seconds(_reference_work, repeats)
+
+
+def format_machine_speed(t: "Timing") -> str:
+    return (f"Machine speed in this run: a fixed loop of plain Python (a sum of 200,000 squares) took "
+            f"{t * 1e3:.1f} ms, best {t.best * 1e3:.1f} ms (the sheet figures move with it)")
+
 #: The sheets timed side by side: the velocity-only default sheet, then the same slider-crank with its
 #: acceleration polygon, then the toggle six-bar with both polygons (the cost of each analysis).
 RENDER_SCENES = (("velocity, slider-crank (default sheet)", None),
@@ -120,9 +139,11 @@ def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
     from .parallel import GC_YOUNG
     collector = ("tuned as in the drafting command" if gc.get_threshold()[0] == GC_YOUNG
                  else "Python's defaults (the drafting command tunes it: drafting.parallel.tune_gc)")
+    speed = machine_speed(repeats)
     lines = ["Sheets, median of %d runs (solve = scene file -> solved study with the analytic check; layout = "
              "every page's drawing commands; SVG, PDF and PNG (150 dpi) made in memory; to SVG = solve + layout + "
-             "SVG; garbage collector: %s):" % (repeats, collector), format_render_rows(render_rows(repeats))]
+             "SVG; garbage collector: %s):" % (repeats, collector), format_render_rows(render_rows(repeats)),
+             format_machine_speed(speed)]
     lines.append("")
     lines.append("Analytic sweep, full states -- positions, velocities and accelerations of every joint "
                  "(one core, numpy):")
