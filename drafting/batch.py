@@ -164,7 +164,7 @@ def keys_csv(results: Sequence[VariantResult]) -> str:
 
 def batch_epoch() -> int:
     """The moment every file of a batch is dated: SOURCE_DATE_EPOCH, else the start of today (UTC)."""
-    from .cairo_out import source_date_epoch
+    from .sheet import source_date_epoch
     e = source_date_epoch()
     if e is not None:
         return e

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Sequence
 
 from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
-from .sheet import Sheet
+from .sheet import Sheet, source_date_epoch
 from .style import FONT_FAMILY, style
 
 MM_TO_PT = 72.0 / 25.4
@@ -183,12 +183,6 @@ def sheet_to_png(sheet: Sheet, dpi: float) -> bytes:
     out = io.BytesIO()
     Image.fromarray(grey, mode="L").save(out, format="PNG")
     return out.getvalue()
-
-
-def source_date_epoch() -> int | None:
-    """SOURCE_DATE_EPOCH (the reproducible-builds convention) as whole seconds, or None when unset."""
-    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
-    return int(epoch) if epoch.isdigit() else None
 
 
 def dated_pdf(pdf: bytes, epoch: int | None = None) -> bytes:

@@ -128,7 +128,7 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
         try:
             sheet_formats = [f for f in formats if f != PAGE]
             if lab:
-                from .cairo_out import source_date_epoch
+                from .sheet import source_date_epoch
                 from .lab import lab_for, write_lab
                 written = write_lab(lab_for(study, epoch=source_date_epoch()), out, path.stem, sheet_formats)
             else:

@@ -22,7 +22,7 @@ from constructions.record import (AngleMark, Arc, Arrow, Bar, Block, Circle as C
 from .drawing import (ARROW_LEN, BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, NOTES, PATHS, PIN_R, PINS,
                       SHAFTS, THICK_STYLES, TRIALS, DrawContext, Drawing, LabelReq, Pt, _dist, angle_gap,
                       arrowhead, drawer, incident_directions, nonzero, shifted, unit_vector)
-from .paper import Circle, Line, Polygon, Polyline, Rect, Rectangle, Strokes, Text
+from .paper import Circle, Command, Line, Polygon, Polyline, Rect, Rectangle, Strokes, Text
 from .style import LABEL, area_style_for, line_style_for, measure, rich
 from .transform import Transform
 
@@ -129,13 +129,20 @@ def draw_pivot(e: Pivot, ctx: DrawContext) -> None:
         gap = min((angle_gap(a, b) for b in inc), default=math.pi)
         if gap > best_gap + 1e-9:
             best, best_gap = cand, gap
-    u = best
+    cmds, symbol = ground_symbol(p, best, name)
+    for c in cmds:
+        d.add(PINS, c)
+    d.hard.append(symbol)
+
+
+def ground_symbol(p: Pt, u: Pt, name: str) -> tuple[list[Command], Rect]:
+    """A fixed pivot at paper point ``p`` grounded on the side of unit ``u``: ground triangle, ground line,
+    hatching and pin, and the box of the ground (which labels must not cover).  The sweep page draws
+    its pivots with it too."""
     n = (-u[1], u[0])
     c = shifted(p, u, 4.0)
     tri = (p, shifted(c, n, 3.0), shifted(c, n, -3.0))
-    d.add(PINS, Polygon(tri, "ground", f"{name}:ground"))
     a, b = shifted(c, n, -4.5), shifted(c, n, 4.5)
-    d.add(PINS, Line(*a, *b, "link", f"{name}:ground line"))
     pts = list(tri) + [a, b]
     strokes = []
     s = -4.5 + HATCH_STEP / 2
@@ -145,9 +152,9 @@ def draw_pivot(e: Pivot, ctx: DrawContext) -> None:
         strokes.append((q, r))
         pts.append(r)
         s += HATCH_STEP
-    d.add(PINS, Strokes(tuple(strokes), "hatch", f"{name}:hatch"))
-    d.add(PINS, Circle(*p, PIN_R, "pin", f"{name}:pin"))
-    d.hard.append(Rect.bounding(pts))
+    return ([Polygon(tri, "ground", f"{name}:ground"), Line(*a, *b, "link", f"{name}:ground line"),
+             Strokes(tuple(strokes), "hatch", f"{name}:hatch"), Circle(*p, PIN_R, "pin", f"{name}:pin")],
+            Rect.bounding(pts))
 
 
 @drawer(Pivot, phase=2)

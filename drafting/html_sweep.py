@@ -39,7 +39,7 @@ from constructions.record import Chart, Construction
 from .chart import AxisUnits, chart_with_axes
 from .drawing import PIN_R, DOT_R
 from .errors import LayoutError
-from .drawers import BLOCK_H, BLOCK_L, HATCH_LEN, HATCH_STEP
+from .drawers import BLOCK_H, BLOCK_L, HATCH_LEN, HATCH_STEP, ground_symbol
 from .formats import per_si, symbol_of
 from .html_page import markup_html
 from .layout import text_at, viewport_header
@@ -221,26 +221,6 @@ def _hull_order(local: dict[str, Vec]) -> list[str]:
     cx = sum(p.x for p in local.values()) / len(local)
     cy = sum(p.y for p in local.values()) / len(local)
     return sorted(local, key=lambda n: math.atan2(local[n].y - cy, local[n].x - cx))
-
-
-def _ground_symbol(p: tuple[float, float], away: tuple[float, float], name: str) -> list[Command]:
-    """A fixed pivot's ground triangle, line and hatching (as the sheets draw it) on the side ``away``."""
-    u = away
-    n = (-u[1], u[0])
-    c = (p[0] + 4.0 * u[0], p[1] + 4.0 * u[1])
-    tri = (p, (c[0] + 3 * n[0], c[1] + 3 * n[1]), (c[0] - 3 * n[0], c[1] - 3 * n[1]))
-    out: list[Command] = [Polygon(tri, "ground", f"{name}:ground"),
-                          Line(c[0] - 4.5 * n[0], c[1] - 4.5 * n[1], c[0] + 4.5 * n[0], c[1] + 4.5 * n[1], "link",
-                               f"{name}:ground line")]
-    strokes = []
-    s = -4.5 + HATCH_STEP / 2
-    while s <= 4.5:
-        q = (c[0] + s * n[0], c[1] + s * n[1])
-        strokes.append((q, (q[0] + HATCH_LEN * u[0] - HATCH_LEN * n[0], q[1] + HATCH_LEN * u[1] - HATCH_LEN * n[1])))
-        s += HATCH_STEP
-    out.append(Strokes(tuple(strokes), "hatch", f"{name}:hatch"))
-    out.append(Circle(p[0], p[1], PIN_R, "pin", f"{name}:pin"))
-    return out
 
 
 def _away_from(p: tuple[float, float], others: list[tuple[float, float]]) -> tuple[float, float]:
@@ -455,7 +435,7 @@ class _Card:
             p = self.paper((gp.x * self.per_m, gp.y * self.per_m))
             away = _away_from(p, [self.at(lk.other(gname)) for lk in m.links
                                   if gname in lk.joints and lk.other(gname) in pos])
-            self.static += _ground_symbol(p, away, f"sweep pivot {gname}")
+            self.static += ground_symbol(p, away, f"sweep pivot {gname}")[0]
             spans = rich(gname, LABEL, pivot_digits=True)
             others = [self.at(lk.other(gname)) for lk in m.links if gname in lk.joints and lk.other(gname) in pos]
             incident = [math.atan2(q[1] - p[1], q[0] - p[0]) for q in others if q != p]

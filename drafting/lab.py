@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import copy
 import csv
-import datetime as _dt
 import io
 import math
 import re
@@ -35,7 +34,7 @@ from constructions.record import Construction, Role, Step, StepKind
 from .answers import KeyItem, key_items
 from .errors import LayoutError
 from .scales import ratio_factor
-from .sheet import ResultRow, Sheet, SheetInfo, compose_sheets
+from .sheet import ResultRow, Sheet, SheetInfo, compose_sheets, sheet_date
 from .study import Study
 from .viewport import SpacePanel, VectorPanel
 
@@ -91,13 +90,6 @@ def item_cells(i: KeyItem, units) -> list[str]:
     return [i.name, i.kind, units.symbol(i.kind), f"{mag:.10g}", direction, sense,
             f"{units.convert(i.kind, i.tolerance):.4g}" if i.kind != "angle" else f"{math.degrees(i.tolerance):.4g}",
             f"{i.direction_tolerance:.3g}" if i.direction_tolerance is not None else "", i.text]
-
-
-def sheet_date(epoch: int | None) -> str:
-    """The title block's date: ``epoch`` (seconds since 1970, UTC) or today."""
-    if epoch is None:
-        return _dt.date.today().isoformat()
-    return _dt.datetime.fromtimestamp(int(epoch), _dt.timezone.utc).date().isoformat()
 
 
 def _info(study: Study, date: str, title: str, number: str, notes: Sequence[str]) -> SheetInfo:

@@ -20,6 +20,7 @@ panels and their scales, :mod:`drafting.pages` packs them, :mod:`drafting.format
 from __future__ import annotations
 
 import datetime as _dt
+import os
 import warnings
 from dataclasses import dataclass, field, fields, replace
 from types import MappingProxyType
@@ -51,8 +52,19 @@ class ResultRow:
     note: str = ""
 
 
-def _today() -> str:
-    return _dt.date.today().isoformat()
+def source_date_epoch() -> int | None:
+    """SOURCE_DATE_EPOCH (the reproducible-builds convention) as whole seconds, or None when unset."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    return int(epoch) if epoch.isdigit() else None
+
+
+def sheet_date(epoch: int | None = None) -> str:
+    """The title block's date: ``epoch`` (seconds since 1970, UTC), else SOURCE_DATE_EPOCH when set (the
+    same scene gives the same sheet whatever the day), else today."""
+    epoch = source_date_epoch() if epoch is None else epoch
+    if epoch is None:
+        return _dt.date.today().isoformat()
+    return _dt.datetime.fromtimestamp(int(epoch), _dt.timezone.utc).date().isoformat()
 
 
 @dataclass(frozen=True)
@@ -69,7 +81,7 @@ class SheetInfo:
     drawing_number: str
     paper: str = "A4"
     orientation: str = "landscape"
-    date: str = field(default_factory=_today)
+    date: str = field(default_factory=sheet_date)
     sheet: tuple[int, int] = (1, 1)
     units: Units = field(default_factory=Units)
     created_by: str = "drafting"

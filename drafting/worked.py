@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import datetime as _dt
 from importlib import resources
 from pathlib import Path
 
@@ -16,10 +15,10 @@ def builtin_example() -> Path:
 
 def sheets_for(study: Study):
     """The sheets of a solved study: one, or as many pages as its diagrams need to stay legible."""
-    from .sheet import ResultRow, SheetInfo, compose_sheets
+    from .sheet import ResultRow, SheetInfo, compose_sheets, sheet_date
     s = study.scene
     info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
-                     date=_dt.date.today().isoformat(), units=s.units, notes=study.notes + study.warnings)
+                     date=sheet_date(), units=s.units, notes=study.notes + study.warnings)
     rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
     return compose_sheets(study.construction, info, rows)
 

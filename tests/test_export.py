@@ -263,6 +263,23 @@ def test_source_date_epoch_makes_the_pdf_reproducible(tmp_path, monkeypatch):
     assert b"/CreationDate (D:20231114221320Z)" in a.read_bytes()
 
 
+def test_source_date_epoch_is_the_sheet_s_date(monkeypatch):
+    """The title block's date follows SOURCE_DATE_EPOCH as the PDF's does: the same scene gives the same
+    sheet whatever the day it is drawn (the gallery was drawn the day before it was checked again)."""
+    from drafting.scene import load_scene
+    from drafting.sheet import sheet_date
+    from drafting.study import Study
+    from drafting.worked import builtin_example, sheets_for
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    assert sheet_date() == "2023-11-14" and sheet_date(0) == "1970-01-01"
+    texts = [c.plain for c in sheets_for(Study(load_scene(builtin_example())).run())[0].commands
+             if hasattr(c, "spans")]
+    assert "2023-11-14" in texts
+    monkeypatch.delenv("SOURCE_DATE_EPOCH")
+    import datetime
+    assert sheet_date() == datetime.date.today().isoformat()
+
+
 # -- several sheets, all-or-nothing, faults ---------------------------------------------------------------
 
 def _pdf_pages(pdf: bytes) -> list[tuple[float, float]]:
