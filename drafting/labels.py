@@ -85,9 +85,6 @@ class _Candidates:
         else:
             self.costs, self.centre = [], None
 
-    def __len__(self) -> int:
-        return len(self.costs)
-
     def _around(self, req, hw, hh, incident, dists, anchor_first) -> None:
         p, r0 = req.anchor, req.r0
         gaps = _gaps(incident)
