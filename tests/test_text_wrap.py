@@ -24,19 +24,25 @@ def test_the_two_greedy_wraps_agree(ws, width, size):
     assert wrap_words(text, width, size) == _wrap_splitting(text, width, size)
 
 
+def assert_height_is_laid_out_height(item, width: float, size: float) -> None:
+    """The height planning reads without commands is the laid-out height bit for bit, and an item too
+    wide to lay out is too wide to measure."""
+    from drafting.layout import TooWide
+    try:
+        placed = item.layout(width, size)
+    except TooWide:
+        with pytest.raises(TooWide):
+            item.height(width, size)
+        return
+    assert item.height(width, size) == placed.height
+
+
 @settings(max_examples=150, deadline=None)
 @given(words, st.floats(20.0, 160.0), st.sampled_from([2.5, 3.0, 3.25, 3.5]), st.sampled_from(["", "3.", "12."]))
 def test_a_paragraph_s_height_without_commands_is_its_laid_out_height(ws, width, size, label):
     """Planning asks only how tall an item is: the word-table path gives the laid-out height exactly."""
-    from drafting.layout import Paragraph, TooWide
-    p = Paragraph(" ".join(ws), label=label, label_chars=label)
-    try:
-        placed = p.layout(width, size)
-    except TooWide:
-        with pytest.raises(TooWide):
-            p.height(width, size)
-        return
-    assert p.height(width, size) == placed.height                 # bit for bit
+    from drafting.layout import Paragraph
+    assert_height_is_laid_out_height(Paragraph(" ".join(ws), label=label, label_chars=label), width, size)
 
 
 cell = st.lists(st.sampled_from(["V_CB", "197.4", "mm/s", "0.0%", "ω_2", "perpendicular to O_1B", "", "—",
@@ -51,13 +57,8 @@ cell = st.lists(st.sampled_from(["V_CB", "197.4", "mm/s", "0.0%", "ω_2", "perpe
 def test_a_table_s_height_without_commands_is_its_laid_out_height(table, width, size):
     """The results table's height row by row from the word table is its laid-out height exactly, wrapped
     last column included."""
-    from drafting.layout import TableItem, TooWide
+    from drafting.layout import TableItem
     header, rows, wrap_last = table
-    t = TableItem(tuple(header), tuple(tuple(r) for r in rows), ("l",) + ("r",) * (len(header) - 1), wrap_last)
-    try:
-        placed = t.layout(width, size)
-    except TooWide:
-        with pytest.raises(TooWide):
-            t.height(width, size)
-        return
-    assert t.height(width, size) == placed.height                 # bit for bit
+    assert_height_is_laid_out_height(
+        TableItem(tuple(header), tuple(tuple(r) for r in rows), ("l",) + ("r",) * (len(header) - 1), wrap_last),
+        width, size)
