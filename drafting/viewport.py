@@ -184,10 +184,10 @@ def _fit_drawing(bb: Rect | None) -> Size:
     return w, h
 
 
-def _render_drawing(d: Drawing, k: float, header: L.Header, rect: Rect, region: str,
+def _render_drawing(fig: Figure, k: float, header: L.Header, rect: Rect, region: str,
                     heading: str) -> tuple[list[Command], Transform]:
     plot = Rect.from_edges(rect.x + 1.0, rect.y + header.height, rect.right - 1.0, rect.bottom - 1.0)
-    bb = d.bbox()
+    d, bb = fig.drawing(k), fig.bbox(k)               # (the extent the packer measured at this scale)
     cmds: list[Command] = list(header.commands)
     if bb is None:
         return cmds, Transform(k, plot.center[0], plot.center[1])
@@ -273,7 +273,7 @@ class SpacePanel(Panel):
         return L.viewport_header(rect, self.heading(rung), self.ppu(rung), self.unit, region=region, name=self.key)
 
     def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
-        return _render_drawing(self.figure.drawing(self.k(rung)), self.k(rung), header, rect, region,
+        return _render_drawing(self.figure, self.k(rung), header, rect, region,
                                self.heading(rung))
 
 
@@ -358,7 +358,7 @@ class VectorPanel(Panel):
         return L.viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region, name=self.key)
 
     def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
-        return _render_drawing(self.figure.drawing(self.k(rung)), self.k(rung), header, rect, region, self.title)
+        return _render_drawing(self.figure, self.k(rung), header, rect, region, self.title)
 
 
 class ChartPanel(Panel):
