@@ -6,12 +6,18 @@ cairosvg reads reliably.  Coordinates are rounded to 3 decimals so the output is
 uses what cairosvg cannot render: arrowheads are filled polygons (no markers), subscripts are tspans
 moved with ``dy`` (no ``baseline-shift``), label backgrounds are white rectangles (no ``paint-order``).
 
+svgwrite holds the document; :func:`_write` writes its tree out in one pass, to the same characters as
+svgwrite's own writer (its ``get_xml`` builds an ElementTree of the whole document first, which took
+half of the SVG's time).  The elements this module makes -- shapes, paths, texts and their tspans --
+are written directly; anything else (the ``<defs>`` with the font's style sheet) by svgwrite itself.
+A test holds every gallery sheet to svgwrite's own output, character for character.
+
 Every text that reaches the document -- titles, drawing numbers, names, labels, file names -- passes
-:func:`drafting.textsafe.xml_safe` here, the one place that writes SVG: the document is made safe once
-it is serialised, so characters XML 1.0 forbids become U+FFFD wherever they came from (ElementTree
-leaves them as they are, so one pass over the whole is the same as one per text), and svgwrite escapes
-``&``, ``<``, ``>`` and quotes.  The document stays inert: plain shapes and text only, no scripts, no
-links or external references, no DOCTYPE or entities.
+:func:`drafting.textsafe.xml_safe` here, the one place that writes SVG: every text and attribute value
+is made safe as it is written, so characters XML 1.0 forbids become U+FFFD wherever they came from,
+and ``&``, ``<``, ``>``, quotes and (in attributes) tabs and line ends are escaped as ElementTree
+escapes them.  The document stays inert: plain shapes and text only, no scripts, no links or external
+references, no DOCTYPE or entities.
 """
 
 from __future__ import annotations
@@ -22,6 +28,7 @@ from xml.etree import ElementTree
 
 import svgwrite
 from svgwrite import path as svg_path, shapes, text as svg_text
+from svgwrite.utils import strlist
 
 from .font_embed import css_for
 from .paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
@@ -130,5 +137,96 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
         if attrs is not None:
             el.attribs.update(attrs(c))
         dwg.add(el)
-    # svgwrite's tostring() encodes to UTF-8 and decodes again; the same text straight as a str
-    return xml_safe(ElementTree.tostring(dwg.get_xml(), encoding="unicode"))
+    return _document(dwg)
+
+
+# ---- the writer: svgwrite's tree as svgwrite (through ElementTree) writes it ------------------------
+
+def _escaped(v: str, *, attribute: bool) -> str:
+    """``v`` made safe (:func:`xml_safe`) and escaped as ElementTree escapes text or an attribute."""
+    if not (v.isascii() and v.isprintable()):       # only then can it hold a forbidden character, or a tab or line end
+        v = xml_safe(v)
+    if "&" in v:
+        v = v.replace("&", "&amp;")
+    if "<" in v:
+        v = v.replace("<", "&lt;")
+    if ">" in v:
+        v = v.replace(">", "&gt;")
+    if attribute:
+        for c, e in _ATTRIBUTE_ESCAPES:
+            if c in v:
+                v = v.replace(c, e)
+    return v
+
+
+_ATTRIBUTE_ESCAPES = (('"', "&quot;"), ("\r", "&#13;"), ("\n", "&#10;"), ("\t", "&#09;"))
+_attribute = functools.lru_cache(maxsize=4096)(functools.partial(_escaped, attribute=True))
+"""An attribute value escaped (most are coordinates and paints the sheet repeats: remembered)."""
+
+
+def _start(tag: str, attribs: dict, out: list[str]) -> None:
+    """``<tag`` and its attributes as svgwrite's ``get_xml`` sets them: sorted by name, None and empty
+    values left out, values as ``str`` (svgwrite's ``value_to_string`` without validation)."""
+    out.append("<" + tag)
+    for k, v in sorted(attribs.items()):
+        if v is not None:
+            v = str(v)
+            if v:
+                out.append(f' {k}="{_attribute(v)}"')
+
+
+def _write(el, out: list[str]) -> None:
+    """One element and what it holds (ElementTree's layout: ``<x a="1" />`` when empty)."""
+    kind = type(el)
+    if kind in _POINTS:
+        el.attribs["points"] = el.points_to_string(el.points)
+    elif kind is svg_path.Path:
+        el.attribs["d"] = strlist(el.commands, " ")
+    elif kind not in _PLAIN:
+        out.append(_by_svgwrite(el))
+        return
+    _start(el.elementname, el.attribs, out)
+    text = str(el.text) if kind in _TEXTS else ""
+    if text or el.elements:
+        out.append(">")
+        if text:
+            out.append(_escaped(text, attribute=False))
+        for sub in el.elements:
+            _write(sub, out)
+        out.append(f"</{el.elementname}>")
+    else:
+        out.append(" />")
+
+
+_POINTS = (shapes.Polyline, shapes.Polygon)
+_TEXTS = (svg_text.Text, svg_text.TSpan)
+_PLAIN = frozenset(_TEXTS + (shapes.Line, shapes.Rect, shapes.Circle))
+"""The element kinds whose ``get_xml`` is svgwrite's plain one (after the points and path data above)."""
+
+
+def _by_svgwrite(el) -> str:
+    """An element svgwrite writes itself (the defs with the font's style sheet)."""
+    return _made_safe(ElementTree.tostring(el.get_xml(), encoding="unicode"))
+
+
+@functools.lru_cache(maxsize=16)
+def _made_safe(xml: str) -> str:
+    """:func:`xml_safe`, remembered: the style sheet embeds the font (~36 kB), the same for many sheets."""
+    return xml_safe(xml)
+
+
+def _document(dwg: svgwrite.Drawing) -> str:
+    """The whole document, as ``ElementTree.tostring(dwg.get_xml(), encoding="unicode")`` writes it
+    (svgwrite's tostring() encodes to UTF-8 and decodes again: the same text)."""
+    held, dwg.elements = dwg.elements, []
+    try:
+        root = dwg.get_xml()                          # the root's attributes as svgwrite sets them
+    finally:
+        dwg.elements = held
+    out: list[str] = []
+    _start(root.tag, dict(root.attrib), out)
+    out.append(">")
+    for el in held:
+        _write(el, out)
+    out.append("</svg>")
+    return "".join(out)
