@@ -108,6 +108,12 @@ class Figure:
             self.draws += 1
         return d
 
+    def least_width(self, k: float) -> float:
+        """The least width :func:`_fit_drawing` can give the drawing at ``k``, known without drawing it:
+        the drawing covers its model points (every drawer draws at the points it names), so its extent
+        is at least theirs at ``k``.  The packer skips a scale that cannot fit on this alone."""
+        return self.extent[0] * k + 2 * VIEW_PAD + 2
+
     def bbox(self, k: float) -> Rect | None:
         """The drawing's extent at ``k`` (measured once per scale: the packer asks many times)."""
         if k not in self._boxes:
@@ -250,7 +256,10 @@ class SpacePanel(Panel):
         return self.k(rung) / self.per_m                      # paper mm per display length unit
 
     def need(self, rung: int, width: float) -> Size | None:
-        w, h = _fit_drawing(self.figure.bbox(self.k(rung)))
+        k = self.k(rung)
+        if self.figure.least_width(k) > width + 1e-9:
+            return None
+        w, h = _fit_drawing(self.figure.bbox(k))
         if w > width + 1e-9:
             return None
         hh = self.cache.header_height(width, self.heading(rung), self.ppu(rung), self.unit)
@@ -329,7 +338,10 @@ class VectorPanel(Panel):
         return len(self.values) - 1
 
     def need(self, rung: int, width: float) -> Size | None:
-        w, h = _fit_drawing(self.figure.bbox(self.k(rung)))
+        k = self.k(rung)
+        if max(self.figure.least_width(k), VECTOR_MIN_W) > width + 1e-9:
+            return None
+        w, h = _fit_drawing(self.figure.bbox(k))
         w = max(w, VECTOR_MIN_W)
         if w > width + 1e-9:
             return None

@@ -337,3 +337,28 @@ def test_the_pruned_pick_of_a_one_page_plan_is_the_exhaustive_one(monkeypatch):
             continue
         sheets_for(Study(load_scene(path)).run())
     assert seen["pruned"] >= 2 and seen["all"] >= 1, seen          # (the default sheet is pruned)
+
+
+def test_a_drawing_covers_its_model_points_so_the_packer_may_skip_a_scale_undrawn(monkeypatch):
+    """The packer rejects a scale whose model points alone are too wide without drawing it
+    (``Figure.least_width``); that changes no decision as long as every drawing is at least that wide:
+    held for every drawing of every gallery scene."""
+    from pathlib import Path
+
+    from drafting import viewport
+    from drafting.scene import load_scene
+    from drafting.study import Study
+    from drafting.worked import sheets_for
+    seen: list = []
+    bbox = viewport.Figure.bbox
+
+    def checked(self, k):
+        got = bbox(self, k)
+        seen.append(k)
+        assert viewport._fit_drawing(got)[0] >= self.least_width(k) - 1e-9
+        return got
+    monkeypatch.setattr(viewport.Figure, "bbox", checked)
+    gallery = Path(__file__).resolve().parent.parent / "gallery"
+    for path in sorted(gallery.glob("*.toml")):
+        sheets_for(Study(load_scene(path)).run())
+    assert len(seen) > 500
