@@ -685,14 +685,27 @@ def _bar_numbers(value: float) -> tuple[int, tuple[str, ...], tuple[Extent, ...]
     return divisions, labels, tuple(measure(plain(t, SCALE_TEXT)) for t in labels)
 
 
+def _bar_rows(top: float, unit: str) -> tuple[float, float, float, float]:
+    """A scale bar's rows under ``top``: the numbers' baseline, the ticks' top, the bar's top, and the
+    bottom of the bar and its unit (the same whatever the bar's length and value)."""
+    num_ext = measure(plain("0", SCALE_TEXT))
+    y_num = top - num_ext.top
+    y_tick0 = y_num + num_ext.bottom + 0.4
+    y_bar = y_tick0 + SCALE_TICK
+    return y_num, y_tick0, y_bar, max(y_bar + SCALE_BAR_HEIGHT,
+                                      measure(plain(unit, SCALE_TEXT)).box(0.0, y_bar + SCALE_BAR_HEIGHT).bottom)
+
+
+def _bar_bottom(top: float, unit: str) -> float:
+    """The bottom of the box :func:`_bar_plan` gives a bar under ``top`` (as that Rect computes it)."""
+    return Rect.from_edges(0.0, top, 1.0, _bar_rows(top, unit)[3]).bottom
+
+
 def _bar_plan(x: float, top: float, length: float, value: float, unit: str) -> _BarPlan:
     divisions, labels, exts = _bar_numbers(value)
     seg = length / divisions
     ts = SCALE_TEXT
-    num_ext = measure(plain("0", ts))
-    y_num = top - num_ext.top
-    y_tick0 = y_num + num_ext.bottom + 0.4
-    y_bar = y_tick0 + SCALE_TICK
+    y_num, y_tick0, y_bar, bottom = _bar_rows(top, unit)
     widths = [e.width for e in exts]
     every = 1
     while every < divisions and any(
@@ -712,8 +725,7 @@ def _bar_plan(x: float, top: float, length: float, value: float, unit: str) -> _
     # the boxes text_at gives the first and the last number
     first = exts[shown[0]].box(x + shown[0] * seg - widths[shown[0]] / 2, y_num)
     last = exts[shown[-1]].box(x + shown[-1] * seg - widths[shown[-1]] / 2, y_num)
-    box = Rect.from_edges(min(x, first.left), top, max(unit_box.right, last.right),
-                          max(y_bar + SCALE_BAR_HEIGHT, unit_box.bottom))
+    box = Rect.from_edges(min(x, first.left), top, max(unit_box.right, last.right), bottom)
     return _BarPlan(divisions, seg, y_num, y_tick0, y_bar, labels, tuple(shown), unit_x, box)
 
 
@@ -808,17 +820,15 @@ def _header_plan(rect: Rect, heading: str, paper_per_unit: float | None, unit: s
     if bar is not None:                     # beside the heading, centred on it
         v, length = bar
         bx = rect.right - 1.5 - unit_w - length
-        probe = _bar_plan(bx, 0.0, length, v, unit).box
-        top = rect.y + HEADER_GAP + max(0.0, (hbox.h - probe.h) / 2)
-        box = _bar_plan(bx, top, length, v, unit).box
-        return _HeaderPlan(head, x0, y0, (bx, top, length, v), max(hbox.bottom, box.bottom) - rect.y + HEADER_GAP)
+        top = rect.y + HEADER_GAP + max(0.0, (hbox.h - _bar_bottom(0.0, unit)) / 2)
+        return _HeaderPlan(head, x0, y0, (bx, top, length, v),
+                           max(hbox.bottom, _bar_bottom(top, unit)) - rect.y + HEADER_GAP)
     bar = choose_bar(paper_per_unit, rect.w - 3.0 - unit_w - overhang, min_len=10.0)
     if bar is None:
         raise LayoutError(f"the {name} viewport is too narrow for its scale bar; use A3")
     v, length = bar                         # under the heading
     top = hbox.bottom + 1.5
-    box = _bar_plan(x0 + 1.5, top, length, v, unit).box
-    return _HeaderPlan(head, x0, y0, (x0 + 1.5, top, length, v), box.bottom - rect.y + HEADER_GAP)
+    return _HeaderPlan(head, x0, y0, (x0 + 1.5, top, length, v), _bar_bottom(top, unit) - rect.y + HEADER_GAP)
 
 
 def viewport_header(rect: Rect, heading: str, paper_per_unit: float | None, unit: str, *, region: str,

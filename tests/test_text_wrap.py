@@ -1,5 +1,5 @@
 """Word wrap: the word-table wrap and the letter-splitting wrap agree wherever nothing is split, and the
-height planning reads off the word table is the laid-out height."""
+height planning reads off the word table is the laid-out height (as is a scale bar's, read off its rows)."""
 
 from __future__ import annotations
 
@@ -62,3 +62,14 @@ def test_a_table_s_height_without_commands_is_its_laid_out_height(table, width, 
     assert_height_is_laid_out_height(
         TableItem(tuple(header), tuple(tuple(r) for r in rows), ("l",) + ("r",) * (len(header) - 1), wrap_last),
         width, size)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(-50.0, 400.0), st.floats(-50.0, 300.0), st.floats(10.0, 150.0),
+       st.sampled_from([0.01, 0.2, 0.5, 1.0, 2.0, 5.0, 25.0, 1000.0, 2e5]),
+       st.sampled_from(["mm", "m/s", "m/s²", "N", "kN·m", "in/s", "rad/s²", ""]))
+def test_a_scale_bar_s_bottom_without_its_plan_is_its_laid_out_bottom(x, top, length, value, unit):
+    """A viewport header is planned with the bar's bottom alone (the same for every length and value):
+    it is the bottom of the bar's full plan, bit for bit."""
+    from drafting.layout import _bar_bottom, _bar_plan
+    assert _bar_bottom(top, unit) == _bar_plan(x, top, length, value, unit).box.bottom
