@@ -111,8 +111,9 @@ class Figure:
     def least_width(self, k: float) -> float:
         """The least width :func:`_fit_drawing` can give the drawing at ``k``, known without drawing it:
         the drawing covers its model points (every drawer draws at the points it names), so its extent
-        is at least theirs at ``k``.  The packer skips a scale that cannot fit on this alone."""
-        return self.extent[0] * k + 2 * VIEW_PAD + 2
+        is at least theirs at ``k``.  The packer skips a scale that cannot fit on this alone (less a
+        micrometre, so a rounding in the last bit cannot turn a fit into a skip)."""
+        return self.extent[0] * k + 2 * VIEW_PAD + 2 - 1e-3
 
     def bbox(self, k: float) -> Rect | None:
         """The drawing's extent at ``k`` (measured once per scale: the packer asks many times)."""
