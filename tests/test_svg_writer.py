@@ -129,5 +129,5 @@ def test_the_writer_writes_what_svgwrite_writes_for_hostile_text_and_every_eleme
     root = ET.fromstring(written[0])
     text = root.find(f"{NS}text")
     assert "\ufffd" in text.text and "\x00" not in text.text and text.get("data-e").startswith("tab\there, cr\rlf\n")
-    assert "data-n" not in text.attrib and "data-x" not in text.attrib        # empty and None: left out, as svgwrite does
+    assert "data-n" not in text.attrib and "data-x" not in text.attrib    # empty and None: left out, as in svgwrite
     assert "\ud800" not in svg and "\U0001f600" in svg
