@@ -111,9 +111,19 @@ class Figure:
     def least_width(self, k: float) -> float:
         """The least width :func:`_fit_drawing` can give the drawing at ``k``, known without drawing it:
         the drawing covers its model points (every drawer draws at the points it names), so its extent
-        is at least theirs at ``k``.  The packer skips a scale that cannot fit on this alone (less a
-        micrometre, so a rounding in the last bit cannot turn a fit into a skip)."""
+        is at least theirs at ``k`` (less a micrometre, so a rounding in the last bit cannot turn a fit
+        into a skip)."""
         return self.extent[0] * k + 2 * VIEW_PAD + 2 - 1e-3
+
+    def fit(self, k: float, width: float, least: float = 0.0) -> Size | None:
+        """The room (width, height) the drawing at ``k`` needs in a panel, at least ``least`` wide; None
+        when that is wider than ``width``.  A scale whose model points alone are too wide is rejected
+        without drawing it (:meth:`least_width`)."""
+        if max(self.least_width(k), least) > width + 1e-9:
+            return None
+        w, h = _fit_drawing(self.bbox(k))
+        w = max(w, least)
+        return None if w > width + 1e-9 else (w, h)
 
     def bbox(self, k: float) -> Rect | None:
         """The drawing's extent at ``k`` (measured once per scale: the packer asks many times)."""
@@ -257,12 +267,10 @@ class SpacePanel(Panel):
         return self.k(rung) / self.per_m                      # paper mm per display length unit
 
     def need(self, rung: int, width: float) -> Size | None:
-        k = self.k(rung)
-        if self.figure.least_width(k) > width + 1e-9:
+        got = self.figure.fit(self.k(rung), width)
+        if got is None:
             return None
-        w, h = _fit_drawing(self.figure.bbox(k))
-        if w > width + 1e-9:
-            return None
+        w, h = got
         hh = self.cache.header_height(width, self.heading(rung), self.ppu(rung), self.unit)
         if hh is None:
             return None
@@ -339,13 +347,10 @@ class VectorPanel(Panel):
         return len(self.values) - 1
 
     def need(self, rung: int, width: float) -> Size | None:
-        k = self.k(rung)
-        if max(self.figure.least_width(k), VECTOR_MIN_W) > width + 1e-9:
+        got = self.figure.fit(self.k(rung), width, VECTOR_MIN_W)
+        if got is None:
             return None
-        w, h = _fit_drawing(self.figure.bbox(k))
-        w = max(w, VECTOR_MIN_W)
-        if w > width + 1e-9:
-            return None
+        w, h = got
         hh = self.cache.header_height(width, self.title, self.k(rung) / self.f, self.unit)
         if hh is None:
             return None
