@@ -164,10 +164,10 @@ def label_pivot(e: Pivot, ctx: DrawContext) -> None:
                                      pivot_digits=True))
 
 
-def _hatched_line(d: Drawing, a: Pt, b: Pt, side: Pt, name: str) -> None:
-    d.add(LINKS, Line(*a, *b, "guide", name))
-    u = unit_vector((b[0] - a[0], b[1] - a[1]))
-    length = _dist(a, b)
+def hatching(a: Pt, u: Pt, length: float, side: Pt, name: str) -> Strokes | None:
+    """The hatching of a line ``length`` mm long from ``a`` along the unit vector ``u``: a stroke every
+    HATCH_STEP, leaning back from the line towards the unit vector ``side``; None when the line is too
+    short for one.  The sweep page hatches its rails with it too."""
     s = HATCH_STEP / 2
     ux, uy, sx, sy = u[0], u[1], side[0] * HATCH_LEN, side[1] * HATCH_LEN
     back_x, back_y = ux * -HATCH_LEN, uy * -HATCH_LEN
@@ -176,8 +176,14 @@ def _hatched_line(d: Drawing, a: Pt, b: Pt, side: Pt, name: str) -> None:
         qx, qy = a[0] + ux * s, a[1] + uy * s                    # shifted(a, u, s)
         strokes.append(((qx, qy), (qx + sx + back_x, qy + sy + back_y)))
         s += HATCH_STEP
-    if strokes:
-        d.add(LINKS, Strokes(tuple(strokes), "hatch", f"{name}:hatch"))
+    return Strokes(tuple(strokes), "hatch", name) if strokes else None
+
+
+def _hatched_line(d: Drawing, a: Pt, b: Pt, side: Pt, name: str) -> None:
+    d.add(LINKS, Line(*a, *b, "guide", name))
+    h = hatching(a, unit_vector((b[0] - a[0], b[1] - a[1])), _dist(a, b), side, f"{name}:hatch")
+    if h is not None:
+        d.add(LINKS, h)
 
 
 @drawer(Guide)

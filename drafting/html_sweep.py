@@ -39,11 +39,11 @@ from constructions.record import Chart, Construction
 from .chart import AxisUnits, chart_with_axes
 from .drawing import PIN_R, DOT_R
 from .errors import LayoutError
-from .drawers import BLOCK_H, BLOCK_L, HATCH_LEN, HATCH_STEP, ground_symbol
+from .drawers import BLOCK_H, BLOCK_L, ground_symbol, hatching
 from .formats import per_si, symbol_of
 from .html_page import markup_html
 from .layout import text_at, viewport_header
-from .paper import Circle, Command, Line, Paper, Polygon, Polyline, Rect, Rectangle, Strokes
+from .paper import Circle, Command, Line, Paper, Polygon, Polyline, Rect, Rectangle
 from .scales import ISO_5455, ratio_factor, ratio_text
 from .sheet import Sheet
 from .style import LABEL, measure, rich
@@ -363,15 +363,9 @@ class _Card:
                 p1 = (g[0] + a0 * d[0] + off[0], g[1] + a0 * d[1] + off[1])
                 self.static.append(Line(*p1, g[0] + a1 * d[0] + off[0], g[1] + a1 * d[1] + off[1], "guide",
                                         f"sweep guide {sl.joint}:rail"))
-                strokes = []
-                t = HATCH_STEP / 2
-                while t < a1 - a0:
-                    q = (p1[0] + t * d[0], p1[1] + t * d[1])
-                    strokes.append((q, (q[0] + HATCH_LEN * (nrm[0] * sn - d[0]),
-                                        q[1] + HATCH_LEN * (nrm[1] * sn - d[1]))))
-                    t += HATCH_STEP
-                if strokes:
-                    self.static.append(Strokes(tuple(strokes), "hatch", f"sweep guide {sl.joint}:hatch"))
+                h = hatching(p1, d, a1 - a0, (nrm[0] * sn, nrm[1] * sn), f"sweep guide {sl.joint}:hatch")
+                if h is not None:
+                    self.static.append(h)
 
     def traces(self) -> list[dict]:
         """The coupler curve of each point fixed to a link (not a joint): the whole path thin, broken at
