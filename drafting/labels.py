@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 
-
 from .drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
 from .errors import LayoutError
 from .paper import Command, Rect, Rectangle, Text

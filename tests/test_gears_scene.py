@@ -43,7 +43,12 @@ def test_the_20_40_pair_scene_agrees_and_reads_its_contact_ratio(capsys):
     assert data["gears"]["1"]["pitch_radius"] == pytest.approx(50.0) and data["gears"]["2"]["base_radius"] == pytest.approx(93.969, abs=1e-3)
     assert data["analyses"] == ["contact geometry"]
     # the contact ratio is a results row of its own: a plain number beside its closed form
-    assert r["C.R."].graphical == pytest.approx(1.6351859635714578, rel=1e-12)
+    # the textbook's contact ratio of a standard pair (module 5, 20 deg, addendum one module), written out
+    m, phi = 0.005, math.radians(20.0)
+    r1, r2 = 20 * m / 2, 40 * m / 2
+    path = (math.sqrt((r1 + m) ** 2 - (r1 * math.cos(phi)) ** 2) + math.sqrt((r2 + m) ** 2 - (r2 * math.cos(phi)) ** 2)
+            - (r1 + r2) * math.sin(phi))
+    assert r["C.R."].graphical == pytest.approx(path / (math.pi * m * math.cos(phi)), rel=1e-12)
     assert abs(r["C.R."].graphical - r["C.R."].analytic) <= 1e-9 * r["C.R."].analytic
     row = next(t for t in study.table() if t[0] == "C.R.")
     assert row[1:3] == ("1.635", "1.635") and not row[3].endswith(" ")
