@@ -84,8 +84,15 @@ def end_worker(signum, frame) -> None:
 
 @contextlib.contextmanager
 def deferred() -> Iterator[None]:
-    """Hold a signal that arrives inside the block until the block ends (then raise Interrupted)."""
+    """Hold a signal that arrives inside the block until the block ends (then raise Interrupted).
+
+    Only the main thread's blocks count: Python runs signal handlers in the main thread alone, so a
+    block in another thread (sheets written by a thread pool in a notebook) neither holds the main
+    thread's signal nor has it raised at its own end."""
     global _defer_depth, _pending
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
     _defer_depth += 1
     try:
         yield

@@ -371,3 +371,33 @@ def test_a_stopped_pool_s_own_thread_has_ended():
     parallel._stop_pool(pool, [])
     assert not manager.is_alive()
     assert time.monotonic() - started < parallel.GRACE_SECONDS + 10
+
+
+def test_a_thread_s_deferred_block_does_not_hold_the_main_thread_s_signal():
+    """Sheets written from a thread pool (a notebook, a pluggable executor) enter faults.deferred in their
+    own threads; a Ctrl-C in the main thread is still raised there at once, and the thread's block ends
+    without an Interrupted that was never its own."""
+    import threading
+    from drafting import faults
+    inside, leave = threading.Event(), threading.Event()
+    ended: list = []
+
+    def write() -> None:
+        try:
+            with faults.deferred():
+                inside.set()
+                leave.wait(10)
+            ended.append("cleanly")
+        except BaseException as e:              # an Interrupted raised in the wrong thread
+            ended.append(e)
+    t = threading.Thread(target=write)
+    with faults.signals_handled():
+        t.start()
+        assert inside.wait(10)
+        try:
+            with pytest.raises(faults.Interrupted):
+                signal.raise_signal(signal.SIGINT)
+        finally:
+            leave.set()
+            t.join(10)
+    assert ended == ["cleanly"]
