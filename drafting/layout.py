@@ -631,10 +631,27 @@ def flow(sections: Sequence[Section] | FlowText, slots: Sequence[tuple[str, Rect
     # everything fits: now make the commands
     for name, x, y, item, w in placements:
         placed = layout_item(item, w, size, cache)      # (set in full already when measured so)
-        region = name.partition("#")[2] or name          # "<page>#<slot>": the page's region is the slot
+        region = slot_region(name)
         moved = [translated(c, x, y, region) for c in placed.commands]
         out.extend(((name, c) for c in moved) if tagged else moved)
     return out
+
+
+# A document's text slot is named "<page>#<region>": the page's number and the region on that page (the
+# commands set in it carry the region).  Made and read only here.
+
+def page_slot(page: int, region: str) -> str:
+    return f"{page}#{region}"
+
+
+def slot_page(name: str) -> str:
+    """The page number of a slot named by :func:`page_slot`, as text."""
+    return name.partition("#")[0]
+
+
+def slot_region(name: str) -> str:
+    """The region of a slot named by :func:`page_slot` (a name without a page is its own region)."""
+    return name.partition("#")[2] or name
 
 
 TEXT_SIZES = (3.5, 3.25, 3.0, 2.75, 2.5)

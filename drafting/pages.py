@@ -484,12 +484,12 @@ class Document:
 
     def empty_columns(self) -> int:
         """Pages whose text slots the text never reached (room left blank)."""
-        used = {slot.split("#")[0] for slot in self.text}
+        used = {L.slot_page(slot) for slot in self.text}
         return sum(1 for i, pg in enumerate(self.pages) if pg.text_slots and str(i) not in used)
 
 
 def slots_of(pages: Sequence[PagePlan]) -> list[tuple[str, Rect]]:
-    return [(f"{i}#{name}", r) for i, pg in enumerate(pages) for name, r in pg.text_slots
+    return [(L.page_slot(i, name), r) for i, pg in enumerate(pages) for name, r in pg.text_slots
             if r.w > 20 and r.h > 10]
 
 
@@ -638,7 +638,7 @@ def _document(paper, groups, mode, sections, tb_height, cache) -> Document | Non
                 pages, got = cand, g2
                 break
     # a diagram page whose text slots stayed empty draws its diagrams over the whole page instead
-    used = {slot.split("#")[0] for slot in got[0]}
+    used = {L.slot_page(slot) for slot in got[0]}
     for i, g in enumerate(groups):
         if str(i) not in used and pages[i].text_slots:
             alt = diagram_page(paper, g, tb_height)

@@ -361,12 +361,12 @@ def _reflow(sections, doc: Document, cache) -> tuple[list, float]:
 def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, text_cmds, size: float,
                  tb_fields, number: tuple[int, int] | None) -> Sheet:
     frame = pp.frame
-    prefix = f"{index}#"
+    page = str(index)
     mine = []
     used = set()
     for slot, c in text_cmds:
-        if slot.startswith(prefix):
-            used.add(slot[len(prefix):])
+        if L.slot_page(slot) == page:
+            used.add(L.slot_region(slot))
             mine.append(c)                       # (its region is the slot's, without the page)
     n_of_m = number or (index + 1, m)
     in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
