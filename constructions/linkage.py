@@ -18,6 +18,7 @@ joints included).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Mapping
@@ -162,6 +163,12 @@ class Mechanism:
     def tolerance(self) -> Tolerance:
         return Tolerance(self.size)
 
+    @functools.cached_property
+    def plan(self) -> tuple[PlanStep, ...]:
+        """The assembly plan (:func:`assembly_plan`), found once: the mechanism is immutable and a study
+        asks for its plan several times."""
+        return _assembly_plan(self)
+
 
 def mobility(m: Mechanism) -> tuple[int, str]:
     """Degrees of freedom by the Gruebler/Kutzbach count, F = 3 (n - 1) - 2 j1 - j2, and its working.
@@ -274,12 +281,8 @@ def coincident_name(joint: str, link: int) -> str:
 def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
     """Order in which the joints are constructed; raises DegenerateInput when the linkage is not 1-DoF or
     is not a crank followed by dyads (it says which joint cannot be reached and why).  Found once per
-    mechanism (it is immutable; a study asks for its plan several times)."""
-    got = m.__dict__.get("_assembly_plan")
-    if got is None:
-        got = _assembly_plan(m)
-        object.__setattr__(m, "_assembly_plan", got)
-    return got
+    mechanism (:attr:`Mechanism.plan`)."""
+    return m.plan
 
 
 def _assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
