@@ -32,12 +32,12 @@ check its ranges).
 from __future__ import annotations
 
 import copy
-import math
 from dataclasses import dataclass
 from decimal import Decimal
 from pathlib import Path
 from typing import Any
 
+from .scales import nice_floor
 from .units import UnitError, from_si, split_value, to_si, unit_symbol
 
 INPUT_KEYS = {"crank_angle": ("angle", "angle"), "omega": ("omega", "angular velocity"),
@@ -192,7 +192,7 @@ def _range(path, full: str, where: tuple, kind: str, spec, units, key_name: str)
     hi_u = Decimal(f"{from_si(hi, kind, unit):.12g}")
     span = hi_u - lo_u
     if step_raw is None:
-        step = _nice_step(span)
+        step = Decimal(f"{nice_floor(float(span) / STEPS_AT_LEAST):.12g}")   # the largest 1-2-5 x 10^n
     else:
         st = si(step_raw, "step")
         if not st > 0:
@@ -209,18 +209,6 @@ def _range(path, full: str, where: tuple, kind: str, spec, units, key_name: str)
 
 def _shown(si: float, kind: str, unit: str) -> str:
     return f"{from_si(si, kind, unit):g} {unit_symbol(unit)}"
-
-
-def _nice_step(span: Decimal) -> Decimal:
-    """The largest 1-2-5 x 10^n at most span / STEPS_AT_LEAST."""
-    target = float(span) / STEPS_AT_LEAST
-    e = math.floor(math.log10(target))
-    best = Decimal(1).scaleb(e)
-    for m in (1, 2, 5, 10):
-        v = Decimal(m).scaleb(e)
-        if float(v) <= target * (1 + 1e-12):
-            best = v
-    return best
 
 
 # ---- variants ----------------------------------------------------------------------------------------
