@@ -13,7 +13,11 @@ gives: a scene that gives ``tip_speed`` varies ``tip_speed``, not ``omega``; ``a
 gives a torque instead), ``length.<joints>``
 (the link between two joints, named as the notes name it: ``length.O1B``, ``length.BC``) and
 ``load.<name>`` (the force of a ``[[load]]``, its magnitude: the range must stay positive; its angle
-stays as given).  A range is
+stays as given), ``mass.<link>`` (the mass of the one ``[[mass]]`` on that link: its moment of inertia follows
+when the scene gives a shape and stays as given when it gives ``inertia``; given ``inertia_about`` a
+point, I_G = I_O - m d^2 follows the mass, and a draw that makes it negative is drawn again) and
+``pivot.<name>.x`` / ``pivot.<name>.y`` (a coordinate of a fixed pivot in ``[frame]``: the frame link of a
+four-bar).  A range is
 ``[from, to]`` or ``{ from, to, step }``; plain numbers are in the scene's ``[units]``.  A variant takes
 each value on the grid ``from + k step`` (k = 0, 1, ...; never beyond ``to``), so the numbers on a sheet
 are round; without a step, the step is the largest of 1, 2, 5 x 10^n units of ``from`` that divides the
@@ -54,7 +58,8 @@ class Range:
     ``low + k step`` (k = 0 .. count - 1) in ``unit``."""
 
     key: str
-    where: tuple            # ("input", "angle"), ("link", index in [[link]], "length") or ("load", index, "force")
+    where: tuple            # ("input", "angle"), ("link", index in [[link]], "length"), ("load", index, "force"),
+                            # ("mass", index in [[mass]], "mass") or ("frame", pivot name, 0 for x | 1 for y)
     kind: str
     unit: str
     low: Decimal
@@ -97,7 +102,7 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
     if not vary:
         raise _fail(path, "vary", "is empty; give at least one range, e.g. crank_angle = [\"30 deg\", \"150 deg\"]")
     out: list[Range] = []
-    choices = ", ".join(list(INPUT_KEYS) + ["length.<joints>", "load.<name>"])
+    choices = ", ".join(list(INPUT_KEYS) + ["length.<joints>", "load.<name>", "mass.<link>", "pivot.<name>.x|y"])
     inp = data.get("input") if isinstance(data.get("input"), dict) else {}
     for name, spec in vary.items():
         if name == "length":
@@ -118,6 +123,29 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
                     raise _fail(path, f"vary.load.{load}", "varies the load's magnitude: the range must stay above "
                                                          "0 (turn its angle by 180 deg for the other sense)")
                 out.append(r)
+            continue
+        if name == "mass":
+            if not isinstance(spec, dict) or not spec:
+                raise _fail(path, "vary.mass", "must name links by number, e.g. mass.3 = [\"0.8 kg\", \"1.6 kg\"]")
+            for link, sub in spec.items():
+                idx = _mass_index(data, path, link)
+                r = _range(path, f"vary.mass.{link}", ("mass", idx, "mass"), "mass", sub, units, f"mass.{link}")
+                if not r.low > 0:
+                    raise _fail(path, f"vary.mass.{link}", "the range must stay above 0 kg")
+                out.append(r)
+            continue
+        if name == "pivot":
+            if not isinstance(spec, dict) or not spec:
+                raise _fail(path, "vary.pivot", "must name fixed pivots, e.g. pivot.O4.x = [\"180 mm\", \"220 mm\"]")
+            for pivot, sub in spec.items():
+                _pivot_check(data, path, pivot)
+                if not isinstance(sub, dict) or not sub or set(sub) - {"x", "y"}:
+                    bad = sorted(set(sub) - {"x", "y"}) if isinstance(sub, dict) else []
+                    raise _fail(path, f"vary.pivot.{pivot}" + (f".{bad[0]}" if bad else ""),
+                                "varies a coordinate of the pivot: pivot.<name>.x or pivot.<name>.y")
+                for axis, sub2 in sub.items():
+                    out.append(_range(path, f"vary.pivot.{pivot}.{axis}", ("frame", pivot, "xy".index(axis)),
+                                      "length", sub2, units, f"pivot.{pivot}.{axis}"))
             continue
         if name not in INPUT_KEYS:
             raise _fail(path, f"vary.{name}", f"unknown key; choose from {choices}")
@@ -156,6 +184,25 @@ def _load_index(data, path, name: str) -> int:
             return i
     known = f"; the loads are {', '.join(names)}" if names else "; the scene has no [[load]]"
     raise _fail(path, f"vary.load.{name}", f"no load is named {name!r}{known}")
+
+
+def _mass_index(data, path, link: str) -> int:
+    masses = data.get("mass") if isinstance(data.get("mass"), list) else []
+    on = [i for i, t in enumerate(masses) if isinstance(t, dict) and str(t.get("link")) == link]
+    if len(on) == 1:
+        return on[0]
+    if on:
+        raise _fail(path, f"vary.mass.{link}", f"link {link} carries {len(on)} masses; vary a link that carries one")
+    known = sorted({str(t.get("link")) for t in masses if isinstance(t, dict) and "link" in t})
+    carried = f"; the links with a mass are {', '.join(known)}" if known else "; the scene has no [[mass]]"
+    raise _fail(path, f"vary.mass.{link}", f"no [[mass]] is on link {link!r}{carried}")
+
+
+def _pivot_check(data, path, name: str) -> None:
+    frame = data.get("frame") if isinstance(data.get("frame"), dict) else {}
+    if not isinstance(frame.get(name), list) or len(frame[name]) != 2:
+        known = f"; the fixed pivots are {', '.join(frame)}" if frame else ""
+        raise _fail(path, f"vary.pivot.{name}", f"no fixed pivot is named {name!r} in [frame]{known}")
 
 
 def _range(path, full: str, where: tuple, kind: str, spec, units, key_name: str) -> Range:
@@ -226,7 +273,7 @@ def variant_data(data: dict[str, Any], ranges, ks, index: int) -> dict[str, Any]
     for r, k in zip(ranges, ks):
         if r.where[0] == "input":
             out.setdefault("input", {})[r.where[1]] = r.text(k)
-        else:                                   # ("link", i, "length") or ("load", i, "force")
+        else:             # ("link", i, "length"), ("load", i, "force"), ("mass", i, "mass") or ("frame", pivot, 0 | 1)
             out[r.where[0]][r.where[1]][r.where[2]] = r.text(k)
     drawing = out.setdefault("drawing", {})
     if isinstance(drawing, dict):

@@ -231,3 +231,52 @@ def test_a_load_s_force_is_varied_by_name(tmp_path):
 def test_a_bad_load_range_is_one_sentence(vary, key, words):
     with pytest.raises(SceneError, match=rf"lab.toml: {key}: .*{words}"):
         parse_scene(STATIC.read_text() + "\n" + vary, "lab.toml")
+
+
+DALEMBERT = Path(__file__).resolve().parents[1] / "gallery" / "four-bar-dalembert.toml"   # m3 = 1.2 kg, O4 = [200, 0]
+
+
+@pytest.mark.parametrize("vary, key, where, written", [
+    ('mass.3 = { from = "0.5 kg", to = "2 kg", step = "0.1 kg" }', "mass.3", ("mass", 1, "mass"),
+     lambda v: ('mass = "1.2 kg"', f'mass = "{v} kg"')),
+    ('pivot.O4.x = { from = "180 mm", to = "220 mm", step = "5 mm" }', "pivot.O4.x", ("frame", "O4", 0),
+     lambda v: ("O4 = [200, 0]", f'O4 = ["{v} mm", 0]')),
+])
+def test_a_mass_and_a_pivot_are_varied_where_the_scene_gives_them(tmp_path, vary, key, where, written):
+    """``mass.<link>`` and ``pivot.<name>.x|y`` write the drawn value where the scene gives it: the
+    variant's study equals the study of the scene file with that value written in by hand (every
+    result, to the last bit), and the value differs from the scene's own in some draw."""
+    import tomllib
+    from drafting.batch import variant_study
+    from drafting.study import Study
+    from drafting.vary import read_vary
+    base_text = DALEMBERT.read_text()
+    text = base_text + f"\n[vary]\n{vary}\n"
+    data = tomllib.loads(text)
+    (r,) = read_vary(data, "p.toml", parse_scene(text, tmp_path / "p.toml").units)
+    assert (r.key, r.where) == (key, where)
+    seen = set()
+    for index in range(1, 5):
+        study, ((header, shown),) = variant_study(data, tmp_path / "p.toml", seed=11, index=index)
+        assert header.startswith(key)
+        old, new = written(shown)
+        assert base_text.count(old) == 1
+        by_hand = Study(parse_scene(base_text.replace(old, new), tmp_path / "q.toml")).run()
+        assert {q: c.graphical for q, c in study.results.items()} == {q: c.graphical for q, c in by_hand.results.items()}
+        seen.add(shown)
+    assert len(seen) > 1
+
+
+@pytest.mark.parametrize("vary, key, words", [
+    ('mass.5 = ["1 kg", "2 kg"]', "vary.mass.5", "no \\[\\[mass\\]\\] is on link '5'; the links with a mass are 2, 3, 4"),
+    ('mass.3 = ["0 kg", "2 kg"]', "vary.mass.3", "the range must stay above 0 kg"),
+    ('mass.3 = ["1 mm", "2 mm"]', "vary.mass.3", "is not a value of mass"),
+    ('mass = ["1 kg", "2 kg"]', "vary.mass", "must name links by number"),
+    ('pivot.O9.x = ["1 mm", "2 mm"]', "vary.pivot.O9", "no fixed pivot is named 'O9' in \\[frame\\]; the fixed pivots are O2, O4"),
+    ('pivot.O4.z = ["1 mm", "2 mm"]', "vary.pivot.O4.z", "pivot.<name>.x or pivot.<name>.y"),
+    ('pivot.O4 = ["1 mm", "2 mm"]', "vary.pivot.O4", "pivot.<name>.x or pivot.<name>.y"),
+    ('pivot.O4.y = ["1 kg", "2 kg"]', "vary.pivot.O4.y", "is not a value of length"),
+])
+def test_a_bad_mass_or_pivot_range_is_one_sentence(vary, key, words):
+    with pytest.raises(SceneError, match=rf"lab.toml: {key}: .*{words}"):
+        parse_scene(DALEMBERT.read_text() + "\n[vary]\n" + vary + "\n", "lab.toml")
