@@ -558,11 +558,12 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     panels = list(panels)
     cache = {} if cache is None else cache
     sections = L.FlowText(sections)             # flowed once per plan tried: made ready once
+    plans = _GroupPlans(paper, tb_height)
     # one page
     def one_page(plan: PagePlan) -> Document | None:
         got = _flow(sections, [plan], cache)
         return None if got is None else Document([plan], got[0], got[1])
-    picked = _pick(text_page_options(paper, panels, tb_height), one_page)
+    picked = _pick(plans.with_text(panels), one_page)
     if picked is not None:
         return picked
     _check_blocks(paper, panels, sections, tb_height, cache)
@@ -581,7 +582,7 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
             for mode in ("first", "all", "last", "none"):
                 if mode != "first" and m == 1 and mode != "none":
                     continue
-                doc = _document(paper, groups, mode, sections, tb_height, cache)
+                doc = _document(plans, groups, mode, sections, cache)
                 if doc is None:
                     continue
                 # fewest pages; then the drawings kept together on as few pages as hold them (a reader
@@ -597,7 +598,30 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     return best[1]
 
 
-def _document(paper, groups, mode, sections, tb_height, cache) -> Document | None:
+class _GroupPlans:
+    """The page plans of a group of panels, with text (:func:`text_page_options`) and without
+    (:func:`diagram_page`), each made once per document: the several-page search meets the same group
+    in many cuts and text modes.  (Plans are not changed once made.)"""
+
+    def __init__(self, paper: Paper, tb_height: TbHeight) -> None:
+        self.paper, self.tb_height = paper, tb_height
+        self._memo: dict[tuple, object] = {}
+
+    def _get(self, make, panels: Sequence[Panel]):
+        key = (make, tuple(map(id, panels)))
+        if key not in self._memo:
+            self._memo[key] = make(self.paper, panels, self.tb_height)
+        return self._memo[key]
+
+    def with_text(self, panels: Sequence[Panel]) -> list[PagePlan]:
+        return self._get(text_page_options, panels)
+
+    def diagrams(self, panels: Sequence[Panel]) -> PagePlan | None:
+        return self._get(diagram_page, panels)
+
+
+def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | None:
+    paper, tb_height = plans.paper, plans.tb_height
     m = len(groups)
     pages: list[PagePlan] = []
     with_text = [mode == "all" or (mode == "first" and i == 0) or (mode == "last" and i == m - 1)
@@ -605,9 +629,9 @@ def _document(paper, groups, mode, sections, tb_height, cache) -> Document | Non
     choices: list[list[PagePlan]] = []
     for g, wt in zip(groups, with_text):
         if wt:
-            opts = text_page_options(paper, g, tb_height)
+            opts = plans.with_text(g)
         else:
-            p = diagram_page(paper, g, tb_height)
+            p = plans.diagrams(g)
             opts = [p] if p is not None else []
         if not opts:
             return None
@@ -641,7 +665,7 @@ def _document(paper, groups, mode, sections, tb_height, cache) -> Document | Non
     used = {L.slot_page(slot) for slot in got[0]}
     for i, g in enumerate(groups):
         if str(i) not in used and pages[i].text_slots:
-            alt = diagram_page(paper, g, tb_height)
+            alt = plans.diagrams(g)
             if alt is not None and alt.quality() >= pages[i].quality():
                 cand = pages[:i] + [alt] + pages[i + 1:]
                 g2 = _flow(sections, cand, cache)
