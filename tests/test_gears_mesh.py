@@ -268,3 +268,30 @@ def test_interference_is_dimensioned_on_the_drawing(n1, n2, start, end):
         dim, st = dims["interference at B"]
         assert (dim.start, dim.end) == (geo.points["T2"], geo.points["B"])
         assert st.value("i2").value == pytest.approx(dim.start.distance_to(dim.end), rel=1e-9)
+
+
+def test_an_undercut_pinion_is_drawn_and_said_as_generated():
+    """A pinion with fewer teeth than its rack cutter allows is drawn as the cutter leaves it (its teeth
+    the generated outline: on the involute down to R_X, then the fillet), in the space diagram and in
+    the involute diagram, and the teeth step says so with R_X; a pinion of 20 teeth is drawn and said
+    as before."""
+    from constructions.gears.generation import cut_flank, fewest_uncut
+    s = ToothSystem(0.010, math.radians(30.0))
+    pair = Pair(Gear(7, s), None, rack_system=s)
+    a = mesh_analysis(pair)
+    g = pair.pinion
+    cut = cut_flank(g)
+    step = next(st for st in a.construction.steps if "A few teeth" in st.words)
+    assert "undercut" in step.words and step.value("rx1").value == cut.involute_from
+    assert step.value("nmin1").value == fewest_uncut(g) and 7 < fewest_uncut(g)
+    assert a.geometry.points["O1"] == Vec(0, 0)
+    for name in ("teeth 1", "terms teeth"):                  # both drawn about O1 = the origin
+        radii = sorted(q.norm() for q in a.construction.entity(name).points)
+        assert radii[0] == pytest.approx(g.dedendum_radius, abs=1e-12)
+        # every fillet radius but the crossing's appears twice per tooth (both flanks)
+        fillet_radii = [r for r, _ in cut.fillet[1:]]
+        assert all(sum(1 for q in radii if abs(q - r) <= 1e-12) >= 2 for r in fillet_radii)
+    s20 = ToothSystem(0.005, math.radians(20.0))
+    plain = mesh_analysis(Pair(Gear(20, s20), Gear(40, s20)))
+    step = next(st for st in plain.construction.steps if "A few teeth" in st.words)
+    assert "undercut" not in step.words and not step.values

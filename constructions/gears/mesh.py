@@ -22,6 +22,7 @@ from ..geometry import Circle as GCircle, Contact, Line, Tolerance, Vec, interse
 from ..quantities import Measured
 from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dimension, Note, Pivot, Point, Role,
                       Segment, StepKind, Value)
+from .generation import CutFlank, cut_flank, fewest_uncut, is_undercut, straight_depth, tip_round
 from .tooth import Gear, ToothSystem, inv, ring_outline, roll_angle, unwinding_points
 
 SPACE = Diagram("overall")
@@ -399,9 +400,12 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     if cr < 1.0:
         warnings.append(f"Contact ratio {cr:.3f} is below 1: a pair of teeth leaves contact before the next pair "
                         f"engages (the drive is not continuous).")
-    # 9 teeth
+    # 9 teeth, as a rack cutter leaves them where it undercuts them
+    cut1 = undercut_flank(p1)
+    cut2 = undercut_flank(g2) if not pair.rack and not pair.internal else None
     ents = [Curve("teeth 1", Role.GIVEN, DETAIL, tuple(p1.teeth_outline(O1, p1.half_tooth_angle - teeth_drawn * 2 * math.pi
-                                                                          / p1.teeth, 2 * teeth_drawn + 1, flank_points)))]
+                                                                          / p1.teeth, 2 * teeth_drawn + 1, flank_points,
+                                                                          cut1)))]
     if pair.rack:
         ents.append(Curve("rack teeth", Role.GIVEN, DETAIL, tuple(_rack_outline(pair, teeth_drawn + 1))))
     else:
@@ -412,12 +416,33 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
                 flank_points))))
         else:
             ents.append(Curve("teeth 2", Role.GIVEN, DETAIL, tuple(g2.teeth_outline(
-                O2, math.pi + g2.half_tooth_angle - teeth_drawn * 2 * math.pi / g2.teeth, 2 * teeth_drawn + 1, flank_points))))
-    rec = rec.then(f"A few teeth of each, their involute flanks computed exactly ({flank_points} points a flank): a pair "
-                   f"in contact at P, the flanks square to the line of action there.", *ents)
+                O2, math.pi + g2.half_tooth_angle - teeth_drawn * 2 * math.pi / g2.teeth, 2 * teeth_drawn + 1, flank_points,
+                cut2))))
+    words = (f"A few teeth of each, their involute flanks computed exactly ({flank_points} points a flank): a pair "
+             f"in contact at P, the flanks square to the line of action there.")
+    vals = {}
+    for number, gear, cut in ((1, p1, cut1), (2, g2, cut2)):
+        if cut is None:
+            continue
+        vals[f"rx{number}"] = _v("length", cut.involute_from)
+        vals[f"rho{number}"] = _v("length", tip_round(gear))
+        vals[f"hs{number}"] = _v("length", straight_depth(gear))
+        vals[f"nmin{number}"] = _v("number", fewest_uncut(gear))
+        words += (f" Cut by generation, the {gear.teeth} teeth of gear {number} are undercut: the cutter (the system's "
+                  f"basic rack, its tip rounded to $rho{number}) runs its straight flank $hs{number} deep, past the "
+                  f"interference point, as it does for fewer than 2 depth / (m sin\u00b2 \u03c6) = $nmin{number} "
+                  f"teeth; its tip round cuts the involute away below R = $rx{number}, as drawn.")
+    rec = rec.then(words, *ents, values=vals)
     if thread:
         rec = rec + _thread_construction(p1, phi_w)
     return MeshAnalysis(pair, rec, geo, tuple(warnings))
+
+
+def undercut_flank(gear: Gear) -> CutFlank | None:
+    """The flank a rack cutter leaves on ``gear`` when it undercuts it; None when it does not (the
+    teeth are then drawn with the involute down to the base circle and radial below it, as the notes
+    draw them)."""
+    return cut_flank(gear) if is_undercut(gear) else None
 
 
 def _rack_outline(pair: Pair, count: int) -> list[Vec]:
@@ -477,7 +502,8 @@ def _thread_construction(g: Gear, phi: float) -> Construction:
     u = Vec.polar(1.0, space)
     lab = lambda r, a: O + Vec.polar(r, a)  # noqa: E731
     ends = a1 + 0.02
-    terms = [Curve("terms teeth", Role.GIVEN, THREAD, tuple(g.teeth_outline(O, centre, 2, FLANK_POINTS))),
+    teeth = g.teeth_outline(O, centre, 2, FLANK_POINTS, undercut_flank(g))
+    terms = [Curve("terms teeth", Role.GIVEN, THREAD, tuple(teeth)),
              Dimension("terms t", Role.DIMENSION, THREAD, lab(rp, centre - psi), lab(rp, centre + psi), -0.45 * g.system.module,
                        "t"),
              Dimension("terms p", Role.DIMENSION, THREAD, lab(rp, centre - psi), lab(rp, centre - psi + pitch_angle),

@@ -138,10 +138,12 @@ class Gear:
         alpha = math.acos(min(1.0, self.base_radius / radius))
         return 2.0 * radius * (self.half_tooth_angle + inv(self.system.pressure_angle) - inv(alpha))
 
-    def tooth_outline(self, centre: Vec, centre_angle: float, flank_points: int) -> list[Vec]:
+    def tooth_outline(self, centre: Vec, centre_angle: float, flank_points: int, cut=None) -> list[Vec]:
         """One tooth's outline from its root on one side (dedendum circle) over the tip to the other root,
         counter-clockwise about the gear: the radial root line where the dedendum circle lies inside the
-        base circle, the involute flanks computed exactly at ``flank_points`` roll angles, the tip arc."""
+        base circle, the involute flanks computed exactly at ``flank_points`` roll angles, the tip arc.
+        With ``cut`` (:class:`constructions.gears.generation.CutFlank`) the flanks are as a rack cutter
+        leaves them: the involute down to ``cut.involute_from``, then the fillet to the root circle."""
         rb, ra, rd = self.base_radius, self.addendum_radius, self.dedendum_radius
         u_tip = roll_angle(rb, ra)
         # where the tip would be pointed the flanks meet before the addendum circle: stop them there
@@ -155,13 +157,15 @@ class Gear:
                     hi = mid
             u_tip = lo
         t0 = self.flank_start(centre_angle, -1)
-        r_start = max(rb, rd)
+        r_start = max(rb, rd) if cut is None else cut.involute_from
         u_start = roll_angle(rb, r_start)
         us = [u_start + (u_tip - u_start) * i / (flank_points - 1) for i in range(flank_points)]
         right = [involute_point(rb, t0, u, centre, +1) for u in us]
         left = [involute_point(rb, self.flank_start(centre_angle, +1), u, centre, -1) for u in us]
         out: list[Vec] = []
-        if rd < rb:
+        if cut is not None:          # the fillet from the root up to the involute (its last point is on it)
+            out += [centre + Vec.polar(r, centre_angle - a) for r, a in reversed(cut.fillet[1:])]
+        elif rd < rb:
             out.append(centre + Vec.polar(rd, t0))
         out += right
         a0, a1 = (right[-1] - centre).angle(), (left[-1] - centre).angle()
@@ -170,17 +174,20 @@ class Gear:
             for i in range(1, 6):
                 out.append(centre + Vec.polar(right[-1].distance_to(centre), a0 + span * i / 6))
         out += reversed(left)
-        if rd < rb:
+        if cut is not None:
+            out += [centre + Vec.polar(r, centre_angle + a) for r, a in cut.fillet[1:]]
+        elif rd < rb:
             out.append(centre + Vec.polar(rd, self.flank_start(centre_angle, +1)))
         return out
 
-    def teeth_outline(self, centre: Vec, first_centre_angle: float, count: int, flank_points: int) -> list[Vec]:
+    def teeth_outline(self, centre: Vec, first_centre_angle: float, count: int, flank_points: int,
+                      cut=None) -> list[Vec]:
         """``count`` consecutive teeth, counter-clockwise from the one centred at ``first_centre_angle``,
-        joined by arcs of the dedendum circle."""
+        joined by arcs of the dedendum circle (``cut`` as for :meth:`tooth_outline`)."""
         pts: list[Vec] = []
         step = 2 * math.pi / self.teeth
         for k in range(count):
-            tooth = self.tooth_outline(centre, first_centre_angle + k * step, flank_points)
+            tooth = self.tooth_outline(centre, first_centre_angle + k * step, flank_points, cut)
             if pts:
                 a0, a1 = (pts[-1] - centre).angle(), (tooth[0] - centre).angle()
                 span = (a1 - a0) % (2 * math.pi)
