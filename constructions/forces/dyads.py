@@ -1,9 +1,10 @@
 """The force polygons of each kind of dyad, drawn as the notes draw them, and of the crank.
 
 - RRR (:func:`rrr`): a link with no load between its two pins is a two-force member; with one two-force
-  link the other is a three-force member solved by concurrency, else each link's outer pin force is split
-  into a tangential part (moments about the middle joint) and a part along the link, and the polygon
-  closes on the two directions along the links.
+  link the other is a three-force member solved by concurrency (where its triangle closes at an angle of
+  more than WARN_SINE: not when the load's line lies far off, a small force with a large couple), else
+  each link's outer pin force is split into a tangential part (moments about the middle joint) and a part
+  along the link, and the polygon closes on the two directions along the links.
 - RRP (:func:`rrp`): a block on a guide (or a pin in a slot) and the link pinned to it: the guide pushes
   square to the guide (tilted by the friction angle against the sliding), the polygon closes along the
   link and the guide's reaction.
@@ -60,7 +61,10 @@ def rrr(d: Drawing, step: TwoCircles) -> None:
             at, r = line
             conc = meet(at, r, pos[j], along)
             third = conc - pos[l_outer]
-            if third.norm() > 1e-12 * d.m.size:
+            # and the triangle must close at an angle: a small load with a large couple (a flywheel's
+            # inertia) has its line far away, where the third force runs nearly along the two-force line
+            # -- a drafter takes moments about the joint then, as below
+            if third.norm() > 1e-12 * d.m.size and abs(third.unit().cross(along.unit())) > WARN_SINE:
                 fb = Diagram("free-body", body_label(d.m, loaded))
                 d.steps.append((
                     f"Link {loaded} is a three-force member: the line of its load and the line of the force "
