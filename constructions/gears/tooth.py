@@ -16,9 +16,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from ..errors import DegenerateInput
 from ..geometry import Vec
+
+if TYPE_CHECKING:
+    from .generation import CutFlank
 
 INCH = 0.0254
 
@@ -138,7 +142,8 @@ class Gear:
         alpha = math.acos(min(1.0, self.base_radius / radius))
         return 2.0 * radius * (self.half_tooth_angle + inv(self.system.pressure_angle) - inv(alpha))
 
-    def tooth_outline(self, centre: Vec, centre_angle: float, flank_points: int, cut=None) -> list[Vec]:
+    def tooth_outline(self, centre: Vec, centre_angle: float, flank_points: int,
+                      cut: CutFlank | None = None) -> list[Vec]:
         """One tooth's outline from its root on one side (dedendum circle) over the tip to the other root,
         counter-clockwise about the gear: the radial root line where the dedendum circle lies inside the
         base circle, the involute flanks computed exactly at ``flank_points`` roll angles, the tip arc.
@@ -181,7 +186,7 @@ class Gear:
         return out
 
     def teeth_outline(self, centre: Vec, first_centre_angle: float, count: int, flank_points: int,
-                      cut=None) -> list[Vec]:
+                      cut: CutFlank | None = None) -> list[Vec]:
         """``count`` consecutive teeth, counter-clockwise from the one centred at ``first_centre_angle``,
         joined by arcs of the dedendum circle (``cut`` as for :meth:`tooth_outline`)."""
         pts: list[Vec] = []
