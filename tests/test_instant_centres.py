@@ -56,7 +56,7 @@ def agree(m, theta, omega):
         pts = [ic.centres[tuple(sorted(q))] for q in ((a, b), (a, c), (b, c))]
         h = np.array([[p.point[0] / size, p.point[1] / size, p.point[2]] for p in pts])
         h /= np.linalg.norm(h, axis=1)[:, None]
-        assert abs(np.linalg.det(h)) < 1e-7, (a, b, c)          # Kennedy: collinear
+        assert abs(np.dot(h[0], np.cross(h[1], h[2]))) < 1e-7, (a, b, c)   # Kennedy: collinear (det h)
     return ic
 
 
