@@ -105,33 +105,16 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
     choices = ", ".join(list(INPUT_KEYS) + ["length.<joints>", "load.<name>", "mass.<link>", "pivot.<name>.x|y"])
     inp = data.get("input") if isinstance(data.get("input"), dict) else {}
     for name, spec in vary.items():
-        if name == "length":
+        if name in _NAMED:
+            find, table, field, qkind, positive, example = _NAMED[name]
             if not isinstance(spec, dict) or not spec:
-                raise _fail(path, "vary.length", "must name links by their joints, e.g. length.BC = [\"90 mm\", \"110 mm\"]")
-            for joints, sub in spec.items():
-                idx = _link_index(data, path, joints)
-                out.append(_range(path, f"vary.length.{joints}", ("link", idx, "length"), "length", sub, units,
-                                  f"length.{joints}"))
-            continue
-        if name == "load":
-            if not isinstance(spec, dict) or not spec:
-                raise _fail(path, "vary.load", "must name loads, e.g. load.P = [\"30 N\", \"50 N\"]")
-            for load, sub in spec.items():
-                idx = _load_index(data, path, load)
-                r = _range(path, f"vary.load.{load}", ("load", idx, "force"), "force", sub, units, f"load.{load}")
-                if not r.low > 0:
-                    raise _fail(path, f"vary.load.{load}", "varies the load's magnitude: the range must stay above "
-                                                         "0 (turn its angle by 180 deg for the other sense)")
-                out.append(r)
-            continue
-        if name == "mass":
-            if not isinstance(spec, dict) or not spec:
-                raise _fail(path, "vary.mass", "must name links by number, e.g. mass.3 = [\"0.8 kg\", \"1.6 kg\"]")
-            for link, sub in spec.items():
-                idx = _mass_index(data, path, link)
-                r = _range(path, f"vary.mass.{link}", ("mass", idx, "mass"), "mass", sub, units, f"mass.{link}")
-                if not r.low > 0:
-                    raise _fail(path, f"vary.mass.{link}", "the range must stay above 0 kg")
+                raise _fail(path, f"vary.{name}", example)
+            for sub_name, sub in spec.items():
+                full = f"vary.{name}.{sub_name}"
+                r = _range(path, full, (table, find(data, path, sub_name), field), qkind, sub, units,
+                           f"{name}.{sub_name}")
+                if positive and not r.low > 0:
+                    raise _fail(path, full, positive)
                 out.append(r)
             continue
         if name == "pivot":
@@ -196,6 +179,20 @@ def _mass_index(data, path, link: str) -> int:
     known = sorted({str(t.get("link")) for t in masses if isinstance(t, dict) and "link" in t})
     carried = f"; the links with a mass are {', '.join(known)}" if known else "; the scene has no [[mass]]"
     raise _fail(path, f"vary.mass.{link}", f"no [[mass]] is on link {link!r}{carried}")
+
+
+#: The [vary] keys that name a row of a scene table: key -> (finds the row's index, the table, the row's
+#: field, the quantity, what to say when the range does not stay above 0 (None: it may), the example a
+#: key without a name is told)
+_NAMED = {
+    "length": (_link_index, "link", "length", "length", None,
+               "must name links by their joints, e.g. length.BC = [\"90 mm\", \"110 mm\"]"),
+    "load": (_load_index, "load", "force", "force",
+             "varies the load's magnitude: the range must stay above 0 (turn its angle by 180 deg for the other sense)",
+             "must name loads, e.g. load.P = [\"30 N\", \"50 N\"]"),
+    "mass": (_mass_index, "mass", "mass", "mass", "the range must stay above 0 kg",
+             "must name links by number, e.g. mass.3 = [\"0.8 kg\", \"1.6 kg\"]"),
+}
 
 
 def _pivot_check(data, path, name: str) -> None:
