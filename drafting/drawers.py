@@ -84,8 +84,8 @@ def diagram_facts(entities: Sequence[Entity], T: Transform):
 
 def draw_pins(ctx: DrawContext) -> None:
     """The pins of the joints found while drawing the links (after phase 1)."""
-    for p in ctx.pins:
-        ctx.d.add(PINS, Circle(*p, PIN_R, "pin", "pin"))
+    for p, owner in zip(ctx.pins, ctx.pin_owners):
+        ctx.d.add(PINS, Circle(*p, PIN_R, "pin", f"{owner}:pin"))
         ctx.d.hard.append(Rect(p[0] - PIN_R, p[1] - PIN_R, 2 * PIN_R, 2 * PIN_R))
 
 
@@ -95,8 +95,8 @@ def draw_pins(ctx: DrawContext) -> None:
 def draw_bar(e: Bar, ctx: DrawContext) -> None:
     a, b = ctx.T(e.start), ctx.T(e.end)
     ctx.d.add(LINKS, Line(*a, *b, line_style_for(e.role), e.name))
-    ctx.add_pin(a)
-    ctx.add_pin(b)
+    ctx.add_pin(a, e.name)
+    ctx.add_pin(b, e.name)
 
 
 @drawer(Plate, phase=0, points=lambda e: e.vertices)
@@ -115,7 +115,7 @@ def draw_block(e: Block, ctx: DrawContext) -> None:
                     for su, sn in ((1, 1), (-1, 1), (-1, -1), (1, -1)))
     ctx.d.add(BLOCKS, Polygon(corners, "block", e.name))
     ctx.d.hard.append(Rect.bounding(corners))
-    ctx.add_pin(c)
+    ctx.add_pin(c, e.name)
 
 
 @drawer(Pivot, points=lambda e: (e.at,))
@@ -399,12 +399,12 @@ def draw_dimension(e: Dimension, ctx: DrawContext) -> None:
     length = _dist(da, db)
     words = ctx.text(e, e.text)
     if length >= 2 * ARROW_LEN + 1.0:
-        h1, _ = arrowhead(db, da, f"{e.name} start")
-        h2, _ = arrowhead(da, db, f"{e.name} end")
+        h1, _ = arrowhead(db, da, f"{e.name}:start")
+        h2, _ = arrowhead(da, db, f"{e.name}:end")
         ctx.d.add(TRIALS, Line(*da, *db, "dimension", e.name))
     else:                                  # too short: arrows outside, pointing in
-        h1, _ = arrowhead(shifted(da, u, -ARROW_LEN - 2.0), da, f"{e.name} start")
-        h2, _ = arrowhead(shifted(db, u, ARROW_LEN + 2.0), db, f"{e.name} end")
+        h1, _ = arrowhead(shifted(da, u, -ARROW_LEN - 2.0), da, f"{e.name}:start")
+        h2, _ = arrowhead(shifted(db, u, ARROW_LEN + 2.0), db, f"{e.name}:end")
         ctx.d.add(TRIALS, Line(*shifted(da, u, -ARROW_LEN - 2.0), *shifted(db, u, ARROW_LEN + 2.0),
                                "dimension", e.name))
     for h in (h1, h2):

@@ -269,10 +269,14 @@ class DrawContext:
     pins: list[Pt] = field(default_factory=list)
     text_fn: TextFn = _plain_text
     notes: list[Rect] = field(default_factory=list)      # the grounds of the notes set so far
+    pin_owners: list[str] = field(default_factory=list)  # the entity that first met each pin
 
-    def add_pin(self, p: Pt) -> None:
+    def add_pin(self, p: Pt, owner: str) -> None:
+        """A pin at ``p``, the joint of entity ``owner`` (drawn with it: its command is "<owner>:pin");
+        one pin where several links meet, and none on a fixed pivot."""
         if all(_dist(p, q) > 0.01 for q in self.pins + self.pivots):
             self.pins.append(p)
+            self.pin_owners.append(owner)
 
     def text(self, entity: Entity, words: str) -> str:
         """``words`` of ``entity`` with the values of its step written in."""

@@ -70,3 +70,24 @@ def test_in_headless_chromium_it_steps_forward_and_back(tmp_path):
     shot = tmp_path / "shot.png"
     _chromium(f"{page.as_uri()}#step=15", f"--screenshot={shot}", "--window-size=1600,1000")
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
+
+
+#: What a sheet draws for itself, not for a construction entity: always shown on the page.
+FURNITURE = ("heading ", "note ", "results ", "scale bar ", "title", "step ", "equation", "separator", "frame")
+
+
+@pytest.mark.parametrize("name", ["gear-rack-interference", "notes-acceleration-example-1", "four-bar-dalembert",
+                                  "instant-centres-six-bar", "notes-roller-cam", "quick-return-slotted-lever",
+                                  "gear-train-three-gears"])
+def test_every_drawn_command_shows_and_hides_with_its_entity(name):
+    """Every command the diagrams draw belongs to the entity it draws, so the page shows it with that
+    entity's step and hides it before: a dimension's arrowheads (they were left on the page, floating,
+    before their step), the pin at a joint (with the first link that meets it)."""
+    from drafting.scene import load_scene
+    from drafting.study import Study
+    from drafting.worked import sheets_for
+    study = Study(load_scene(GALLERY / f"{name}.toml")).run()
+    names = {e.name for st in study.construction.steps for e in st.entities}
+    loose = sorted({c.name for sh in sheets_for(study) for c in sh.commands
+                    if entity_of(c.name, names) is None and not c.name.startswith(FURNITURE)})
+    assert loose == []
