@@ -418,21 +418,17 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
             ents.append(Curve("teeth 2", Role.GIVEN, DETAIL, tuple(g2.teeth_outline(
                 O2, math.pi + g2.half_tooth_angle - teeth_drawn * 2 * math.pi / g2.teeth, 2 * teeth_drawn + 1, flank_points,
                 cut2))))
-    words = (f"A few teeth of each, their involute flanks computed exactly ({flank_points} points a flank): a pair "
-             f"in contact at P, the flanks square to the line of action there.")
-    vals = {}
+    rec = rec.then(f"A few teeth of each, their involute flanks computed exactly ({flank_points} points a flank): a "
+                   f"pair in contact at P, the flanks square to the line of action there.", *ents)
     for number, gear, cut in ((1, p1, cut1), (2, g2, cut2)):
         if cut is None:
             continue
-        vals[f"rx{number}"] = _v("length", cut.involute_from)
-        vals[f"rho{number}"] = _v("length", tip_round(gear))
-        vals[f"hs{number}"] = _v("length", straight_depth(gear))
-        vals[f"nmin{number}"] = _v("number", fewest_uncut(gear))
-        words += (f" Cut by generation, the {gear.teeth} teeth of gear {number} are undercut: the cutter (the system's "
-                  f"basic rack, its tip rounded to $rho{number}) runs its straight flank $hs{number} deep, past the "
-                  f"interference point, as it does for fewer than 2 depth / (m sin\u00b2 \u03c6) = $nmin{number} "
-                  f"teeth; its tip round cuts the involute away below R = $rx{number}, as drawn.")
-    rec = rec.then(words, *ents, values=vals)
+        vals = {"rx": _v("length", cut.involute_from), "rho": _v("length", tip_round(gear)),
+                "hs": _v("length", straight_depth(gear)), "nmin": _v("number", fewest_uncut(gear))}
+        rec = rec.then(f"Cut by generation, the {gear.teeth} teeth of gear {number} are undercut: the cutter (the system's "
+                       f"basic rack, its tip rounded to $rho) runs its straight flank $hs deep, past the interference "
+                       f"point, as it does for fewer than 2 depth / (m sin\u00b2 \u03c6) = $nmin teeth; its tip round "
+                       f"cuts the involute away below R = $rx, as drawn.", values=vals)
     if thread:
         rec = rec + _thread_construction(p1, phi_w)
     return MeshAnalysis(pair, rec, geo, tuple(warnings))
