@@ -71,6 +71,7 @@ class Comparison:
     analytic: Vec | float | None
     reference: float
     tolerance: float = AGREEMENT
+    diagram: str = ""                    # the diagram it is read off (Measured.diagram)
 
     @property
     def difference(self) -> float | None:
@@ -105,7 +106,8 @@ def compare(measured: Sequence[Measured], analytic: Mapping[str, Vec | float] | 
     out = []
     for q in measured:
         a = analytic.get(q.name) if analytic is not None else None
-        out.append(Comparison(q.name, q.kind, q.value, a, ref[q.kind] or 1.0, agreement(q.kind, q.condition)))
+        out.append(Comparison(q.name, q.kind, q.value, a, ref[q.kind] or 1.0, agreement(q.kind, q.condition),
+                              q.diagram))
     return out
 
 

@@ -24,12 +24,15 @@ class Measured:
 
     ``condition`` is the sine of the worst trial-line crossing the value depends on (1 when it was
     drawn directly); near 0 the value is sensitive to the drawing and the check widens its tolerance.
+    ``diagram`` is the key of the diagram it is read off (:attr:`~constructions.record.Diagram.key`), where
+    a construction draws several of its kind at different scales; "" when it need not say.
     """
 
     name: str
     kind: str
     value: Vec | float
     condition: float = 1.0
+    diagram: str = ""
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:

@@ -6,8 +6,9 @@ Drawing accuracy (the tolerance of a pencil, not of the engine's 1e-9 check):
 - A line is drawn to half a millimetre and read off to half a millimetre, so a length measured on paper
   is good to :data:`PAPER_MM` = 1 mm.  A magnitude read off a diagram (a velocity, acceleration or force
   off its polygon, a length off the space diagram) is accepted within 1 mm at the scale the worked sheet
-  draws that diagram at (1 mm = 10 mm/s: within 10 mm/s).  With several diagrams of one kind (force
-  polygons of several links) the coarsest scale counts.
+  draws that diagram at (1 mm = 10 mm/s: within 10 mm/s).  A value that names the diagram it is read off
+  (a gear pair's path of contact, off the detail at the pitch point) is marked at that diagram's scale;
+  otherwise, with several diagrams of its kind (force polygons of several links), the coarsest counts.
 - A direction is accepted within the angle 1 mm subtends at the tip of the vector as drawn, and never
   less than :data:`DIRECTION_MIN_DEG` (1 degree, a protractor's reading).
 - A value worked out from a reading (an angular velocity is V_CB / BC, a torque a force times an arm) is
@@ -109,7 +110,8 @@ def tolerances(study, comparisons, scales: Mapping[str, object]) -> dict[str, tu
         if v is None:
             continue
         mag = _magnitude(v)
-        upm = coarsest.get(DIAGRAM_KIND.get(c.kind, ""))
+        own = scales.get(c.diagram) if c.diagram else None
+        upm = own.units_per_mm if own is not None else coarsest.get(DIAGRAM_KIND.get(c.kind, ""))
         if c.kind == "angle":
             tol = math.radians(ANGLE_TOL_DEG)
         elif upm is not None:

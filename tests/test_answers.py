@@ -137,3 +137,18 @@ def test_a_ratio_is_answered_as_a_plain_number(tmp_path, capsys):
     code, f = check(tmp_path, "C.R.,1.63 mm\n", scene=GEARS)
     err = capsys.readouterr().err
     assert code == 2 and "a ratio is a plain number, e.g. 1.6, without a unit ('mm' given)" in err
+
+
+def test_a_gear_pair_s_lengths_are_marked_at_the_diagram_they_are_read_off(tmp_path, capsys):
+    """The 20/40 pair draws three diagrams of lengths: the detail at the pitch point 1:1 (AP, PB, AB,
+    PT_1, PT_2 are read off it), the overall diagram 1:5 and the involute diagram 2:1 (the pitch, so the
+    base pitch p cos phi).  Each length is marked at its own diagram's scale -- AP within 1 mm, p_b within
+    0.5 mm -- not at the overall diagram's 5 mm, which accepted an AP 3 mm off (a quarter of it)."""
+    code, _ = check(tmp_path, "AP,13.5 mm\np_b,15.2 mm\n", scene=GEARS)            # 0.85 mm and 0.44 mm off
+    got = verdicts(capsys.readouterr().out)
+    assert (got["AP"], got["p_b"]) == ("right", "right")
+    code, _ = check(tmp_path, "AP,15.6 mm\np_b,15.3 mm\n", scene=GEARS)            # 2.95 mm and 0.54 mm off
+    out = capsys.readouterr().out
+    got = verdicts(out)
+    assert (got["AP"], got["p_b"]) == ("wrong", "wrong")
+    assert "expected 12.65 mm (± 1.000 mm)" in out and "expected 14.76 mm (± 0.5000 mm)" in out

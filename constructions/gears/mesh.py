@@ -119,11 +119,14 @@ class MeshAnalysis:
 
     def measured(self) -> list[Measured]:
         g = self.geometry
-        out = [Measured("AP", "length", g.approach), Measured("PB", "length", g.recess),
-               Measured("AB", "length", g.path), Measured("p_b", "length", g.base_pitch),
-               Measured("PT_1", "length", g.limits[0])]
+        # the path of contact is read off the detail at the pitch point, the base pitch (p cos phi) off
+        # the involute diagram's pitch -- not off the overall diagram, drawn smaller
+        on, pitch = DETAIL.key, THREAD.key
+        out = [Measured("AP", "length", g.approach, diagram=on), Measured("PB", "length", g.recess, diagram=on),
+               Measured("AB", "length", g.path, diagram=on), Measured("p_b", "length", g.base_pitch, diagram=pitch),
+               Measured("PT_1", "length", g.limits[0], diagram=on)]
         if math.isfinite(g.limits[1]):
-            out.append(Measured("PT_2", "length", g.limits[1]))
+            out.append(Measured("PT_2", "length", g.limits[1], diagram=on))
         out.append(Measured("phi'", "angle", g.working_pressure_angle))
         out.append(Measured("C.R.", "ratio", g.contact_ratio))      # AB / p_b, the notes' C.R.
         return out
