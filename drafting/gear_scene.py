@@ -4,7 +4,9 @@ A pair in mesh (``kind = "gear pair"``)::
 
     [teeth]     module = "5 mm" | diametral_pitch = 8 (teeth per inch of pitch diameter);
                 pressure_angle = "20 deg"; system = "full depth" | "stub" (or addendum = 1.0, dedendum = 1.25,
-                the constants in modules)
+                the constants in modules); cutter_tip = 0.25 (the tip radius of the rack cutter that
+                generates the teeth, in modules; default c / (1 - sin phi), 0.38 at 20 deg full depth:
+                it decides the fillet and, below the undercut limit, the undercut drawn)
     [pair]      pinion = 20 (teeth of gear 1, the driver); gear = 40 (teeth of gear 2) or "rack";
                 centre_distance = "152 mm" (optional; for a rack, from O1 to the rack's pitch line);
                 internal = true (gear 2 is an internal gear, a ring, about the pinion)
@@ -30,6 +32,7 @@ import math
 from typing import Any
 
 from constructions.errors import ConstructionError, DegenerateInput
+from constructions.gears.generation import largest_tip_round
 from constructions.gears.mesh import Pair
 from constructions.gears.tooth import INCH, SYSTEMS, Gear, ToothSystem
 from constructions.gears.train_drawing import Case
@@ -40,7 +43,7 @@ from .unitset import Units
 
 PAIR_SECTIONS = frozenset({"teeth", "pair"})
 TRAIN_SECTIONS = frozenset({"teeth", "gear", "mesh", "train", "case"})
-TEETH_KEYS = {"module", "diametral_pitch", "pressure_angle", "system", "addendum", "dedendum"}
+TEETH_KEYS = {"module", "diametral_pitch", "pressure_angle", "system", "addendum", "dedendum", "cutter_tip"}
 MAX_TEETH = 10000
 MAX_GEARS = 30
 
@@ -87,7 +90,16 @@ def read_teeth(r, units: Units) -> ToothSystem:
     if ka > kd:
         raise r.fail("teeth.dedendum", f"{kd:g} is less than the addendum constant {ka:g}: the tip of one gear would "
                                        f"hit the root of the other (the clearance is their difference)")
-    return ToothSystem(m, phi, ka, kd)
+    s = ToothSystem(m, phi, ka, kd)
+    if "cutter_tip" in t:
+        v = t["cutter_tip"]
+        most = largest_tip_round(s) / m
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not (0.0 <= v <= most + 1e-12):
+            raise r.fail("teeth.cutter_tip", f"{r.shown(v)} must be the tip radius of the rack cutter in modules, from "
+                                             f"0 to {most:.3g} (where its tooth's two tip rounds meet at this "
+                                             f"pressure angle and dedendum; ISO 53 at 20 deg: 0.38)")
+        s = ToothSystem(m, phi, ka, kd, float(v))
+    return s
 
 
 def read_gear_pair(r, units: Units) -> dict:

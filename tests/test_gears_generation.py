@@ -174,3 +174,28 @@ def test_the_tooth_outline_with_its_fillets():
     radial = involute_angle(g, g.base_radius)
     assert radial == pytest.approx(max(abs(p.angle()) for p in plain if p.norm() <= g.base_radius + 1e-12), abs=1e-12)
     assert min(abs(p.angle()) for p in cut if p.norm() < f.involute_from - 1e-9) < radial - 1e-3
+
+
+def test_a_stated_cutter_tip_sets_the_straight_flank_and_the_undercut_limit():
+    """A sharp-cornered cutter (cutter_tip 0) runs its straight flank the whole dedendum deep: at 20 deg full
+    depth it undercuts up to 2 x 1.25 / sin^2 phi = 21.4 teeth, so a 20-tooth gear it cuts is undercut --
+    and what rolling that cutter leaves is still the flank computed (within 2e-3 m)."""
+    sharp = Gear(20, ToothSystem(M, math.radians(20.0), 1.0, 1.25, 0.0))
+    assert tip_round(sharp) == 0.0 and straight_depth(sharp) == pytest.approx(1.25 * M, rel=1e-15)
+    assert fewest_uncut(sharp) == pytest.approx(2.5 / math.sin(math.radians(20.0)) ** 2, rel=1e-12)
+    assert cut_flank(sharp).undercut and not cut_flank(gear(20, 20.0)).undercut
+    for n in range(15, 25):
+        g = Gear(n, ToothSystem(M, math.radians(20.0), 1.0, 1.25, 0.0))
+        assert cut_flank(g).undercut == (n < fewest_uncut(g)), n
+    f = cut_flank(sharp)
+    rest = _generated_by_rolling(sharp, 2401)
+    centre = math.pi / 2 - math.pi / 20
+    for radius in np.linspace(sharp.base_radius, f.involute_from, 5)[1:-1]:
+        lo, hi = 0.0, math.pi / 20
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            inside = rest.contains(Point(radius * math.cos(centre + mid), radius * math.sin(centre + mid)))
+            lo, hi = (mid, hi) if inside else (lo, mid)
+        fillet = sorted(f.fillet)
+        ours = float(np.interp(radius, [q[0] for q in fillet], [q[1] for q in fillet]))
+        assert abs(lo - ours) * radius <= 2e-3 * M and ours < involute_angle(sharp, radius)   # undercut

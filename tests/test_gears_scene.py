@@ -106,6 +106,10 @@ BAD = [
     (TRAIN_TEXT, 'output = "3"', 'output = "1"', "case[1].output", "driven or the held"),
     (TRAIN_TEXT, 'driven = "1"', 'driven = "1"\nheld = "2"', "case[1].held", "one degree of freedom"),
     (TRAIN_TEXT, "teeth = 60", "teeth = 60\nspeed = 3", "gear[3].speed", "unknown key"),
+    (PAIR_TEXT, 'system = "full depth"', 'system = "full depth"\ncutter_tip = 0.6', "teeth.cutter_tip",
+     "from 0 to 0.472 (where its tooth's two tip rounds meet"),
+    (PAIR_TEXT, 'system = "full depth"', 'system = "full depth"\ncutter_tip = "1 mm"', "teeth.cutter_tip",
+     "tip radius of the rack cutter in modules"),
 ]
 
 
@@ -155,3 +159,19 @@ def test_a_reverted_train_whose_stages_differ_is_named(tmp_path, capsys):
     assert main(["check", str(p)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and ": train.coaxial: " in err and "must be coaxial" in err, err
+
+
+def test_a_stated_cutter_tip_is_the_one_the_teeth_are_generated_with(tmp_path):
+    """[teeth] cutter_tip states the rack cutter's tip radius in modules: a sharp-cornered cutter (0)
+    undercuts the 20-tooth pinion of the 20/40 pair, which the basic rack's 0.38 m round does not; the
+    sheet says so with that radius."""
+    from drafting.scene import load_scene
+    from drafting.study import Study
+    assert not any("undercut" in st.words for st in Study(load_scene(PAIR)).run().construction.steps)
+    p = tmp_path / "sharp.toml"
+    p.write_text(PAIR_TEXT.replace('system = "full depth"', 'system = "full depth"\ncutter_tip = 0', 1))
+    study = Study(load_scene(p)).run()
+    step = next(st for st in study.construction.steps if "undercut" in st.words)
+    assert "gear 1" in step.words and step.value("rho").value == 0.0
+    assert step.value("hs").value == pytest.approx(1.25 * 0.005, rel=1e-12)
+    assert not any("gear 2" in st.words and "undercut" in st.words for st in study.construction.steps)

@@ -4,7 +4,8 @@ The cutter is the basic rack of the gear's tooth system (ISO 53's form): straigh
 angle phi, a tooth p/2 thick on its pitch line, a tip line at the gear's dedendum d below the pitch line
 (it cuts the root circle r - d), and a tip round of radius rho = c / (1 - sin phi) tangent to the flank
 and to the tip line, c = d - a being the clearance -- so the straight flank ends at the working depth a
-(for 20 deg full depth: rho = 0.38 m, ISO 53 profile A).  Rolled on the pitch circle (a rack point X,
+(for 20 deg full depth: rho = 0.38 m, ISO 53 profile A).  A system may state its cutter's tip radius
+instead (``ToothSystem.cutter_tip``): the straight flank then ends at d - rho (1 - sin phi).  Rolled on the pitch circle (a rack point X,
 in the frame where the pitch point is (0, r), is at Rot(-theta)(X - (r theta, 0)) in the gear's frame),
 the straight flank generates the involute, and the tip round the fillet: at each theta the round cuts
 at the point whose normal passes through the pitch point (the law of gearing), the far end of the
@@ -26,7 +27,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .tooth import Gear, inv
+from .tooth import Gear, ToothSystem, inv
 
 FILLET_POINTS = 24
 """Points of the fillet drawn (as many as an involute flank: FLANK_POINTS)."""
@@ -44,14 +45,21 @@ class CutFlank:
     fillet: tuple[tuple[float, float], ...]
 
 
-def tip_round(gear: Gear) -> float:
-    """The cutter's tip radius rho = c / (1 - sin phi), no larger than the rack tooth's tip allows (the
-    two rounds of a tooth meet on its centre line); 0 without clearance."""
-    s = gear.system
+def largest_tip_round(s: ToothSystem) -> float:
+    """The largest tip radius the cutter's tooth holds: its two rounds meet on its centre line."""
     phi = s.pressure_angle
+    return max(0.0, (s.circular_pitch / 4.0 * math.cos(phi) - s.d * math.sin(phi)) / (1.0 - math.sin(phi)))
+
+
+def tip_round(gear: Gear) -> float:
+    """The cutter's tip radius: the system's ``cutter_tip`` (in modules) when it states one, else
+    rho = c / (1 - sin phi), no larger than the rack tooth's tip allows (:func:`largest_tip_round`); 0
+    without clearance."""
+    s = gear.system
+    if s.cutter_tip is not None:
+        return s.cutter_tip * s.module
     c = max(0.0, s.d - s.a)
-    room = (s.circular_pitch / 4.0 * math.cos(phi) - s.d * math.sin(phi)) / (1.0 - math.sin(phi))
-    return max(0.0, min(c / (1.0 - math.sin(phi)), room))
+    return min(c / (1.0 - math.sin(s.pressure_angle)), largest_tip_round(s))
 
 
 def straight_depth(gear: Gear) -> float:

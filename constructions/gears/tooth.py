@@ -50,12 +50,15 @@ def roll_angle(rb: float, radius: float) -> float:
 
 @dataclass(frozen=True)
 class ToothSystem:
-    """Module (m, SI), pressure angle (rad) and addendum and dedendum constants (in modules)."""
+    """Module (m, SI), pressure angle (rad) and addendum and dedendum constants (in modules), and the tip
+    radius of the rack cutter that generates the teeth, in modules (None: the basic rack's,
+    :func:`constructions.gears.generation.tip_round`)."""
 
     module: float
     pressure_angle: float
     addendum: float = 1.0
     dedendum: float = 1.25
+    cutter_tip: float | None = None
 
     def __post_init__(self) -> None:
         if not (self.module > 0 and math.isfinite(self.module)):
@@ -64,6 +67,8 @@ class ToothSystem:
             raise DegenerateInput("the pressure angle must lie between 0 and 45 deg")
         if not (self.addendum > 0.0 and self.dedendum > 0.0):
             raise DegenerateInput("the addendum and dedendum constants must be positive")
+        if self.cutter_tip is not None and not (0.0 <= self.cutter_tip < math.inf):
+            raise DegenerateInput("the cutter's tip radius must be a length of 0 or more")
 
     @classmethod
     def from_diametral_pitch(cls, pitch_per_inch: float, pressure_angle: float, addendum: float = 1.0,
