@@ -31,12 +31,13 @@ from .formats import DiagramScale, per_si, symbol_of
 from .labels import place_labels
 from .paper import Command, Rect, Rectangle
 from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
+from .style import LABEL
 from .transform import Transform
 
 VIEW_PAD = 7.0          # room around a drawing for its labels
 VECTOR_MIN_W = 90.0     # a vector panel is at least this wide (heading and scale bar side by side)
 SPACE_MIN_MM = 25.0     # the space diagram's larger side is at least this long at a legible scale
-LABEL_GAP_MM = 2.5      # ... and its labelled points this far apart on paper,
+LABEL_GAP_MM = LABEL    # ... and its labelled points a letter height apart on paper (a label each),
 LABEL_ROOM_MAX_MM = 150.0   # as long as that keeps its larger side within this
 POLYGON_MIN_MM = 40.0   # a polygon drawn at a scale the sheet chooses is at least this large
 POLYGON_AIM_MM = 50.0   # ... and aims at a known vector at least this long
