@@ -552,9 +552,15 @@ def _compositions(n: int, m: int):
 
 
 def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: TbHeight, *,
-                  cache: dict | None = None, what: str = "") -> Document:
+                  cache: dict | None = None, what: str = "", prune: bool = True) -> Document:
     """The pages for ``panels`` and the text ``sections``: one page when it can be set legibly, else
-    the fewest pages (see the module docstring)."""
+    the fewest pages (see the module docstring).
+
+    Of the several-page documents, one is flowed only when it could beat the best so far: its key
+    can be bounded before its text is set -- at least as many pages as groups (one more when no
+    diagram page takes text), its drawings no larger than its groups' largest plans draw them,
+    lettering no larger than the largest size.  (``prune=False`` flows every one: the test's
+    reference.)"""
     panels = list(panels)
     cache = {} if cache is None else cache
     sections = L.FlowText(sections)             # flowed once per plan tried: made ready once
@@ -582,6 +588,10 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
             for mode in ("first", "all", "last", "none"):
                 if mode != "first" and m == 1 and mode != "none":
                     continue
+                if prune and best is not None:
+                    bound = _best_possible(plans, groups, mode, bool(sections))
+                    if bound is None or bound <= best[0]:
+                        continue
                 doc = _document(plans, groups, mode, sections, cache)
                 if doc is None:
                     continue
@@ -620,12 +630,43 @@ class _GroupPlans:
         return self._get(diagram_page, panels)
 
 
+def _text_on(groups, mode: str) -> list[bool]:
+    m = len(groups)
+    return [mode == "all" or (mode == "first" and i == 0) or (mode == "last" and i == m - 1) for i in range(m)]
+
+
+def _best_possible(plans: _GroupPlans, groups, mode: str, has_text: bool) -> tuple | None:
+    """No document of ``groups`` in ``mode`` has a key above this (see plan_document), or None when
+    some group has no plan at all.  Each of its components bounds the real key's: the pages (at least
+    the groups, one more for text when no group takes it), every group a drawing page, comfortable
+    lettering, each panel at the largest scale any plan of its group draws it, the largest lettering,
+    no empty column."""
+    m = len(groups)
+    scales: dict[int, float] = {}
+    sizes: dict[int, float] = {}
+    for g, wt in zip(groups, _text_on(groups, mode)):
+        options = [p for p in ((plans.with_text(g) if wt else []) + [plans.diagrams(g)]) if p is not None]
+        if wt and not plans.with_text(g):
+            return None
+        if not options:
+            return None
+        for plan in options:
+            for p, r, _ in plan.panels:
+                if isinstance(p, SpacePanel):
+                    scales[id(p)] = max(scales.get(id(p), 0.0), ratio_factor(p.ratios[r]))
+                elif isinstance(p, VectorPanel) and p.free:
+                    sizes[id(p)] = max(sizes.get(id(p), 0.0), max(p.drawn_size(r)))
+    space, free = sum(scales.values()), list(sizes.values())
+    best_quality = (round(min(space, 1.0), 9), round(min(free), 6) if free else 0.0, round(space, 9),
+                    round(sum(free), 6))
+    pages = m + (1 if has_text and mode == "none" else 0)
+    return (-pages, -m, True) + best_quality + (L.TEXT_SIZES[0], 0, -m)
+
+
 def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | None:
     paper, tb_height = plans.paper, plans.tb_height
-    m = len(groups)
     pages: list[PagePlan] = []
-    with_text = [mode == "all" or (mode == "first" and i == 0) or (mode == "last" and i == m - 1)
-                 for i in range(m)]
+    with_text = _text_on(groups, mode)
     choices: list[list[PagePlan]] = []
     for g, wt in zip(groups, with_text):
         if wt:

@@ -362,3 +362,41 @@ def test_a_drawing_covers_its_model_points_so_the_packer_may_skip_a_scale_undraw
     for path in sorted(gallery.glob("*.toml")):
         sheets_for(Study(load_scene(path)).run())
     assert len(seen) > 500
+
+
+def test_the_pruned_several_page_search_is_the_exhaustive_one(monkeypatch):
+    """Flowing a several-page document only when its bound (pages, drawings, lettering) could beat the
+    best so far chooses the document flowing every one chooses -- pages, text and lettering -- on every
+    gallery scene that is not a lab sheet, and the lab sheets of the lab scene; and it flows fewer."""
+    from pathlib import Path
+
+    from drafting import pages, sheet
+    from drafting.lab import lab_for
+    from drafting.scene import load_scene
+    from drafting.study import Study
+    from drafting.worked import sheets_for
+    plan, document = pages.plan_document, pages._document
+    flowed = {"pruned": 0, "all": 0}
+    counting = {"on": "pruned"}
+
+    def count(*a, **kw):
+        flowed[counting["on"]] += 1
+        return document(*a, **kw)
+
+    def both(*a, **kw):
+        counting["on"] = "pruned"
+        got = plan(*a, **kw)
+        counting["on"] = "all"
+        want = plan(*a, **{**kw, "cache": {}}, prune=False)
+        assert got.pages == want.pages and got.size == want.size and got.text == want.text
+        return got
+    monkeypatch.setattr(pages, "_document", count)
+    monkeypatch.setattr(sheet, "plan_document", both)
+    gallery = Path(__file__).resolve().parent.parent / "gallery"
+    for path in sorted(gallery.glob("*.toml")):
+        study = Study(load_scene(path)).run()
+        if path.name.startswith("lab-"):
+            lab_for(study)
+        else:
+            sheets_for(study)
+    assert 0 < flowed["pruned"] < flowed["all"] / 2, flowed
