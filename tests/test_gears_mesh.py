@@ -295,3 +295,20 @@ def test_an_undercut_pinion_is_drawn_and_said_as_generated():
     s20 = ToothSystem(0.005, math.radians(20.0))
     plain = mesh_analysis(Pair(Gear(20, s20), Gear(40, s20)))
     assert not any("undercut" in st.words for st in plain.construction.steps)
+
+
+def test_a_tooth_the_cutter_would_sever_is_said_and_drawn_as_involutes():
+    """Three teeth with a deep dedendum: the cutter's tip round crosses the tooth's centre line -- it
+    would cut the tooth off at its root.  The sheet says so in one warning and draws the involute teeth,
+    not a self-crossing outline."""
+    from constructions.gears.generation import cut_flank
+    s = ToothSystem(0.010, math.radians(14.71), 1.146, 1.408)
+    pair = Pair(Gear(3, s), None, rack_system=s)
+    assert cut_flank(pair.pinion).severed
+    a = mesh_analysis(pair)
+    said = [w for w in a.warnings if "cut through at their root" in w]
+    assert len(said) == 1 and "gear 1" in said[0]
+    assert not any("undercut" in st.words and "Cut by generation" in st.words for st in a.construction.steps)
+    plain = pair.pinion.teeth_outline(Vec(0, 0), pair.pinion.half_tooth_angle - 2 * 2 * math.pi / 3, 5, 24)
+    assert list(a.construction.entity("teeth 1").points) == plain
+    assert not cut_flank(Gear(7, ToothSystem(0.010, math.radians(30.0)))).severed

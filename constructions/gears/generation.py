@@ -44,6 +44,12 @@ class CutFlank:
     involute_from: float
     fillet: tuple[tuple[float, float], ...]
 
+    @property
+    def severed(self) -> bool:
+        """The fillet crosses the tooth's centre line: the cutter cuts through the tooth at its root
+        (a gear of so few teeth cannot be generated with this cutter)."""
+        return any(a <= 0.0 for _, a in self.fillet)
+
 
 def largest_tip_round(s: ToothSystem) -> float:
     """The largest tip radius the cutter's tooth holds: its two rounds meet on its centre line."""

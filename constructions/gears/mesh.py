@@ -406,6 +406,12 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     # 9 teeth, as a rack cutter leaves them where it undercuts them
     cut1 = undercut_flank(p1)
     cut2 = undercut_flank(g2) if not pair.rack and not pair.internal else None
+    for number, gear, cut in ((1, p1, cut1), (2, g2, cut2)):
+        if cut is not None and cut.severed:
+            warnings.append(f"Cut by generation, the {gear.teeth} teeth of gear {number} would be cut through at "
+                            f"their root (the cutter's tip round crosses the tooth's centre line): no such gear can "
+                            f"be generated with this cutter; its teeth are drawn as involutes only.")
+    cut1, cut2 = _drawn(cut1), _drawn(cut2)
     ents = [Curve("teeth 1", Role.GIVEN, DETAIL, tuple(p1.teeth_outline(O1, p1.half_tooth_angle - teeth_drawn * 2 * math.pi
                                                                           / p1.teeth, 2 * teeth_drawn + 1, flank_points,
                                                                           cut1)))]
@@ -438,10 +444,15 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
 
 
 def undercut_flank(gear: Gear) -> CutFlank | None:
-    """The flank a rack cutter leaves on ``gear`` when it undercuts it; None when it does not (the
-    teeth are then drawn with the involute down to the base circle and radial below it, as the notes
-    draw them)."""
+    """The flank a rack cutter leaves on ``gear`` when it undercuts it (perhaps so deep that it severs
+    the tooth: :attr:`CutFlank.severed`); None when it does not (the teeth are then drawn with the
+    involute down to the base circle and radial below it, as the notes draw them)."""
     return cut_flank(gear) if is_undercut(gear) else None
+
+
+def _drawn(cut: CutFlank | None) -> CutFlank | None:
+    """The cut flank to draw: none where the cutter severs the tooth (the involute teeth are drawn)."""
+    return None if cut is None or cut.severed else cut
 
 
 def _rack_outline(pair: Pair, count: int) -> list[Vec]:
@@ -501,7 +512,7 @@ def _thread_construction(g: Gear, phi: float) -> Construction:
     u = Vec.polar(1.0, space)
     lab = lambda r, a: O + Vec.polar(r, a)  # noqa: E731
     ends = a1 + 0.02
-    teeth = g.teeth_outline(O, centre, 2, FLANK_POINTS, undercut_flank(g))
+    teeth = g.teeth_outline(O, centre, 2, FLANK_POINTS, _drawn(undercut_flank(g)))
     terms = [Curve("terms teeth", Role.GIVEN, THREAD, tuple(teeth)),
              Dimension("terms t", Role.DIMENSION, THREAD, lab(rp, centre - psi), lab(rp, centre + psi), -0.45 * g.system.module,
                        "t"),
