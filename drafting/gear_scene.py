@@ -96,8 +96,9 @@ def read_teeth(r, units: Units) -> ToothSystem:
         most = largest_tip_round(s) / m
         if isinstance(v, bool) or not isinstance(v, (int, float)) or not (0.0 <= v <= most + 1e-12):
             raise r.fail("teeth.cutter_tip", f"{r.shown(v)} must be the tip radius of the rack cutter in modules, from "
-                                             f"0 to {most:.3g} (where its tooth's two tip rounds meet at this "
-                                             f"pressure angle and dedendum; ISO 53 at 20 deg: 0.38)")
+                                             f"0 to {most:.3g} (the most its tooth holds at this pressure angle and "
+                                             f"dedendum: its two tip rounds meet, or its straight flank ends at the "
+                                             f"pitch line; ISO 53 at 20 deg: 0.38)")
         s = ToothSystem(m, phi, ka, kd, float(v))
     return s
 

@@ -13,12 +13,13 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 from shapely import affinity
 from shapely.geometry import Point, Polygon
 from shapely.ops import unary_union
 
-from constructions.gears.generation import (cut_flank, fewest_uncut, form_radius, is_undercut, straight_depth,
-                                            tip_round)
+from constructions.gears.generation import (cut_flank, fewest_uncut, form_radius, is_undercut, largest_tip_round,
+                                            straight_depth, tip_round)
 from constructions.gears.interference import min_pinion_with_rack
 from constructions.gears.tooth import STUB, FULL_DEPTH, Gear, ToothSystem, inv, involute_point, roll_angle
 from constructions.geometry import Vec
@@ -199,3 +200,31 @@ def test_a_stated_cutter_tip_sets_the_straight_flank_and_the_undercut_limit():
         fillet = sorted(f.fillet)
         ours = float(np.interp(radius, [q[0] for q in fillet], [q[1] for q in fillet]))
         assert abs(lo - ours) * radius <= 2e-3 * M and ours < involute_angle(sharp, radius)   # undercut
+
+
+@settings(max_examples=80, deadline=None)
+@given(n=st.integers(3, 150), deg=st.floats(10.0, 38.0), ka=st.floats(0.5, 1.2), clearance=st.floats(0.0, 0.5),
+       tip=st.none() | st.floats(0.0, 1.0))
+def test_any_system_s_cut_flank_runs_from_the_involute_to_the_root(n, deg, ka, clearance, tip):
+    """Whatever the system and cutter (a tip radius up to the most its tooth holds): the fillet starts on
+    the involute, ends on the root circle, and the undercut says what the closed form says but within
+    half a tooth of the limit; a flank whose fillet crosses the tooth's centre line says it is severed."""
+    s0 = ToothSystem(M, math.radians(deg), ka, ka + clearance)
+    s = ToothSystem(M, math.radians(deg), ka, ka + clearance,
+                    None if tip is None else tip * largest_tip_round(s0))
+    g = Gear(n, s)
+    f = cut_flank(g)
+    if f is None:                                     # no such rack: its tooth pointed above its tip line
+        assert math.pi * M / 4 <= (ka + clearance) * M * math.tan(math.radians(deg))
+        return
+    if f.undercut != is_undercut(g):
+        # the closed form decides by the straight flank's end passing T; the drawing by the round's path
+        # crossing the involute above the base circle -- which, with a large round, can begin only a
+        # fraction of a tooth past the limit (within half a tooth of it here)
+        assert abs(n - fewest_uncut(g)) < 0.5, (n, fewest_uncut(g))
+    assert f.fillet[-1][0] == pytest.approx(g.dedendum_radius, abs=1e-9 * M)
+    r0, a0 = f.fillet[0]
+    assert r0 == pytest.approx(f.involute_from, rel=1e-14)
+    if r0 >= g.base_radius:
+        assert a0 == pytest.approx(involute_angle(g, r0), abs=1e-9)
+    assert f.severed == any(a <= 0 for _, a in f.fillet)

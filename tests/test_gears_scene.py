@@ -107,7 +107,7 @@ BAD = [
     (TRAIN_TEXT, 'driven = "1"', 'driven = "1"\nheld = "2"', "case[1].held", "one degree of freedom"),
     (TRAIN_TEXT, "teeth = 60", "teeth = 60\nspeed = 3", "gear[3].speed", "unknown key"),
     (PAIR_TEXT, 'system = "full depth"', 'system = "full depth"\ncutter_tip = 0.6', "teeth.cutter_tip",
-     "from 0 to 0.472 (where its tooth's two tip rounds meet"),
+     "from 0 to 0.472 (the most its tooth holds"),
     (PAIR_TEXT, 'system = "full depth"', 'system = "full depth"\ncutter_tip = "1 mm"', "teeth.cutter_tip",
      "tip radius of the rack cutter in modules"),
 ]

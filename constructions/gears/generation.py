@@ -8,9 +8,8 @@ and to the tip line, c = d - a being the clearance -- so the straight flank ends
 instead (``ToothSystem.cutter_tip``): the straight flank then ends at d - rho (1 - sin phi).  Rolled on the pitch circle (a rack point X,
 in the frame where the pitch point is (0, r), is at Rot(-theta)(X - (r theta, 0)) in the gear's frame),
 the straight flank generates the involute, and the tip round the fillet: at each theta the round cuts
-at the point whose normal passes through the pitch point (the law of gearing), the far end of the
-line from the pitch point through the round's centre, as long as that normal lies between the flank's
-and the tip line's.
+at the point of its outer arc whose normal passes through the pitch point (the law of gearing), as long
+as that normal lies between the flank's and the tip line's.
 
 The straight flank's lowest point generates the involute down to the form radius
 R_L^2 = r_b^2 + (r sin phi - a/sin phi)^2 while it meets the line of action before the interference
@@ -52,9 +51,12 @@ class CutFlank:
 
 
 def largest_tip_round(s: ToothSystem) -> float:
-    """The largest tip radius the cutter's tooth holds: its two rounds meet on its centre line."""
+    """The largest tip radius the cutter's tooth holds: where its two rounds meet on its centre line, or
+    where the round meets the straight flank at the pitch line (a larger round leaves no flank to
+    generate the involute there), whichever is smaller."""
     phi = s.pressure_angle
-    return max(0.0, (s.circular_pitch / 4.0 * math.cos(phi) - s.d * math.sin(phi)) / (1.0 - math.sin(phi)))
+    meet = (s.circular_pitch / 4.0 * math.cos(phi) - s.d * math.sin(phi)) / (1.0 - math.sin(phi))
+    return max(0.0, min(meet, s.d / (1.0 - math.sin(phi))))
 
 
 def tip_round(gear: Gear) -> float:
@@ -114,7 +116,10 @@ def cut_flank(gear: Gear, points: int = FILLET_POINTS) -> CutFlank | None:
     def at(theta: float) -> tuple[float, float]:
         cx, cy = qx - r * theta, qy
         wx, wy = cx, cy - r
-        k = rho / math.hypot(wx, wy)
+        # the point of the round's outer arc (it faces down, to the gear) whose normal passes through
+        # the pitch point: the far end of the line from it through the centre, or the near end when
+        # the centre lies above the pitch line (a round larger than the dedendum)
+        k = (rho if wy < 0.0 else -rho) / math.hypot(wx, wy)
         px, py = cx + k * wx, cy + k * wy
         c, sn = math.cos(theta), math.sin(theta)
         gx, gy = c * px + sn * py, -sn * px + c * py      # Rot(-theta)
