@@ -132,6 +132,17 @@ def _generated_by_rolling(g: Gear, positions: int) -> Polygon:
     return Point(0, 0).buffer(g.addendum_radius, 1000).difference(unary_union(cuts))
 
 
+def _edge_of(rest: Polygon, radius: float, centre: float, space: float) -> float:
+    """How far from the tooth's centre line (an angle) the material that is ``rest`` ends at ``radius``:
+    in the material at the centre line, in the space ``space`` round from it; bisected to 1e-12."""
+    lo, hi = 0.0, space
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        inside = rest.contains(Point(radius * math.cos(centre + mid), radius * math.sin(centre + mid)))
+        lo, hi = (mid, hi) if inside else (lo, mid)
+    return lo
+
+
 @pytest.mark.parametrize("n, deg", [(12, 20.0), (7, 30.0), (20, 20.0)])
 def test_the_flank_is_what_rolling_the_cutter_leaves(n, deg):
     """The tooth left by the cutter drawn at 2401 positions, measured at radii from the root to the pitch
@@ -144,14 +155,10 @@ def test_the_flank_is_what_rolling_the_cutter_leaves(n, deg):
     centre = math.pi / 2 - math.pi / n                  # the tooth right of the space on +y
     fillet = sorted(f.fillet)
     for radius in np.linspace(g.dedendum_radius + 0.05 * M, g.pitch_radius, 12):
-        lo, hi = 0.0, math.pi / n                       # in the material at lo, in the space at hi
-        for _ in range(40):
-            mid = 0.5 * (lo + hi)
-            inside = rest.contains(Point(radius * math.cos(centre + mid), radius * math.sin(centre + mid)))
-            lo, hi = (mid, hi) if inside else (lo, mid)
+        edge = _edge_of(rest, radius, centre, math.pi / n)
         ours = (involute_angle(g, radius) if radius >= f.involute_from
                 else float(np.interp(radius, [q[0] for q in fillet], [q[1] for q in fillet])))
-        assert abs(lo - ours) * radius <= 2e-3 * M, radius
+        assert abs(edge - ours) * radius <= 2e-3 * M, radius
 
 
 def test_the_tooth_outline_with_its_fillets():
@@ -192,14 +199,10 @@ def test_a_stated_cutter_tip_sets_the_straight_flank_and_the_undercut_limit():
     rest = _generated_by_rolling(sharp, 2401)
     centre = math.pi / 2 - math.pi / 20
     for radius in np.linspace(sharp.base_radius, f.involute_from, 5)[1:-1]:
-        lo, hi = 0.0, math.pi / 20
-        for _ in range(40):
-            mid = 0.5 * (lo + hi)
-            inside = rest.contains(Point(radius * math.cos(centre + mid), radius * math.sin(centre + mid)))
-            lo, hi = (mid, hi) if inside else (lo, mid)
+        edge = _edge_of(rest, radius, centre, math.pi / 20)
         fillet = sorted(f.fillet)
         ours = float(np.interp(radius, [q[0] for q in fillet], [q[1] for q in fillet]))
-        assert abs(lo - ours) * radius <= 2e-3 * M and ours < involute_angle(sharp, radius)   # undercut
+        assert abs(edge - ours) * radius <= 2e-3 * M and ours < involute_angle(sharp, radius)   # undercut
 
 
 @settings(max_examples=80, deadline=None)
