@@ -102,11 +102,11 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
     if not vary:
         raise _fail(path, "vary", "is empty; give at least one range, e.g. crank_angle = [\"30 deg\", \"150 deg\"]")
     out: list[Range] = []
-    choices = ", ".join(list(INPUT_KEYS) + ["length.<joints>", "load.<name>", "mass.<link>", "pivot.<name>.x|y"])
+    choices = ", ".join(list(INPUT_KEYS) + [f"{k}.<{v[0]}>" for k, v in _NAMED.items()] + ["pivot.<name>.x|y"])
     inp = data.get("input") if isinstance(data.get("input"), dict) else {}
     for name, spec in vary.items():
         if name in _NAMED:
-            find, table, field, qkind, positive, example = _NAMED[name]
+            _, find, table, field, qkind, positive, example = _NAMED[name]
             if not isinstance(spec, dict) or not spec:
                 raise _fail(path, f"vary.{name}", example)
             for sub_name, sub in spec.items():
@@ -181,16 +181,16 @@ def _mass_index(data, path, link: str) -> int:
     raise _fail(path, f"vary.mass.{link}", f"no [[mass]] is on link {link!r}{carried}")
 
 
-#: The [vary] keys that name a row of a scene table: key -> (finds the row's index, the table, the row's
-#: field, the quantity, what to say when the range does not stay above 0 (None: it may), the example a
-#: key without a name is told)
+#: The [vary] keys that name a row of a scene table: key -> (what names the row, finds the row's index,
+#: the table, the row's field, the quantity, what to say when the range does not stay above 0 (None: it
+#: may), the example a key without a name is told)
 _NAMED = {
-    "length": (_link_index, "link", "length", "length", None,
+    "length": ("joints", _link_index, "link", "length", "length", None,
                "must name links by their joints, e.g. length.BC = [\"90 mm\", \"110 mm\"]"),
-    "load": (_load_index, "load", "force", "force",
+    "load": ("name", _load_index, "load", "force", "force",
              "varies the load's magnitude: the range must stay above 0 (turn its angle by 180 deg for the other sense)",
              "must name loads, e.g. load.P = [\"30 N\", \"50 N\"]"),
-    "mass": (_mass_index, "mass", "mass", "mass", "the range must stay above 0 kg",
+    "mass": ("link", _mass_index, "mass", "mass", "mass", "the range must stay above 0 kg",
              "must name links by number, e.g. mass.3 = [\"0.8 kg\", \"1.6 kg\"]"),
 }
 

@@ -446,8 +446,11 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
 def undercut_flank(gear: Gear) -> CutFlank | None:
     """The flank a rack cutter leaves on ``gear`` when it undercuts it (perhaps so deep that it severs
     the tooth: :attr:`CutFlank.severed`); None when it does not (the teeth are then drawn with the
-    involute down to the base circle and radial below it, as the notes draw them)."""
-    return cut_flank(gear) if is_undercut(gear) else None
+    involute down to the base circle and radial below it, as the notes draw them).  The closed form
+    (:func:`is_undercut`) says where to look; the flank itself decides (with a large tip round the
+    cut of the involute can begin a fraction of a tooth past the closed form's limit)."""
+    cut = cut_flank(gear) if is_undercut(gear) else None
+    return cut if cut is not None and cut.undercut else None
 
 
 def _drawn(cut: CutFlank | None) -> CutFlank | None:
