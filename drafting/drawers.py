@@ -84,7 +84,7 @@ def diagram_facts(entities: Sequence[Entity], T: Transform):
 
 def draw_pins(ctx: DrawContext) -> None:
     """The pins of the joints found while drawing the links (after phase 1)."""
-    for p, owner in zip(ctx.pins, ctx.pin_owners):
+    for p, owner in ctx.pins.items():
         ctx.d.add(PINS, Circle(*p, PIN_R, "pin", f"{owner}:pin"))
         ctx.d.hard.append(Rect(p[0] - PIN_R, p[1] - PIN_R, 2 * PIN_R, 2 * PIN_R))
 

@@ -266,17 +266,15 @@ class DrawContext:
     pivots: list[Pt]
     bars: list[tuple[Pt, Pt]]
     blocks: list[Pt]
-    pins: list[Pt] = field(default_factory=list)
+    pins: dict[Pt, str] = field(default_factory=dict)    # each pin and the entity that first met it
     text_fn: TextFn = _plain_text
     notes: list[Rect] = field(default_factory=list)      # the grounds of the notes set so far
-    pin_owners: list[str] = field(default_factory=list)  # the entity that first met each pin
 
     def add_pin(self, p: Pt, owner: str) -> None:
         """A pin at ``p``, the joint of entity ``owner`` (drawn with it: its command is "<owner>:pin");
         one pin where several links meet, and none on a fixed pivot."""
-        if all(_dist(p, q) > 0.01 for q in self.pins + self.pivots):
-            self.pins.append(p)
-            self.pin_owners.append(owner)
+        if all(_dist(p, q) > 0.01 for q in self.marks):
+            self.pins[p] = owner
 
     def text(self, entity: Entity, words: str) -> str:
         """``words`` of ``entity`` with the values of its step written in."""
@@ -284,4 +282,4 @@ class DrawContext:
 
     @property
     def marks(self) -> list[Pt]:
-        return self.pins + self.pivots
+        return list(self.pins) + self.pivots

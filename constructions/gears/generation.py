@@ -5,11 +5,12 @@ angle phi, a tooth p/2 thick on its pitch line, a tip line at the gear's dedendu
 (it cuts the root circle r - d), and a tip round of radius rho = c / (1 - sin phi) tangent to the flank
 and to the tip line, c = d - a being the clearance -- so the straight flank ends at the working depth a
 (for 20 deg full depth: rho = 0.38 m, ISO 53 profile A).  A system may state its cutter's tip radius
-instead (``ToothSystem.cutter_tip``): the straight flank then ends at d - rho (1 - sin phi).  Rolled on the pitch circle (a rack point X,
-in the frame where the pitch point is (0, r), is at Rot(-theta)(X - (r theta, 0)) in the gear's frame),
-the straight flank generates the involute, and the tip round the fillet: at each theta the round cuts
-at the point of its outer arc whose normal passes through the pitch point (the law of gearing), as long
-as that normal lies between the flank's and the tip line's.
+instead (``ToothSystem.cutter_tip``): the straight flank then ends at d - rho (1 - sin phi).  Rolled on
+the pitch circle (a rack point X, in the frame where the pitch point is (0, r), is at
+Rot(-theta)(X - (r theta, 0)) in the gear's frame), the straight flank generates the involute, and the
+tip round the fillet: at each theta the round cuts at the point of its outer arc whose normal passes
+through the pitch point (the law of gearing), as long as that normal lies between the flank's and the
+tip line's.
 
 The straight flank's lowest point generates the involute down to the form radius
 R_L^2 = r_b^2 + (r sin phi - a/sin phi)^2 while it meets the line of action before the interference

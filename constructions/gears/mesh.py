@@ -123,7 +123,8 @@ class MeshAnalysis:
         # the involute diagram's pitch -- not off the overall diagram, drawn smaller
         on, pitch = DETAIL.key, THREAD.key
         out = [Measured("AP", "length", g.approach, diagram=on), Measured("PB", "length", g.recess, diagram=on),
-               Measured("AB", "length", g.path, diagram=on), Measured("p_b", "length", g.base_pitch, diagram=pitch),
+               Measured("AB", "length", g.path, diagram=on),
+               Measured("p_b", "length", g.base_pitch, diagram=pitch),
                Measured("PT_1", "length", g.limits[0], diagram=on)]
         if math.isfinite(g.limits[1]):
             out.append(Measured("PT_2", "length", g.limits[1], diagram=on))
