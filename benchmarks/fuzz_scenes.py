@@ -486,13 +486,13 @@ def classify_error(line: str, shown_paths: list[str]) -> str | None:
 
 def _shown(path: Path) -> list[str]:
     """How a message may show the scene's path: escaped, and cut in the middle when long."""
-    from drafting.textsafe import cut_middle, printable
+    from drafting.scene.textsafe import cut_middle, printable
     return [printable(str(path)), cut_middle(printable(str(path)), 120)]
 
 
 FONT_FACES = re.compile(r'(@font-face\{font-family:"DejaVu Sans";font-style:(normal|italic);'
                         r'src:url\(data:font/woff;base64,[A-Za-z0-9+/=]+\) format\("woff"\);\})+')
-"""The one <style> a sheet may hold: its font (drafting.font_embed), nothing that fetches or runs."""
+"""The one <style> a sheet may hold: its font (drafting.backends.fonts), nothing that fetches or runs."""
 
 
 def check_svg(path: Path) -> str | None:
@@ -517,7 +517,7 @@ def check_svg(path: Path) -> str | None:
 
 
 def run_case(case: Case, workdir: Path, formats: str = "svg", hang_seconds: float = HANG_SECONDS) -> Result:
-    from drafting.cli import main
+    from drafting.app.cli import main
     scene_dir = workdir / "in"
     out = workdir / "out"
     scene_dir.mkdir(parents=True, exist_ok=True)

@@ -3,7 +3,7 @@ in one run: full states per second.  The peers are optional (``pip install .[ben
 installed is named as such.
 
 Usage: ``python benchmarks/peers.py [n ...]`` (default sizes 1e3 .. 1e7; the peers stop at the sizes in
-``drafting.bench_peers.LARGEST``).
+``drafting.app.bench_peers.LARGEST``).
 """
 
 import sys
@@ -11,7 +11,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # run from a checkout, uninstalled
 
-from drafting.bench_peers import format_rows, rows  # noqa: E402
+from drafting.app.bench_peers import format_rows, rows  # noqa: E402
 
 if __name__ == "__main__":
     sizes = tuple(int(float(a)) for a in sys.argv[1:]) or (10**3, 10**4, 10**5, 10**6, 10**7)

@@ -2,9 +2,9 @@
 
 import sys
 
-from drafting.bench import run_benchmarks
+from drafting.app.bench import run_benchmarks
 
 if __name__ == "__main__":
-    from drafting.parallel import tune_gc
+    from drafting.app.parallel import tune_gc
     tune_gc()                                   # as the drafting command does in its own process
     print(run_benchmarks(quick="--quick" in sys.argv))

@@ -9,7 +9,7 @@
 
 Everything is what the command line does, without the command line: the same scene reader (a scene is
 untrusted input, read strictly, errors one sentence naming the file and key as
-:class:`~drafting.scene.SceneError`), the same lazy study (only the analyses the scene asks for), the
+:class:`~drafting.scene.reader.SceneError`), the same lazy study (only the analyses the scene asks for), the
 same sheets.  Scene, Study, Sheet and Construction display themselves in Jupyter (``_repr_html_``,
 ``_repr_svg_``).
 """
@@ -19,8 +19,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Mapping
 
-from .scene import Scene, load_scene, parse_scene, scene_from_data
-from .study import Study
+from .scene.reader import Scene, load_scene, parse_scene, scene_from_data
+from .study.study import Study
 
 __all__ = ["load", "loads"]
 
@@ -49,7 +49,7 @@ def loads(text: str, *, name: str = "<text>", paper: str | None = None) -> Study
 def _study(scene: Scene, paper: str | None) -> Study:
     if paper is not None:
         from dataclasses import replace
-        from .scene import PAPERS
+        from .scene.reader import PAPERS
         if paper not in PAPERS:
             raise ValueError(f"paper must be one of {', '.join(PAPERS)}, not {paper!r}")
         scene = replace(scene, paper=paper)

@@ -1,6 +1,6 @@
 """The ``drafting`` command's entry point: it imports the application only once it can answer an
 interrupt, so a Ctrl-C while numpy and the engine are still loading ends the run with one line and exit
-130 (no traceback, and no file exists yet).  Everything else is :func:`drafting.cli.main`.
+130 (no traceback, and no file exists yet).  Everything else is :func:`drafting.app.cli.main`.
 
 While loading, SIGINT ends the process at once (``os._exit``) rather than raising KeyboardInterrupt: an
 exception raised inside the import machinery can land in one of its callbacks, where Python can only
@@ -22,7 +22,7 @@ def main(argv=None) -> int:
     main_thread = threading.current_thread() is threading.main_thread()
     previous = signal.signal(signal.SIGINT, _end_while_loading) if main_thread else None
     try:
-        from .cli import main as run
+        from .app.cli import main as run
     finally:
         if main_thread:
             signal.signal(signal.SIGINT, previous)

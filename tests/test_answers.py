@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from drafting.answers import PAPER_MM
-from drafting.cli import main
+from drafting.app.answers import PAPER_MM
+from drafting.app.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE_1 = ROOT / "gallery" / "notes-velocity-example-1.toml"
@@ -77,7 +77,7 @@ def test_a_bad_answers_file_is_one_sentence(tmp_path, capsys):
     assert code == 2 and f"{f}: line 1: needs a name and a value" in err
     assert main(["check", str(EXAMPLE_1), "--answers", str(tmp_path / "none.csv")]) == 2
     assert "none.csv: no such answers file" in capsys.readouterr().err
-    # read as scenes are (drafting.scene.read_input_text): a pipe is refused rather than waited on
+    # read as scenes are (drafting.scene.reader.read_input_text): a pipe is refused rather than waited on
     fifo = tmp_path / "answers.fifo"
     os.mkfifo(fifo)
     assert main(["check", str(EXAMPLE_1), "--answers", str(fifo)]) == 2

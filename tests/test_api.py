@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 import drafting
-from drafting.export import ExportError
-from drafting.scene import SceneError, load_scene
+from drafting.backends.files import ExportError
+from drafting.scene.reader import SceneError, load_scene
 
 ROOT = Path(__file__).resolve().parent.parent
 GALLERY = ROOT / "gallery"
@@ -73,7 +73,7 @@ def test_everything_displays_itself():
 
 def test_import_drafting_stays_light():
     """The command line imports the package; the API comes only when asked for."""
-    code = "import sys, drafting; print('drafting.api' in sys.modules, 'drafting.study' in sys.modules)"
+    code = "import sys, drafting; print('drafting.api' in sys.modules, 'drafting.study.study' in sys.modules)"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT).stdout
     assert out.split() == ["False", "False"]
 
@@ -99,7 +99,7 @@ def test_the_gallery_notebook_runs_and_shows_a_sheet_inline():
 
 def test_results_as_csv_in_the_scenes_units(tmp_path, capsys):
     import csv
-    from drafting.cli import main
+    from drafting.app.cli import main
     out = tmp_path / "r" / "results.csv"
     assert main(["solve", str(GALLERY / "notes-velocity-example-2.toml"), "--csv", str(out)]) == 0
     rows = list(csv.DictReader(out.open()))

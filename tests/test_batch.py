@@ -10,10 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from drafting.batch import run_batch
-from drafting.cli import main
-from drafting.progress import Progress
-from drafting.scene import SceneError, parse_scene
+from drafting.app.batch import run_batch
+from drafting.app.cli import main
+from drafting.app.progress import Progress
+from drafting.scene.reader import SceneError, parse_scene
 
 SCENE = """
 [drawing]
@@ -173,7 +173,7 @@ def test_ranges_belong_to_linkage_scenes():
 
 
 def test_several_scenes_render_over_an_executor_in_the_order_given(tmp_path, capsys):
-    from drafting.cli import cmd_render
+    from drafting.app.cli import cmd_render
     root = Path(__file__).resolve().parents[1] / "gallery"
     scenes = [root / f"notes-velocity-example-{i}.toml" for i in (4, 1, 2)]
     assert cmd_render(scenes, tmp_path, ["svg"], None, executor=cf.ThreadPoolExecutor(2)) == 0
@@ -189,7 +189,7 @@ def test_alpha_may_vary_where_the_scene_leaves_it_at_zero(tmp_path):
     (r,) = run_batch(scene, 1, 2, tmp_path / "out", ("svg",), workers=1)
     assert r.files and r.values[0][0] == "alpha (rad/s^2)"
     problem = " ".join(p.read_text() for p in (tmp_path / "out").glob("slider-v001-problem*.svg"))
-    from drafting.unitset import Units
+    from drafting.scene.unitset import Units
     drawn = Units().format("angular acceleration", abs(float(r.values[0][1])))
     assert f"= {drawn.split()[0]}" in problem            # the crank's alpha is given data: on the problem sheet
     with pytest.raises(SceneError, match=r"vary.alpha: varies input.alpha, which the scene does not give"):
@@ -204,15 +204,15 @@ def test_a_load_s_force_is_varied_by_name(tmp_path):
     """``load.P`` varies the magnitude of the [[load]] named P (its angle stays): the variant is solved
     with the drawn force, and its forces scale with it (a static analysis is linear in the load)."""
     import tomllib
-    from drafting.batch import variant_study
-    from drafting.vary import read_vary
+    from drafting.app.batch import variant_study
+    from drafting.scene.vary import read_vary
     text = STATIC.read_text() + '\n[vary]\nload.P = { from = "20 N", to = "60 N", step = "5 N" }\n'
     data = tomllib.loads(text)
     scene = parse_scene(text, tmp_path / "p.toml")
     (r,) = read_vary(data, "p.toml", scene.units)
     assert (r.key, r.where, r.kind, r.count) == ("load.P", ("load", 0, "force"), "force", 9)
     base = parse_scene(STATIC.read_text(), STATIC)
-    from drafting.study import Study
+    from drafting.study.study import Study
     t0 = {q: c.graphical for q, c in Study(base).results.items()}
     study, values = variant_study(data, tmp_path / "p.toml", seed=3, index=1)
     (header, shown), = values
@@ -247,9 +247,9 @@ def test_a_mass_and_a_pivot_are_varied_where_the_scene_gives_them(tmp_path, vary
     variant's study equals the study of the scene file with that value written in by hand (every
     result, to the last bit), and the value differs from the scene's own in some draw."""
     import tomllib
-    from drafting.batch import variant_study
-    from drafting.study import Study
-    from drafting.vary import read_vary
+    from drafting.app.batch import variant_study
+    from drafting.study.study import Study
+    from drafting.scene.vary import read_vary
     base_text = DALEMBERT.read_text()
     text = base_text + f"\n[vary]\n{vary}\n"
     data = tomllib.loads(text)

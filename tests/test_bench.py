@@ -7,7 +7,7 @@ import pytest
 
 def test_the_sheet_table_gives_the_median_and_the_best_runs():
     """'to SVG' is the sum of the stages' medians, and in brackets of their best runs."""
-    from drafting.bench import Timing, format_render_rows
+    from drafting.app.bench import Timing, format_render_rows
     t = Timing(0.010, 0.008)
     assert t == 0.010 and t.best == 0.008 and t + 0.005 == pytest.approx(0.015)
     row = {"scene": "s", "sheets": 1, "solve": Timing(0.002, 0.001), "layout": Timing(0.010, 0.009),
@@ -19,7 +19,7 @@ def test_the_sheet_table_gives_the_median_and_the_best_runs():
 
 def test_the_run_says_how_fast_the_machine_was():
     """A fixed loop of plain Python timed beside the sheets: the yardstick of a quiet or a busy minute."""
-    from drafting.bench import Timing, format_machine_speed, machine_speed
+    from drafting.app.bench import Timing, format_machine_speed, machine_speed
     t = machine_speed(1)
     assert isinstance(t, Timing) and 0 < t.best <= t
     assert format_machine_speed(Timing(0.0123, 0.0101)).endswith(

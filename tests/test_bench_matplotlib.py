@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import pytest
 
-from drafting import bench_matplotlib as mpl
-from drafting.scene import load_scene
-from drafting.study import Study
-from drafting.worked import builtin_example, sheets_for
+from drafting.app import bench_matplotlib as mpl
+from drafting.scene.reader import load_scene
+from drafting.study.study import Study
+from drafting.study.worked import builtin_example, sheets_for
 
 pytestmark = pytest.mark.skipif(mpl.available() is None, reason="matplotlib is optional (pip install '.[bench]')")
 

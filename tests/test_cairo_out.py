@@ -17,13 +17,13 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from drafting import cairo_out
-from drafting.export import PNG_DPI
-from drafting.paper import Text
-from drafting.scene import load_scene
-from drafting.study import Study
-from drafting.svg import sheet_to_svg
-from drafting.worked import builtin_example, sheets_for
+from drafting.backends import cairo as cairo_out
+from drafting.backends.files import PNG_DPI
+from drafting.render.paper import Text
+from drafting.scene.reader import load_scene
+from drafting.study.study import Study
+from drafting.backends.svg import sheet_to_svg
+from drafting.study.worked import builtin_example, sheets_for
 
 GALLERY = Path(__file__).resolve().parents[1] / "gallery"
 
@@ -93,8 +93,8 @@ def test_a_png_is_the_same_bytes_whatever_was_drawn_before_it():
     and the default formats gave different pixels).  Each order runs in a fresh process."""
     import subprocess
     import sys
-    code = ("import hashlib, sys; from drafting import cairo_out; from drafting.scene import load_scene; "
-            "from drafting.study import Study; from drafting.worked import builtin_example, sheets_for; "
+    code = ("import hashlib, sys; from drafting.backends import cairo as cairo_out; from drafting.scene.reader import load_scene; "
+            "from drafting.study.study import Study; from drafting.study.worked import builtin_example, sheets_for; "
             "sh = sheets_for(Study(load_scene(builtin_example())).run()); "
             "sys.argv[1] == 'pdf' and cairo_out.sheets_to_pdf(sh); "
             "print(hashlib.sha256(cairo_out.sheet_to_png(sh[0], 150.0)).hexdigest())")

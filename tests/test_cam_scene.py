@@ -8,10 +8,10 @@ from pathlib import Path
 
 import pytest
 
-from drafting.cli import main
-from drafting.scene import SceneError, load_scene, parse_scene
-from drafting.study import Study
-from drafting.worked import sheets_for
+from drafting.app.cli import main
+from drafting.scene.reader import SceneError, load_scene, parse_scene
+from drafting.study.study import Study
+from drafting.study.worked import sheets_for
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 
@@ -108,7 +108,7 @@ def test_export_csv_and_dxf_at_the_tolerance(tmp_path):
     import numpy as np
 
     from constructions.cams.profile import evaluate, profile_samples
-    from drafting.cam_export import export
+    from drafting.app.cam_export import export
 
     scene = GALLERY / "notes-roller-cam.toml"
     csv, dxf = export(scene, tmp_path, 1e-6)
@@ -139,7 +139,7 @@ def test_export_undercut_cam_is_trimmed_and_the_cli_pieces(tmp_path, capsys):
     from shapely.geometry import LinearRing
 
     from constructions.cams.profile import analyse
-    from drafting.cam_export import add_export_arguments, profile_for_export, run_export
+    from drafting.app.cam_export import add_export_arguments, profile_for_export, run_export
 
     m = load_scene(GALLERY / "roller-cam-undercut.toml").model
     pts, tol = profile_for_export(m)
@@ -153,11 +153,11 @@ def test_export_undercut_cam_is_trimmed_and_the_cli_pieces(tmp_path, capsys):
     assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "--tolerance", "0.5"])) == 2
     assert "--tolerance" in capsys.readouterr().err
     out = tmp_path / "m"
-    r = subprocess.run([sys.executable, "-m", "drafting.cam_export", str(GALLERY / "notes-flat-faced-cam.toml"),
+    r = subprocess.run([sys.executable, "-m", "drafting.app.cam_export", str(GALLERY / "notes-flat-faced-cam.toml"),
                         "-o", str(out)], capture_output=True, text=True, cwd=Path(__file__).resolve().parent.parent)
     assert r.returncode == 0 and (out / "notes-flat-faced-cam-profile.dxf").exists()
     # the drafting command's own subcommand; a linkage scene is refused in one sentence
-    from drafting.cli import main
+    from drafting.app.cli import main
     assert main(["export", str(GALLERY / "oscillating-roller-cam.toml"), "-o", str(tmp_path / "c")]) == 0
     assert (tmp_path / "c" / "oscillating-roller-cam-profile.csv").exists()
     capsys.readouterr()

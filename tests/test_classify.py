@@ -100,7 +100,7 @@ def test_extremes_and_limits_agree_with_a_sweep(case):
 
 
 def test_gallery_four_bar_reads_as_the_notes_would_say():
-    from drafting.scene import load_scene
+    from drafting.scene.reader import load_scene
     k = classify_four_bar(load_scene("gallery/notes-velocity-example-2.toml").mechanism)
     assert k.summary(lambda v: f"{v * 1000:g} mm") == (
         "Grashof crank-rocker (s + l = 45 mm < p + q = 50 mm, the shortest the crank); crank turns fully")
@@ -174,8 +174,8 @@ F = "left of E->O3"
 
 
 def test_the_loop_is_on_the_sheet_and_in_json():
-    from drafting.scene import parse_scene
-    from drafting.study import Study
+    from drafting.scene.reader import parse_scene
+    from drafting.study.study import Study
     s = Study(parse_scene(STEPHENSON, "steph.toml")).run()
     j = s.to_json()
     assert j["loops"] == [{"input_link": 3, "joints": ["O2", "E", "F", "O3"], "closes": True,

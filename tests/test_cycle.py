@@ -14,9 +14,9 @@ from constructions.classify import classify_four_bar
 from constructions.cycle import BAND, one_turn, transmission_angles
 from constructions.record import Chart, Curve, Diagram
 from constructions.sweep import sweep
-from drafting.chart import DEGREE_STEPS, ticks
-from drafting.scene import load_scene, parse_scene
-from drafting.study import Study
+from drafting.layout.chart import DEGREE_STEPS, ticks
+from drafting.scene.reader import load_scene, parse_scene
+from drafting.study.study import Study
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 CYCLE = GALLERY / "cycle-four-bar.toml"

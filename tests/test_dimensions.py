@@ -10,7 +10,7 @@ import pytest
 
 import drafting
 from constructions.record import Diagram, Dimension
-from drafting.scene import SceneError, parse_scene
+from drafting.scene.reader import SceneError, parse_scene
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 

@@ -17,13 +17,13 @@ import pytest
 from constructions.geometry import Vec
 from constructions.record import (AngleMark, Chart, Circle, Construction, Curve, Diagram, Dimension, Entity,
                                   Note, Point, Role, Segment, Series, Step, Value)
-from drafting import drawing as D
-from drafting.diagram import draw_entities, drawer, drawer_for, model_points
-from drafting.errors import DrawingError, StyleError
-from drafting.paper import Circle as CircleCmd, Line, Polygon, Polyline, Rectangle, Text
-from drafting.sheet import SheetInfo, compose_sheets
-from drafting.style import AREA_STYLES, LINE_STYLES, area_style_for, line_style_for, long_dash_dot, style, styles
-from drafting.svg import sheet_to_svg
+from drafting.render import drawing as D
+from drafting.layout.diagram import draw_entities, drawer, drawer_for, model_points
+from drafting.render.errors import DrawingError, StyleError
+from drafting.render.paper import Circle as CircleCmd, Line, Polygon, Polyline, Rectangle, Text
+from drafting.layout.sheet import SheetInfo, compose_sheets
+from drafting.render.style import AREA_STYLES, LINE_STYLES, area_style_for, line_style_for, long_dash_dot, style, styles
+from drafting.backends.svg import sheet_to_svg
 
 S = Diagram.SPACE
 
@@ -237,7 +237,7 @@ def test_a_chart_in_a_panel_of_its_own():
     legend = [t.plain for t in cmds if isinstance(t, Text) and ":legend" in t.name]
     assert legend == ["lift s", "s' (per rad)"]
     for cmd in cmds:
-        from drafting.paper import command_points
+        from drafting.render.paper import command_points
         for x, y in command_points(cmd):
             assert panel.contains_point(x, y, tol=0.01), cmd.name
     texts = [t for t in sheet.texts() if t.region == key]

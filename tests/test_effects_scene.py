@@ -14,10 +14,10 @@ from constructions.forces import inertia as I
 from constructions.forces.effects import NO_EFFECTS, End
 from constructions.geometry import Vec
 from constructions.linkage import Attached, FixedToLink, assembly_plan, locate
-from drafting.cli import builtin_example, main
-from drafting.effects_scene import SECTIONS
-from drafting.scene import SceneError, load_scene, parse_scene
-from drafting.unitset import Units
+from drafting.app.cli import builtin_example, main
+from drafting.scene.effects import SECTIONS
+from drafting.scene.reader import SceneError, load_scene, parse_scene
+from drafting.scene.unitset import Units
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = builtin_example().read_text()

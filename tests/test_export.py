@@ -19,11 +19,11 @@ import pytest
 
 from constructions.geometry import Vec
 from constructions.record import Arrow, Construction, Diagram, Point, Role, ScaleBar
-from drafting import export as export_mod
-from drafting import layout as L
-from drafting.export import ExportError, write_sheet
-from drafting.paper import Text, paper
-from drafting.sheet import ResultRow, Sheet, SheetInfo, compose_sheet
+from drafting.backends import files as export_mod
+from drafting.layout import text as L
+from drafting.backends.files import ExportError, write_sheet
+from drafting.render.paper import Text, paper
+from drafting.layout.sheet import ResultRow, Sheet, SheetInfo, compose_sheet
 
 PT_PER_MM = 72 / 25.4
 
@@ -241,9 +241,9 @@ def test_bad_format_and_stem(tmp_path):
 def test_pdf_is_set_in_the_bundled_font_only(tmp_path):
     """DESIGN: bundle one font and name only it -- the PDF embeds DejaVu Sans and nothing else."""
     import re
-    from drafting.cli import builtin_example, sheet_for
-    from drafting.scene import load_scene
-    from drafting.study import Study
+    from drafting.app.cli import builtin_example, sheet_for
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
     (path,) = write_sheet(sheet_for(Study(load_scene(builtin_example()))), tmp_path, "font", ["pdf"])
     names = set(re.findall(rb"/FontName /[A-Z]{6}\+([A-Za-z-]+)", path.read_bytes()))
     assert names and names <= {b"DejaVuSans", b"DejaVuSans-Oblique"}
@@ -251,9 +251,9 @@ def test_pdf_is_set_in_the_bundled_font_only(tmp_path):
 
 def test_source_date_epoch_makes_the_pdf_reproducible(tmp_path, monkeypatch):
     import time as _time
-    from drafting.cli import builtin_example, sheet_for
-    from drafting.scene import load_scene
-    from drafting.study import Study
+    from drafting.app.cli import builtin_example, sheet_for
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
     sheet = sheet_for(Study(load_scene(builtin_example())))
     (a,) = write_sheet(sheet, tmp_path / "a", "s", ["pdf"])
@@ -266,10 +266,10 @@ def test_source_date_epoch_makes_the_pdf_reproducible(tmp_path, monkeypatch):
 def test_source_date_epoch_is_the_sheet_s_date(monkeypatch):
     """The title block's date follows SOURCE_DATE_EPOCH as the PDF's does: the same scene gives the same
     sheet whatever the day it is drawn (the gallery was drawn the day before it was checked again)."""
-    from drafting.scene import load_scene
-    from drafting.sheet import sheet_date
-    from drafting.study import Study
-    from drafting.worked import builtin_example, sheets_for
+    from drafting.scene.reader import load_scene
+    from drafting.layout.sheet import sheet_date
+    from drafting.study.study import Study
+    from drafting.study.worked import builtin_example, sheets_for
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
     assert sheet_date() == "2023-11-14" and sheet_date(0) == "1970-01-01"
     texts = [c.plain for c in sheets_for(Study(load_scene(builtin_example())).run())[0].commands
@@ -294,7 +294,7 @@ def _pdf_pages(pdf: bytes) -> list[tuple[float, float]]:
 
 
 def test_one_sheet_gives_the_plain_names(tmp_path):
-    from drafting.export import write_sheets
+    from drafting.backends.files import write_sheets
     paths = write_sheets([small_sheet()], tmp_path, "one", ("svg", "pdf", "png"))
     assert [p.name for p in paths] == ["one.svg", "one.pdf", "one.png"]
     assert sorted(os.listdir(tmp_path)) == ["one.pdf", "one.png", "one.svg"]
@@ -302,7 +302,7 @@ def test_one_sheet_gives_the_plain_names(tmp_path):
 
 def test_several_sheets_give_numbered_svgs_and_pngs_and_one_pdf_of_all_pages(tmp_path):
     from PIL import Image
-    from drafting.export import output_names, write_sheets
+    from drafting.backends.files import output_names, write_sheets
     sheets = [small_sheet("A4", "landscape"), small_sheet("A3", "portrait"), bar_sheet(100.0)]
     paths = write_sheets(sheets, tmp_path, "multi", ("svg", "pdf", "png"), dpi=30)
     names = [p.name for p in paths]
@@ -394,8 +394,8 @@ def test_a_write_another_thread_begins_during_the_sweep_is_not_taken_for_a_lefto
     """The sweep for leftovers reads the folder, then asks what this process is writing: a write that a
     second thread registers and begins while the folder is read keeps its temporary (it used to be
     removed under that thread, which then failed with "No such file or directory")."""
-    from drafting import faults
-    from drafting.export import _create_temp, _temp_name, remove_stale_temporaries
+    from drafting.backends import faults
+    from drafting.backends.files import _create_temp, _temp_name, remove_stale_temporaries
     busy = _temp_name(tmp_path, "other", "svg")
     real_scandir = export_mod.os.scandir
 
@@ -415,7 +415,7 @@ def test_a_write_another_thread_begins_during_the_sweep_is_not_taken_for_a_lefto
 def test_temporary_files_are_tracked_while_they_exist(tmp_path, monkeypatch):
     """While a conversion runs, the temporary files of the formats done so far are registered with
     faults (so a signal handler can remove them) and carry the recognisable name."""
-    from drafting import faults
+    from drafting.backends import faults
     seen = {}
 
     def spy(svg, fh, dpi):
@@ -433,8 +433,8 @@ def test_temporary_files_are_tracked_while_they_exist(tmp_path, monkeypatch):
 
 def test_svg_text_is_made_xml_safe():
     import xml.etree.ElementTree as ET
-    from drafting.svg import sheet_to_svg
-    from drafting.paper import Rect, Span
+    from drafting.backends.svg import sheet_to_svg
+    from drafting.render.paper import Rect, Span
     nasty = "A\x00B\x07C\x1b[31m\ufffe\uffff\ud800 <script>&amp;\"'"
     spans = (Span(nasty, 3.5), Span(nasty, 2.5, shift=1.0, italic=True))
     sheet = Sheet(paper("A4"), (Text(10, 10, spans, "label", Rect(10, 7, 50, 4), "frame"),))

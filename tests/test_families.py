@@ -11,9 +11,9 @@ import pytest
 from constructions.geometry import Vec
 from constructions.quantities import Measured
 from constructions.record import Construction, Diagram, Note, Role, Segment, Value
-from drafting.families import FAMILIES, Analysis, Family, register
-from drafting.scene import SceneError, parse_scene
-from drafting.study import Study
+from drafting.families.registry import FAMILIES, Analysis, Family, register
+from drafting.scene.reader import SceneError, parse_scene
+from drafting.study.study import Study
 
 
 def _read(r, units):
@@ -79,7 +79,7 @@ def test_a_new_family_runs_through_reader_study_check_and_json(rod_family, tmp_p
     assert study.ran == ["rod", "doubled rod"]                 # its dependency ran first, lazily
     assert [r.name for r in rows] == ["L2"] and rows[0].agrees
     assert study.to_json()["doubled_mm"] == pytest.approx(80.0)
-    from drafting.cli import main
+    from drafting.app.cli import main
     p = tmp_path / "rod.toml"
     p.write_text(SCENE)
     assert main(["solve", str(p), "--json"]) == 0
@@ -99,8 +99,8 @@ def test_a_new_family_keeps_its_own_sections(rod_family):
 
 
 def test_unknown_and_planned_kinds_are_named(monkeypatch):
-    import drafting.scene
-    monkeypatch.setattr(drafting.scene, "PLANNED_KINDS", ("worm gear",))   # every announced kind is built now
+    import drafting.scene.reader
+    monkeypatch.setattr(drafting.scene.reader, "PLANNED_KINDS", ("worm gear",))   # every announced kind is built now
     with pytest.raises(SceneError, match="'worm gear' scenes are not available yet"):
         parse_scene('kind = "worm gear"\n')
     with pytest.raises(SceneError, match="'spring' is not a scene kind; choose from cam, free body, gear pair, gear "

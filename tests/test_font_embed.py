@@ -10,7 +10,7 @@ import re
 from fontTools.ttLib import TTFont
 
 import drafting
-from drafting.font_embed import REPERTOIRE
+from drafting.backends.fonts import REPERTOIRE
 
 
 
@@ -48,7 +48,7 @@ def test_a_title_beyond_the_repertoire_brings_its_glyphs():
 def test_the_subset_is_the_same_bytes_whatever_the_clock(monkeypatch):
     """The font keeps its own date (no timestamp of the run): a sheet's SVG is reproducible, and an empty
     SOURCE_DATE_EPOCH does not break it."""
-    from drafting.font_embed import FONTS, _subset
+    from drafting.backends.fonts import FONTS, _subset
     chars = frozenset("Space diagram 1:5")
     got = []
     for epoch in ("", "0", "1795392000", None):
@@ -61,8 +61,8 @@ def test_the_subset_is_the_same_bytes_whatever_the_clock(monkeypatch):
 
 
 def test_the_shipped_repertoire_subsets_are_what_subsetting_makes_now():
-    """The ready-made subsets in drafting/fonts (so a one-sheet render does not subset) are current:
-    remake them with ``python -m drafting.font_embed`` when this fails."""
-    from drafting.font_embed import FONT_FILES, FONTS, REPERTOIRE, _subset, shipped
+    """The ready-made subsets in drafting/render/fonts (so a one-sheet render does not subset) are current:
+    remake them with ``python -m drafting.backends.fonts`` when this fails."""
+    from drafting.backends.fonts import FONT_FILES, FONTS, REPERTOIRE, _subset, shipped
     for name in FONT_FILES.values():
         assert shipped(name).read_bytes() == _subset(FONTS / name, REPERTOIRE), name

@@ -19,11 +19,11 @@ from constructions.forces.free_body import (ImproperlyConstrained, RigidBody, St
 from constructions.forces.free_body_check import equilibrium_matrix, equilibrium_solution
 from constructions.geometry import Vec
 from constructions.record import Role, TrialLine
-from drafting.cli import main
-from drafting.families import BUILTIN, family
-from drafting.scene import SceneError, load_scene, parse_scene
-from drafting.study import Study
-from drafting.worked import sheets_for
+from drafting.app.cli import main
+from drafting.families.registry import BUILTIN, family
+from drafting.scene.reader import SceneError, load_scene, parse_scene
+from drafting.study.study import Study
+from drafting.study.worked import sheets_for
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 LOADER = GALLERY / "notes-front-end-loader.toml"
@@ -131,7 +131,7 @@ def test_loader_sheet_draws_the_culmann_construction():
 
 
 def test_family_is_registered_from_its_own_module():
-    assert "drafting.free_body_family" in BUILTIN
+    assert "drafting.families.free_body.family" in BUILTIN
     assert family("free body").askable == ("forces",)
     assert family("linkage").kind == "linkage"
 
@@ -395,8 +395,8 @@ def test_any_edit_of_the_loader_gives_a_scene_or_one_clear_sentence():
     from test_scene_fuzz import _DELETE, _paths, _set, values
 
     from constructions.errors import ConstructionError
-    from drafting.scene import scene_from_data
-    from drafting.textsafe import printable
+    from drafting.scene.reader import scene_from_data
+    from drafting.scene.textsafe import printable
 
     base = tomllib.loads(LOADER.read_text())
     paths = sorted(_paths(base), key=str)

@@ -19,9 +19,9 @@ import numpy as np
 import pytest
 
 from constructions.analytic import four_bar
-from drafting.cli import main
-from drafting.scene import load_scene
-from drafting.study import Study
+from drafting.app.cli import main
+from drafting.scene.reader import load_scene
+from drafting.study.study import Study
 
 ROOT = Path(__file__).resolve().parents[1]
 GALLERY = ROOT / "gallery"

@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 
 from constructions.record import Arrow
-from drafting.scene import load_scene, parse_scene
-from drafting.study import Study
+from drafting.scene.reader import load_scene, parse_scene
+from drafting.study.study import Study
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 

@@ -9,11 +9,11 @@ from pathlib import Path
 
 import pytest
 
-from drafting.cli import main
-from drafting.families import BUILTIN, family
-from drafting.scene import load_scene
-from drafting.study import Study
-from drafting.worked import sheets_for
+from drafting.app.cli import main
+from drafting.families.registry import BUILTIN, family
+from drafting.scene.reader import load_scene
+from drafting.study.study import Study
+from drafting.study.worked import sheets_for
 
 ROOT = Path(__file__).resolve().parent.parent
 GALLERY = ROOT / "gallery"
@@ -24,7 +24,7 @@ PLANETARY = GALLERY / "planetary-each-member-held.toml"
 
 
 def test_families_are_registered_from_their_own_module():
-    assert "drafting.gear_family" in BUILTIN
+    assert "drafting.families.gear.family" in BUILTIN
     assert family("gear pair").kind == "gear pair" and family("gear train").kind == "gear train"
 
 
@@ -165,8 +165,8 @@ def test_a_stated_cutter_tip_is_the_one_the_teeth_are_generated_with(tmp_path):
     """[teeth] cutter_tip states the rack cutter's tip radius in modules: a sharp-cornered cutter (0)
     undercuts the 20-tooth pinion of the 20/40 pair, which the basic rack's 0.38 m round does not; the
     sheet says so with that radius."""
-    from drafting.scene import load_scene
-    from drafting.study import Study
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
     assert not any("undercut" in st.words for st in Study(load_scene(PAIR)).run().construction.steps)
     p = tmp_path / "sharp.toml"
     p.write_text(PAIR_TEXT.replace('system = "full depth"', 'system = "full depth"\ncutter_tip = 0', 1))

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from drafting.cli import main
+from drafting.app.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
 # one-sheet scenes (the velocity examples): the fault tests count the files of one sheet per scene
@@ -36,7 +36,7 @@ def temporaries(folder: Path) -> list[str]:
 def assert_whole(folder: Path, stems: list[str]) -> dict[str, bool]:
     """No temporary file; each scene's files (one sheet: stem.svg/.pdf/.png; n sheets: stem-1.svg ..
     stem-n.svg, stem.pdf, stem-1.png .. stem-n.png) all present or all absent.  Returns stem -> written."""
-    from drafting.export import output_names
+    from drafting.backends.files import output_names
     assert temporaries(folder) == []
     names = set(os.listdir(folder)) if folder.is_dir() else set()
     out, known = {}, set()
@@ -120,7 +120,7 @@ def test_a_final_name_that_is_a_folder(tmp_path, capsys):
 
 def _start(out: Path, scenes: list[Path], *extra: str) -> subprocess.Popen:
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
-    return subprocess.Popen([sys.executable, "-m", "drafting.cli", "render", *map(str, scenes), "-o", str(out), *extra],
+    return subprocess.Popen([sys.executable, "-m", "drafting.app.cli", "render", *map(str, scenes), "-o", str(out), *extra],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=ROOT)
 
 
@@ -218,7 +218,7 @@ def test_kill_9_leftovers_are_removed_by_the_next_run(tmp_path):
 def test_a_reader_that_goes_away_ends_the_run_quietly(tmp_path):
     """drafting render ... | head -1: the broken pipe ends the run without a traceback (exit 141)."""
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
-    p = subprocess.Popen([sys.executable, "-m", "drafting.cli", "render", *map(str, GALLERY[:3]), "-o",
+    p = subprocess.Popen([sys.executable, "-m", "drafting.app.cli", "render", *map(str, GALLERY[:3]), "-o",
                           str(tmp_path / "out"), "--format", "svg"], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, env=env, cwd=ROOT)
     p.stdout.readline()
@@ -259,7 +259,7 @@ def _batch_scene(tmp_path: Path) -> Path:
 
 def _start_batch(out: Path, scene: Path, variants: int = 8) -> subprocess.Popen:
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
-    return subprocess.Popen([sys.executable, "-m", "drafting.cli", "batch", str(scene), "--variants", str(variants),
+    return subprocess.Popen([sys.executable, "-m", "drafting.app.cli", "batch", str(scene), "--variants", str(variants),
                              "--seed", "1", "-o", str(out), "--format", ",".join(BATCH_FORMATS), "--workers", "2"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=ROOT)
 
@@ -361,7 +361,7 @@ def test_a_stopped_pool_s_own_thread_has_ended():
     the SIGINT test above).  The crossing itself is a matter of timing; this holds what prevents it."""
     import concurrent.futures as cf
     import multiprocessing
-    from drafting import parallel
+    from drafting.app import parallel
     pool = cf.ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("fork"))
     for _ in range(2):
         pool.submit(parallel._call, time.sleep, 30)
@@ -378,7 +378,7 @@ def test_a_thread_s_deferred_block_does_not_hold_the_main_thread_s_signal():
     own threads; a Ctrl-C in the main thread is still raised there at once, and the thread's block ends
     without an Interrupted that was never its own."""
     import threading
-    from drafting import faults
+    from drafting.backends import faults
     inside, leave = threading.Event(), threading.Event()
     ended: list = []
 

@@ -82,7 +82,7 @@ def test_the_fuzzer_sees_what_it_should():
 
 
 def test_two_points_on_one_link_render(tmp_path, capsys):
-    from drafting.cli import main
+    from drafting.app.cli import main
     text = (ROOT / "gallery" / "notes-velocity-example-1.toml").read_text()
     pts = "".join(f'\n[[point]]\nname = "P{i}"\nlink = 2\nfrom = "B"\ndistance = {10 + i}\nangle = "{20 * i} deg"\n'
                   for i in range(2))

@@ -10,11 +10,11 @@ from pathlib import Path
 
 import pytest
 
-from drafting import limits
-from drafting.textsafe import printable
-from drafting.cli import builtin_example, main
-from drafting.scene import parse_scene
-from drafting.units import DEFAULT_UNITS, KINDS, UnitError, check_unit, format_value, from_si, to_si
+from drafting.scene import limits
+from drafting.scene.textsafe import printable
+from drafting.app.cli import builtin_example, main
+from drafting.scene.reader import parse_scene
+from drafting.scene.units import DEFAULT_UNITS, KINDS, UnitError, check_unit, format_value, from_si, to_si
 
 EXAMPLE = builtin_example().read_text()
 ROOT = Path(__file__).resolve().parents[1]
@@ -252,8 +252,8 @@ def test_construction_errors_without_a_position_get_the_crank_angle(tmp_path, ca
     """An engine error raised without a position (e.g. two coincident circles) is told at the scene's
     crank angle: the file, the position, the reason -- one line."""
     from constructions.errors import DegenerateInput
-    from drafting import cli
-    from drafting.study import Study
+    from drafting.app import cli
+    from drafting.study.study import Study
 
     def broken(self, *a, **k):
         raise DegenerateInput("two coincident circles meet everywhere")

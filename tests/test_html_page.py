@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 
 import drafting
-from drafting.cli import main
-from drafting.html_page import entity_of, markup_html, page_html
+from drafting.app.cli import main
+from drafting.backends.html_page import entity_of, markup_html, page_html
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 SCENE = GALLERY / "notes-acceleration-example-1.toml"
@@ -83,9 +83,9 @@ def test_every_drawn_command_shows_and_hides_with_its_entity(name):
     """Every command the diagrams draw belongs to the entity it draws, so the page shows it with that
     entity's step and hides it before: a dimension's arrowheads (they were left on the page, floating,
     before their step), the pin at a joint (with the first link that meets it)."""
-    from drafting.scene import load_scene
-    from drafting.study import Study
-    from drafting.worked import sheets_for
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from drafting.study.worked import sheets_for
     study = Study(load_scene(GALLERY / f"{name}.toml")).run()
     names = {e.name for st in study.construction.steps for e in st.entities}
     loose = sorted({c.name for sh in sheets_for(study) for c in sh.commands

@@ -19,11 +19,11 @@ import pytest
 import drafting
 from constructions.check import analytic_solution
 from constructions.sweep import sweep
-from drafting.html_page import page_html
+from drafting.backends.html_page import page_html
 from constructions.sweep import crank_points
-from drafting.html_sweep import MECH_W, WIDTH, HEIGHT, sweep_section
-from drafting.paper import Polyline
-from drafting.scene import parse_scene
+from drafting.backends.html_sweep import MECH_W, WIDTH, HEIGHT, sweep_section
+from drafting.render.paper import Polyline
+from drafting.scene.reader import parse_scene
 from test_sweep import PARALLELOGRAM            # the same parallelogram four-bar
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
@@ -47,7 +47,7 @@ def cycle():
 
 @pytest.fixture(scope="module")
 def gap(tmp_path_factory):
-    from drafting.study import Study
+    from drafting.study.study import Study
     study = Study(parse_scene(GAP_TEXT, tmp_path_factory.mktemp("gap") / "gap.toml")).run()
     page = page_html(study)
     return study, page, page_data(page)
@@ -134,7 +134,7 @@ def test_at_a_gap_only_the_crank_stands(gap):
 
 
 def test_change_points_are_named(tmp_path):
-    from drafting.study import Study
+    from drafting.study.study import Study
     study = Study(parse_scene(PARALLELOGRAM, tmp_path / "p.toml")).run()
     page = page_html(study)
     d = page_data(page)
@@ -189,7 +189,7 @@ def test_a_slotted_lever_charts_its_slider_travel():
     """The quick-return's first block rides in the slotted lever; the output is the block on the fixed
     guide, and the cycle charts its travel (the position of Q along the guide) for the slider's cursor."""
     from constructions.cycle import cycle_record, one_turn
-    from drafting.scene import load_scene
+    from drafting.scene.reader import load_scene
     sc = load_scene(GALLERY / "quick-return-slotted-lever.toml")
     th = sc.angle + 2 * math.pi * np.arange(37) / 36
     s = sweep(sc.mechanism, th, sc.omega, sc.alpha)

@@ -16,8 +16,8 @@ from constructions.geometry import Vec
 from constructions.instant_centres import DIAGRAM, FAR, centre_name, instant_centres
 from constructions.linkage import locate
 from constructions.polygons.velocity import velocity_polygon
-from drafting.scene import load_scene
-from drafting.study import Study
+from drafting.scene.reader import load_scene
+from drafting.study.study import Study
 from test_linkage_velocity import four_bar, four_bars, slider_crank, slider_cranks
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"

@@ -11,10 +11,10 @@ from pathlib import Path
 
 import pytest
 
-from drafting.cli import main
-from drafting.lab import BLANK, dimensioned, lab_for, problem_construction
-from drafting.scene import load_scene
-from drafting.study import Study
+from drafting.app.cli import main
+from drafting.app.lab import BLANK, dimensioned, lab_for, problem_construction
+from drafting.scene.reader import load_scene
+from drafting.study.study import Study
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENES = ["notes-velocity-example-1", "notes-velocity-example-4", "notes-acceleration-example-1",

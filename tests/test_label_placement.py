@@ -8,7 +8,7 @@ import math
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from drafting.labels import _Segments
+from drafting.layout.labels import _Segments
 
 
 def clip_len(a, b, left, top, right, bottom) -> float:
@@ -41,7 +41,7 @@ def test_the_clipped_length_is_the_length_shapely_cuts(seg, bx):
     """The scalar Liang-Barsky clip against an independent one: shapely's intersection of the segment
     with the box (the reference below is the same algorithm as the code; this one is not)."""
     from shapely.geometry import LineString, box as sbox
-    from drafting.labels import _clip
+    from drafting.layout.labels import _clip
     (a0, a1), (b0, b1), _ = seg
     left, top, w, h = bx
     got = _clip(a0, a1, b0 - a0, b1 - a1, left, top, left + w, top + h) * math.hypot(b0 - a0, b1 - a1)
@@ -52,7 +52,7 @@ def test_the_clipped_length_is_the_length_shapely_cuts(seg, bx):
 
 
 def test_a_segment_along_an_edge_or_outside_covers_nothing():
-    from drafting.labels import _clip
+    from drafting.layout.labels import _clip
     assert _clip(0.0, 0.0, 10.0, 0.0, 0.0, 1.0, 5.0, 3.0) == 0.0            # outside, parallel to the box
     assert _clip(0.0, 0.0, 10.0, 0.0, 2.0, -1.0, 6.0, 1.0) == pytest.approx(0.4, rel=1e-12)
     assert _clip(20.0, 5.0, 10.0, 0.0, 0.0, 1.0, 5.0, 3.0) == 0.0
@@ -60,8 +60,8 @@ def test_a_segment_along_an_edge_or_outside_covers_nothing():
 
 def reference_candidates(req, hw, hh, incident, relax):
     """(centre, cost) of every candidate, in order, written out plainly: the reference."""
-    from drafting.drawing import angle_gap, shifted, unit_vector
-    from drafting.labels import _DIR_ATAN, _DIR_LEAN, _DIRS, _edge
+    from drafting.render.drawing import angle_gap, shifted, unit_vector
+    from drafting.layout.labels import _DIR_ATAN, _DIR_LEAN, _DIRS, _edge
     dists = (0.7, 1.6, 3.0, 4.5) if relax == 0 else (6.0, 8.0, 11.0, 15.0)
     p = req.anchor
     if req.kind in ("point", "polygon"):
@@ -102,8 +102,8 @@ def reference_candidates(req, hw, hh, incident, relax):
        st.lists(st.floats(-math.pi, math.pi), max_size=4), st.sampled_from([0, 1]))
 def test_the_candidates_are_the_plain_generators_to_the_last_bit(kind, x, y, ox, oy, r0, hw, hh, incident, relax):
     """Costs made at once and centres made on demand, by index, are the plainly written candidates."""
-    from drafting.drawing import LabelReq
-    from drafting.labels import _Candidates
+    from drafting.render.drawing import LabelReq
+    from drafting.layout.labels import _Candidates
     other = None if kind in ("point", "polygon") else (ox, oy if (ox, oy) != (x, y) else oy + 1.0)
     req = LabelReq(kind, "A", (x, y), True, "a", r0, other)
     want = list(reference_candidates(req, hw, hh, incident, relax))
@@ -156,8 +156,8 @@ rect = st.tuples(coord, coord, st.floats(0.5, 10).map(lambda v: round(v, 1)), st
 def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, segments, placed, hard, mandatory):
     """Clipping only the candidates that can still win (cheapest first, bounded by the first that
     meets no line) chooses the same candidate with the same score, ties included, as scoring all."""
-    from drafting.labels import _best_candidate
-    from drafting.paper import Rect
+    from drafting.layout.labels import _best_candidate
+    from drafting.render.paper import Rect
     plot = Rect(-40.0, -40.0, 80.0, 80.0)
     placed = [Rect(*r) for r in placed]
     hard = [Rect(*r) for r in hard]

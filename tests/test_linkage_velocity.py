@@ -679,9 +679,9 @@ def test_example_1_scale_is_1_2_5_and_keeps_the_polygon_on_the_paper():
     assert step.value("len").value == pytest.approx(0.5, rel=1e-12)      # |V_B| = 500 mm/s
     # on the default sheet (A4) V_B = 500 mm/s would be 100 mm at 5 mm/s per mm, but V_C = 569 mm/s would
     # then not fit the panel: the next step, 10 mm/s per mm, draws V_B 50 mm long
-    from drafting.scene import load_scene
-    from drafting.study import Study
-    from drafting.worked import builtin_example, sheet_for
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from drafting.study.worked import builtin_example, sheet_for
     sheet = sheet_for(Study(load_scene(builtin_example())).run())
     text = " ".join(t.plain for t in sheet.texts())
     assert "Choose the velocity scale: 1 mm = 10 mm/s; VB is 50 mm long." in text

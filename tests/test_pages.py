@@ -18,14 +18,14 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from constructions.record import Construction, Diagram, ScaleBar, Step, Term, Value, VectorEquation
-from drafting.diagram import model_points
-from drafting.errors import LayoutError
-from drafting.paper import command_points
-from drafting.sheet import SheetInfo, compose_sheet, compose_sheets
-from drafting.style import MIN_TEXT
-from drafting.svg import sheet_to_svg
-from drafting.unitset import Units
-from drafting.viewport import POLYGON_MIN_MM
+from drafting.layout.diagram import model_points
+from drafting.render.errors import LayoutError
+from drafting.render.paper import command_points
+from drafting.layout.sheet import SheetInfo, compose_sheet, compose_sheets
+from drafting.render.style import MIN_TEXT
+from drafting.backends.svg import sheet_to_svg
+from drafting.scene.unitset import Units
+from drafting.layout.panels import POLYGON_MIN_MM
 
 from test_sheet import result_rows, slider_crank
 
@@ -295,8 +295,8 @@ class _Block:
 
 def test_a_block_too_tall_for_an_empty_page_is_named_and_its_scales_are_not_climbed():
     """The check that every block fits an empty page reads the smallest legible rung only."""
-    from drafting.pages import _check_blocks
-    from drafting.paper import paper
+    from drafting.layout.pages import _check_blocks
+    from drafting.render.paper import paper
     pp = paper("A4", "landscape")
     fits, tall = _Block("fits", 60.0, first=2), _Block("tall", 500.0, first=1)
     with pytest.raises(LayoutError, match="block tall does not fit an empty A4 landscape sheet.*use A3"):
@@ -310,10 +310,10 @@ def test_the_pruned_pick_of_a_one_page_plan_is_the_exhaustive_one(monkeypatch):
     (and lettering) flowing every plan chooses, on every gallery scene that is not a lab sheet."""
     from pathlib import Path
 
-    from drafting import pages
-    from drafting.scene import load_scene
-    from drafting.study import Study
-    from drafting.worked import sheets_for
+    from drafting.layout import pages
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from drafting.study.worked import sheets_for
     pick = pages._pick
     seen = {"pruned": 0, "all": 0}
 
@@ -345,10 +345,10 @@ def test_a_drawing_covers_its_model_points_so_the_packer_may_skip_a_scale_undraw
     held for every drawing of every gallery scene."""
     from pathlib import Path
 
-    from drafting import viewport
-    from drafting.scene import load_scene
-    from drafting.study import Study
-    from drafting.worked import sheets_for
+    from drafting.layout import panels as viewport
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from drafting.study.worked import sheets_for
     seen: list = []
     bbox = viewport.Figure.bbox
 
@@ -370,11 +370,12 @@ def test_the_pruned_several_page_search_is_the_exhaustive_one(monkeypatch):
     gallery scene that is not a lab sheet, and the lab sheets of the lab scene; and it flows fewer."""
     from pathlib import Path
 
-    from drafting import pages, sheet
-    from drafting.lab import lab_for
-    from drafting.scene import load_scene
-    from drafting.study import Study
-    from drafting.worked import sheets_for
+    from drafting.layout import pages
+    from drafting.layout import sheet
+    from drafting.app.lab import lab_for
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from drafting.study.worked import sheets_for
     plan, document = pages.plan_document, pages._document
     flowed = {"pruned": 0, "all": 0}
     counting = {"on": "pruned"}

@@ -9,8 +9,8 @@ import pytest
 
 from constructions.geometry import Vec
 from constructions.record import Arrow, Construction, Diagram, Point, Role, Term, VectorEquation
-from drafting.sheet import SheetInfo, compose_sheet, compose_sheets
-from drafting.svg import sheet_to_svg
+from drafting.layout.sheet import SheetInfo, compose_sheet, compose_sheets
+from drafting.backends.svg import sheet_to_svg
 
 
 def acceleration_chain() -> VectorEquation:
@@ -64,7 +64,7 @@ def test_step_values_are_written_in_the_scene_units_on_a_sheet():
     """Words with placeholders and values apart: the sheet writes them in the scene's units; a lab
     sheet's hook can blank the answers without touching the record."""
     from constructions.record import StepKind, Value
-    from drafting.unitset import Units
+    from drafting.scene.unitset import Units
 
     c = (Construction("Velocity polygon")
          .then("Draw V_B ($v, crank at $a) from O_v.", values={"v": Value("velocity", 0.5),

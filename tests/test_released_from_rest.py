@@ -11,9 +11,9 @@ import pytest
 
 from constructions.geometry import Vec
 from constructions.record import Diagram
-from drafting.cli import main
-from drafting.scene import SceneError, load_scene, parse_scene
-from drafting.study import Study
+from drafting.app.cli import main
+from drafting.scene.reader import SceneError, load_scene, parse_scene
+from drafting.study.study import Study
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 EXAMPLE_1 = GALLERY / "notes-dynamic-example-1.toml"

@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 
-from drafting.cli import builtin_example, main
-from drafting.scene import SceneError, load_scene, parse_scene
-from drafting.study import Study
+from drafting.app.cli import builtin_example, main
+from drafting.scene.reader import SceneError, load_scene, parse_scene
+from drafting.study.study import Study
 
 ROOT = Path(__file__).resolve().parents[1]
 GALLERY = ROOT / "gallery"
@@ -214,7 +214,7 @@ def test_check_command_passes_on_gallery(scene, capsys):
 
 def test_help_on_each_command():
     for args in (["--help"], ["render", "--help"], ["solve", "--help"], ["check", "--help"], ["bench", "--help"]):
-        r = subprocess.run([sys.executable, "-m", "drafting.cli", *args], capture_output=True, text=True,
+        r = subprocess.run([sys.executable, "-m", "drafting.app.cli", *args], capture_output=True, text=True,
                            cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)})
         assert r.returncode == 0 and "usage: drafting" in r.stdout
 
@@ -313,7 +313,7 @@ def test_a3_override(tmp_path, capsys):
 def test_check_exits_1_when_graphical_and_analytic_disagree(monkeypatch, capsys):
     """Perturb the analytic answer by 1e-6 relative: beyond the 1e-9 agreement, so `check` fails."""
     import constructions.check as check
-    import drafting.linkage_family as linkage_family
+    import drafting.families.linkage.family as linkage_family
     from constructions.geometry import Vec
 
     real = check.analytic_solution
@@ -375,7 +375,7 @@ def test_an_undeclared_fixed_pivot_is_named(tmp_path, capsys):
 
 
 def test_rendering_several_scenes_shows_progress_on_a_terminal_only(tmp_path, capsys, monkeypatch):
-    from drafting import cli as c
+    from drafting.app import cli as c
     scenes = [str(GALLERY / "notes-velocity-example-1.toml"), str(GALLERY / "notes-velocity-example-2.toml")]
     assert main(["render", *scenes, "-o", str(tmp_path), "--format", "svg"]) == 0
     assert "%" not in capsys.readouterr().err
@@ -392,10 +392,10 @@ def test_the_command_tunes_the_collector_of_its_own_process_only(tmp_path):
     before = gc.get_threshold(), gc.get_freeze_count()
     assert main(["solve", str(builtin_example())]) == 0
     assert (gc.get_threshold(), gc.get_freeze_count()) == before
-    code = ("import gc, sys\nfrom drafting.cli import main\n"
+    code = ("import gc, sys\nfrom drafting.app.cli import main\n"
             "rc = main(['solve', sys.argv[1]], exiting=True)\n"
             "print(gc.get_threshold()[0], gc.get_freeze_count() > 0, rc)")
     out = subprocess.run([sys.executable, "-c", code, str(builtin_example())], capture_output=True, text=True,
                          check=True).stdout.split()
-    from drafting.parallel import GC_YOUNG
+    from drafting.app.parallel import GC_YOUNG
     assert out[-3:] == [str(GC_YOUNG), "True", "0"]

@@ -10,10 +10,10 @@ import tomllib
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from constructions.errors import ConstructionError
-from drafting.cli import builtin_example
-from drafting.scene import SceneError, scene_from_data
-from drafting.study import Study
-from drafting.textsafe import printable
+from drafting.app.cli import builtin_example
+from drafting.scene.reader import SceneError, scene_from_data
+from drafting.study.study import Study
+from drafting.scene.textsafe import printable
 
 BASE = tomllib.loads(builtin_example().read_text())
 

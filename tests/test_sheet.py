@@ -18,13 +18,13 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 from constructions.geometry import Vec
 from constructions.record import (Arc, Arrow, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point,
                                   Polygon as PolygonEntity, Role, ScaleBar, Term, TrialLine, VectorEquation)
-from drafting import layout as L
-from drafting.layout import LayoutError
-from drafting.paper import Line, Polygon, Rectangle
-from drafting.sheet import ResultRow, SheetInfo, compose_sheet, compose_sheets
-from drafting.style import MIN_TEXT, dashed, long_dash_dot, style
-from drafting.svg import sheet_to_svg
-from drafting.unitset import Units
+from drafting.layout import text as L
+from drafting.layout.text import LayoutError
+from drafting.render.paper import Line, Polygon, Rectangle
+from drafting.layout.sheet import ResultRow, SheetInfo, compose_sheet, compose_sheets
+from drafting.render.style import MIN_TEXT, dashed, long_dash_dot, style
+from drafting.backends.svg import sheet_to_svg
+from drafting.scene.unitset import Units
 
 SVG = "{http://www.w3.org/2000/svg}"
 S, V = Diagram.SPACE, Diagram.VELOCITY
@@ -267,7 +267,7 @@ def test_viewports_inside_the_frame_and_apart(a4, a3):
 
 
 def L_points(c):
-    from drafting.paper import command_points
+    from drafting.render.paper import command_points
     return command_points(c)
 
 
@@ -326,7 +326,7 @@ def test_labels_do_not_cover_arrowheads_or_dots(a4, a3):
         dots = [c for c in sheet.commands if c.style in ("dot", "pin")]
         bgs = [c.rect for c in sheet.commands if isinstance(c, Rectangle) and c.style == "label_bg"]
         assert bgs
-        from drafting.paper import Rect, command_points
+        from drafting.render.paper import Rect, command_points
         for bg in bgs:
             for h in heads + dots:
                 assert not bg.overlaps(Rect.bounding(command_points(h))), h.name

@@ -4,17 +4,17 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from drafting.paper import Line, Rect, Span, Text
-from drafting.sheet import Sheet
-from drafting.svg import sheet_to_svg
+from drafting.render.paper import Line, Rect, Span, Text
+from drafting.layout.sheet import Sheet
+from drafting.backends.svg import sheet_to_svg
 
 NS = "{http://www.w3.org/2000/svg}"
 
 
 def _sheet(commands) -> Sheet:
-    from drafting.worked import builtin_example, sheets_for
-    from drafting.scene import load_scene
-    from drafting.study import Study
+    from drafting.study.worked import builtin_example, sheets_for
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
     from dataclasses import replace
     base = sheets_for(Study(load_scene(builtin_example())).run())[0]
     return replace(base, commands=tuple(commands))
@@ -44,7 +44,7 @@ def test_an_empty_text_is_an_empty_element():
 
 
 def test_a_hatching_is_one_path_of_separate_strokes():
-    from drafting.paper import Strokes
+    from drafting.render.paper import Strokes
     svg = sheet_to_svg(_sheet([Strokes((((0.0, 0.0), (1.0, 1.5)), ((2.25, -0.5), (3.0, 4.0))), "hatch", "h")]))
     paths = ET.fromstring(svg).findall(f"{NS}path")
     assert len(paths) == 1 and paths[0].get("d") == "M0 0L1 1.5 M2.25 -0.5L3 4"
@@ -64,7 +64,7 @@ def test_a_coordinate_prints_as_its_rounding_prints():
     """``.3f`` rounds correctly, as ``round(v, 3)`` does, ties to even included: the shorter format
     writes every coordinate as the first one did."""
     from hypothesis import given, settings, strategies as st
-    from drafting.svg import fmt
+    from drafting.backends.svg import fmt
 
     @settings(max_examples=2000, deadline=None)
     @given(st.floats(-1e7, 1e7, allow_nan=False) | st.integers(-10**7, 10**7).map(lambda i: i / 2000)
@@ -79,13 +79,13 @@ def test_a_coordinate_prints_as_its_rounding_prints():
 
 def _svgwrite_own(dwg) -> str:
     """The document as svgwrite writes it (through ElementTree), made safe in one pass over the whole."""
-    from drafting.textsafe import xml_safe
+    from drafting.scene.textsafe import xml_safe
     return xml_safe(ET.tostring(dwg.get_xml(), encoding="unicode"))
 
 
 def _held_to_svgwrite(monkeypatch) -> list:
     """Every document the writer writes is compared with svgwrite's own writing of the same tree."""
-    from drafting import svg
+    from drafting.backends import svg
     write = svg._document
     written: list = []
 
@@ -101,9 +101,9 @@ def _held_to_svgwrite(monkeypatch) -> list:
 def test_the_writer_writes_what_svgwrite_writes_for_every_gallery_sheet(monkeypatch):
     from pathlib import Path
 
-    from drafting.scene import load_scene
-    from drafting.study import Study
-    from drafting.worked import sheets_for
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from drafting.study.worked import sheets_for
     written = _held_to_svgwrite(monkeypatch)
     gallery = Path(__file__).resolve().parent.parent / "gallery"
     for path in sorted(gallery.glob("*.toml")):
@@ -113,7 +113,7 @@ def test_the_writer_writes_what_svgwrite_writes_for_every_gallery_sheet(monkeypa
 
 
 def test_the_writer_writes_what_svgwrite_writes_for_hostile_text_and_every_element(monkeypatch):
-    from drafting.paper import Circle, Polygon, Polyline, Rectangle, Strokes
+    from drafting.render.paper import Circle, Polygon, Polyline, Rectangle, Strokes
     written = _held_to_svgwrite(monkeypatch)
     nasty = 'tab\there, cr\rlf\n "q" \'a\' <&> \x00\x1b\ud800\ufffe \u22a5 \U0001f600'
     spans = (Span(nasty, 3.5), Span(nasty, 2.5, shift=0.875, italic=True), Span("", 2.5))

@@ -14,8 +14,8 @@ import pytest
 from constructions.check import analytic_solution
 from constructions.linkage import locate
 from constructions.sweep import sweep
-from drafting import cli
-from drafting.scene import load_scene
+from drafting.app import cli
+from drafting.scene.reader import load_scene
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 FOUR_BAR = GALLERY / "notes-velocity-example-2.toml"
@@ -206,7 +206,7 @@ def test_a_parallelogram_stays_a_parallelogram_through_its_change_points(tmp_pat
     """Where crank, coupler and rocker lie along the frame the two assemblies meet; a fixed assembly sign
     would turn the parallelogram into an antiparallelogram there (what a closed form with one sign does).
     The sweep keeps C = B + O1O2 over the whole turn, and says where it passed the change points."""
-    from drafting.scene import parse_scene
+    from drafting.scene.reader import parse_scene
     sc = parse_scene(PARALLELOGRAM, tmp_path / "p.toml")
     assert load_classification(sc).grashof == "change point"
     th = sc.angle + 2 * math.pi * np.arange(7201) / 7200
@@ -239,7 +239,7 @@ def load_classification(scene):
 
 def test_a_long_sweep_shows_progress_on_a_terminal_only(tmp_path, capsys, monkeypatch):
     """The bar goes to stderr when it is a terminal (faked here) and the job is long; piped, nothing."""
-    from drafting import progress
+    from drafting.app import progress
     assert cli.main(["sweep", str(QUICK_RETURN), "--steps", "300", "--csv", str(tmp_path / "a.csv")]) == 0
     assert "%" not in capsys.readouterr().err                           # not a terminal: no bar
     monkeypatch.setattr(progress, "LONG", 100)

@@ -26,7 +26,7 @@ from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, loca
 from constructions.polygons.velocity import velocity_polygon
 from mechanisms import six_bar, toggle_linkage, watt_chain
 from constructions.vector_loops import chain_solution, solving_order
-from drafting.cli import main
+from drafting.app.cli import main
 
 MM = 1e-3
 

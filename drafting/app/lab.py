@@ -1,0 +1,324 @@
+"""Lab sheets: from one solved scene, a problem sheet for the students, the worked solution and the
+answer key.
+
+- The **problem sheet** states the given data (a "Given" list, the space diagram -- dimensioned -- and the
+  construction steps with every value a student must find written as a blank) and frames each other
+  diagram's panel empty, headed with its scale and scale bar, at the size and scale the worked solution
+  draws it at, so a student draws the polygon in it at the stated scale (and the worked sheet lays over
+  it).  The results table lists the quantities to find with their values blank.  No answer is printed
+  anywhere: the space diagram keeps only what the problem states (links, pivots, guides, labels,
+  dimensions, loads), a sense of turning found on the way is blanked too, and the scene's notes (which
+  may name a result) are left off.
+- The **worked solution** is the sheet ``drafting render`` draws.
+- The **key** is one compact page (the results, graphical and analytic, each with the tolerance it is
+  marked at: :mod:`drafting.app.answers`) and the same as CSV (units in the header).
+
+:func:`lab_for` builds the three documents of a solved study; :func:`write_lab` writes them (with the
+key's CSV) together or not at all.
+"""
+
+from __future__ import annotations
+
+import copy
+import csv
+import io
+import math
+import re
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Sequence
+
+from constructions.geometry import Vec
+from constructions.record import Construction, Role, Step, StepKind
+
+from .answers import KeyItem, key_items
+from ..render.errors import LayoutError
+from ..layout.scales import ratio_factor
+from ..layout.sheet import ResultRow, Sheet, SheetInfo, compose_sheets, sheet_date
+from ..study.study import Study
+from ..layout.panels import SpacePanel, VectorPanel
+
+BLANK = "________"
+"""What a problem sheet writes for a value the student finds."""
+ANSWER_LINE = "______________"
+"""The room left in the problem sheet's results table for an answer."""
+
+SHOWN_ROLES = frozenset({Role.GIVEN, Role.LABEL, Role.DIMENSION, Role.LOAD, Role.CENTRE_LINE, Role.NOTE})
+"""What stays on a problem sheet's space diagram: what the problem states."""
+_POSITION_ROLES = SHOWN_ROLES | {Role.PATH}
+
+_SENSE_WORDS = re.compile(r"\b(counter-clockwise|anticlockwise|anti-clockwise|clockwise|CCW|CW)\b")
+
+KEY_CSV_HEADER = ("quantity", "kind", "unit", "answer", "direction (deg)", "sense", "tolerance",
+                  "direction tolerance (deg)", "as printed")
+
+
+@dataclass(frozen=True)
+class Lab:
+    """The three documents of one scene and its key."""
+
+    problem: tuple[Sheet, ...]
+    worked: tuple[Sheet, ...]
+    key: tuple[Sheet, ...]
+    items: tuple[KeyItem, ...]
+    given: tuple[str, ...]
+    units: object
+
+    def key_csv(self, extra: Sequence[tuple[str, str]] = ()) -> str:
+        """The key as CSV in the scene's units, one row per answer (``extra`` (header, value) columns
+        first, e.g. a batch's variant number)."""
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow([h for h, _ in extra] + list(KEY_CSV_HEADER))
+        for i in self.items:
+            w.writerow([v for _, v in extra] + item_cells(i, self.units))
+        return buf.getvalue()
+
+
+def item_cells(i: KeyItem, units) -> list[str]:
+    """One key row: quantity, kind, unit, answer (magnitude), direction, sense, tolerance, direction
+    tolerance, the text as printed."""
+    v = i.value
+    if isinstance(v, Vec):
+        mag, direction, sense = units.convert(i.kind, v.norm()), f"{i.direction:.6g}", ""
+    else:
+        mag, direction = units.convert(i.kind, abs(float(v))), ""
+        sense = ("ccw" if v > 0 else "cw" if v < 0 else "") if i.kind in ("angular velocity", "angular acceleration",
+                                                                        "torque") else ""
+        if not sense:
+            mag = units.convert(i.kind, float(v))
+    return [i.name, i.kind, units.symbol(i.kind), f"{mag:.10g}", direction, sense,
+            f"{units.convert(i.kind, i.tolerance):.4g}" if i.kind != "angle" else f"{math.degrees(i.tolerance):.4g}",
+            f"{i.direction_tolerance:.3g}" if i.direction_tolerance is not None else "", i.text]
+
+
+def _info(study: Study, date: str, title: str, number: str, notes: Sequence[str]) -> SheetInfo:
+    s = study.scene
+    return SheetInfo(title=title, drawing_number=number, paper=s.paper, orientation=s.orientation, date=date,
+                     units=s.units, notes=tuple(notes))
+
+
+def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
+    """The problem sheet, worked solution and key of a solved ``study`` (run with the space diagram
+    dimensioned if the problem sheet is to carry dimensions: :func:`dimensioned`).  ``label`` is added
+    to the titles (a batch's "variant 7")."""
+    s = study.scene
+    date = sheet_date(epoch)
+    suffix = f" ({label})" if label else ""
+    worked = compose_sheets(study.construction, _info(study, date, s.title + suffix, s.drawing_number,
+                                                        study.notes + study.warnings),
+                            [ResultRow(q, g, a, d) for q, g, a, d in study.table()])
+    scales = {k: v for sh in worked for k, v in sh.diagram_scales.items()}
+    stated = _stated(study)
+    every = key_items(study, scales)
+    items = tuple(i for i in every if i.magnitude_text not in stated)    # what the problem states is not asked
+    given = tuple(given_lines(study, items))
+    problem = problem_sheets(study, scales, given, items, date, suffix)
+    comps = {c.name: c for c in study.comparisons}
+    key_rows = [ResultRow(i.shown, i.text, i.analytic or "n/a", study.difference_text(comps[i.name]),
+                          f"accept {i.tolerance_text}") for i in items]
+    drawn = "; ".join(t for sh in worked for _, t in sh.scales)
+    told = [f"{i.shown} = {i.text} is stated by the problem (not asked)." for i in every if i not in items]
+    key_notes = tuple(told) + ("Accepted at drawing accuracy: 1 mm on paper at the worked sheet's scale for a "
+                         "value read off a diagram (its direction within the angle 1 mm subtends, at least "
+                         "1\u00b0); 2 % for a value worked out from one; the sense of a rate must be right.",) \
+        + ((f"The worked solution and the problem sheet are drawn at: {drawn}.",) if drawn else ())
+    key = compose_sheets(Construction(s.title, ()), _info(study, date, f"Answer key: {s.title}{suffix}",
+                                                          f"{s.drawing_number}-K", key_notes), key_rows,
+                         given=given[:-1] if items else given,
+                         unit_kinds=sorted({v.kind for st in study.construction.steps for _, v in st.values}))
+    return Lab(problem, tuple(worked), tuple(key), items, given, s.units)
+
+
+# ---- the problem sheet ---------------------------------------------------------------------------------
+
+def _stated(study: Study) -> set[str]:
+    """The values the problem sheet prints as data, as it prints them ("20.00 deg")."""
+    from ..layout.formats import value_text
+    _, shown = problem_construction(study.construction)
+    units = study.scene.units
+    out = set()
+    for v in shown:
+        if v.value is not None and v.kind not in ("scale", "paper length", "number"):
+            try:
+                out.add(value_text(units, v.kind, abs(v.value)))
+            except (ValueError, KeyError):
+                continue
+    return out
+
+
+def _given_like(step: Step) -> bool:
+    """A step that states the problem: given, or drawing only what the problem states on the space
+    diagram (the position found dyad by dyad, the dimensions)."""
+    if step.kind is StepKind.GIVEN:
+        return True
+    if step.kind is StepKind.ANSWER:
+        return False
+    return bool(step.entities) and all(e.diagram.kind == "space" and e.role in _POSITION_ROLES for e in step.entities)
+
+
+def problem_construction(c: Construction) -> tuple[Construction, set]:
+    """The construction as a problem sheet shows it, and the values it may print: the space diagram
+    keeps what the problem states; a sense of turning in a step that works something out is blanked (the
+    crank's own is in the given data)."""
+    steps = []
+    shown = set()
+    for st in c.steps:
+        given = _given_like(st)
+        if given:
+            shown.update(v for _, v in st.values)
+        ents = tuple(e for e in st.entities if e.diagram.kind != "space" or
+                     (e.role in SHOWN_ROLES and (given or e.role is not Role.DIMENSION)))
+        words = st.words
+        if not given:           # a sense of turning found on the way (the Coriolis rule names omega_3's) is an answer
+            words = _SENSE_WORDS.sub(BLANK, words)
+        steps.append(replace(st, entities=ents, words=words))
+    return Construction(c.title, tuple(steps)), shown
+
+
+def _hook(shown: set):
+    def values(v, default):
+        if v.kind == "scale" or v in shown:
+            return default(v)
+        return BLANK
+    return values
+
+
+def blank_panel(panel, scale=None):
+    """``panel`` framed empty (its heading, scale and scale bar; nothing drawn); held at ``scale`` (a
+    DiagramScale of the worked sheet) when given."""
+    b = copy.copy(panel)
+    b.blank = True
+    if scale is not None:
+        if isinstance(panel, VectorPanel) and panel.fixed is None:
+            b.values = (scale.per_mm,)
+        elif isinstance(panel, SpacePanel):
+            same = [r for r in panel.ratios
+                    if math.isclose(1.0 / (1000.0 * ratio_factor(r)), scale.units_per_mm, rel_tol=1e-9)]
+            if same:
+                b.ratios = (same[0],)
+    return b
+
+
+def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[KeyItem], date: str,
+                   suffix: str = "") -> tuple[Sheet, ...]:
+    s = study.scene
+    c, shown = problem_construction(study.construction)
+    rows = [ResultRow(i.shown, ANSWER_LINE, "", "") for i in items]
+    info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
+
+    def held(panels):
+        return [p if p.key == "space" else blank_panel(p, scales.get(p.key)) for p in panels]
+
+    def free(panels):
+        return [p if p.key == "space" else blank_panel(p) for p in panels]
+    try:
+        return compose_sheets(c, info, rows, values=_hook(shown), panel_hook=held, given=given)
+    except LayoutError:                       # the worked sheet's scales do not fit beside the givens
+        return compose_sheets(c, info, rows, values=_hook(shown), panel_hook=free, given=given)
+
+
+# ---- the given data ------------------------------------------------------------------------------------
+
+def _sense(w: float) -> str:
+    return "counter-clockwise" if w > 0 else "clockwise" if w < 0 else ""
+
+
+def given_lines(study: Study, items: Sequence[KeyItem] = ()) -> list[str]:
+    """The data of the problem in words, in the scene's units: what a linkage scene states (links,
+    pivots, points, guides, the crank's motion, the loads and masses) and what to find."""
+    s = study.scene
+    u = s.units
+    out: list[str] = []
+    m = s.mechanism
+    if s.kind == "linkage" and m is not None:
+        f = lambda kind, v: u.format(kind, v)                      # noqa: E731
+        out.append("Links: " + ", ".join(f"{''.join(k.joints)} = {f('length', k.length)}"
+                                         for k in sorted(m.links, key=lambda k: k.number)) + ".")
+        out.append("Fixed pivots: " + ", ".join(
+            f"{n} at ({u.convert('length', p.x):.6g}, {u.convert('length', p.y):.6g}) {u.symbol('length')}"
+            for n, p in sorted(m.ground.items())) + ".")
+        for a in m.attached:
+            if a.name.startswith("G") and any(ms.centre == a.name for ms in s.effects.masses):
+                continue
+            link = m.link(a.link)
+            out.append(f"Point {a.name} of link {a.link}: {f('length', a.distance)} from {a.base}, "
+                       f"{f('angle', a.angle)} from {a.base}{link.other(a.base)}.")
+        for sl in m.slides:
+            block = f"block {sl.number} at {sl.joint}" if sl.number is not None else f"pin {sl.joint}"
+            if sl.on is None:
+                out.append(f"The {block} slides on a guide through ({u.convert('length', sl.through.x):.6g}, "
+                           f"{u.convert('length', sl.through.y):.6g}) {u.symbol('length')} at "
+                           f"{f('angle', sl.angle)}.")
+            else:
+                out.append(f"The {block} slides in a slot of link {sl.on}.")
+        crank = m.link(m.crank)
+        motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) at {f('angle', s.angle)}"]
+        if s.omega:
+            motion.append(f"\u03c9_{crank.number} = {f('angular velocity', abs(s.omega))} {_sense(s.omega)}")
+        else:
+            motion.append("at rest")
+        if any(a in study.needed for a in ("acceleration", "forces")):
+            if s.torque is not None:
+                motion.append(f"driven by a torque of {f('torque', abs(s.torque))} {_sense(s.torque)}".rstrip())
+            else:
+                motion.append(f"\u03b1_{crank.number} = {f('angular acceleration', abs(s.alpha))} "
+                              f"{_sense(s.alpha)}".rstrip())
+        out.append(", ".join(motion) + ".")
+        e = s.effects
+        from ..scene.unitset import direction_deg
+        for ld in e.loads:
+            out.append(f"Load {ld.name}: {f('force', ld.force.norm())} at {direction_deg(ld.force):.1f}\u00b0 on "
+                       f"{ld.at} of body {ld.body}.")
+        for cp in e.couples:
+            out.append(f"Couple {cp.name}: {f('torque', abs(cp.torque))} {_sense(cp.torque)} on body {cp.body}.")
+        for ms in e.masses:
+            out.append(f"Body {ms.body}: mass {f('mass', ms.mass)}, centre of gravity {ms.centre}"
+                       + (f", I_G = {f('moment of inertia', ms.inertia)}" if ms.inertia else "") + ".")
+        for sp in e.springs:
+            out.append(f"Spring {sp.name}: stiffness {f('stiffness', sp.stiffness)}, free length "
+                       f"{f('length', sp.free_length)}.")
+        if e.gravity is not None:
+            out.append(f"Gravity g = {f('acceleration', e.gravity.norm())} at {direction_deg(e.gravity):.1f}\u00b0.")
+        for body, mu in sorted(e.friction.items(), key=lambda t: str(t[0])):
+            out.append(f"Friction at {body}: \u03bc = {mu:g}.")
+    if items:
+        out.append("Find: " + ", ".join(i.shown for i in items) + " (vectors with their directions, CCW "
+                   "from +x; rates with their sense).")
+    return out
+
+
+# ---- writing -------------------------------------------------------------------------------------------
+
+def lab_plan(lab: Lab, out_dir: Path, stem: str, formats: Sequence[str], *, dpi: float | None = None,
+             epoch: int | None = None, csv_extra: Sequence[tuple[str, str]] = ()):
+    """The files of one lab, for one :func:`~drafting.backends.files.write_outputs` call: ``stem-problem.*``,
+    ``stem.*`` (the worked solution), ``stem-key.*`` and ``stem-key.csv``."""
+    from ..backends.files import PNG_DPI, check_names, sheet_plan
+    kw = {"dpi": dpi or PNG_DPI, "epoch": epoch}
+    plan = sheet_plan(lab.problem, out_dir, f"{stem}-problem", formats, **kw)
+    plan += sheet_plan(lab.worked, out_dir, stem, formats, **kw)
+    plan += sheet_plan(lab.key, out_dir, f"{stem}-key", formats, **kw)
+    key_csv = out_dir / f"{stem}-key.csv"
+    check_names([key_csv], stem)
+    text = lab.key_csv(csv_extra)
+    plan.append((key_csv, lambda: text.encode("utf-8")))
+    return plan
+
+
+def write_lab(lab: Lab, out_dir: Path | str, stem: str, formats: Sequence[str] = ("svg", "pdf", "png"), *,
+              epoch: int | None = None) -> list[Path]:
+    """Write the lab's files together or not at all (an :class:`~drafting.backends.files.ExportError` names the
+    file that could not be written)."""
+    from ..backends.files import prepare_folder, remove_stale_temporaries, write_outputs
+    out_dir = Path(out_dir)
+    plan = lab_plan(lab, out_dir, stem, formats, epoch=epoch)
+    prepare_folder(out_dir)
+    remove_stale_temporaries(out_dir)
+    return write_outputs(out_dir, stem, plan)
+
+
+def dimensioned(scene):
+    """The scene with its space diagram dimensioned: problem sheets are, unless the scene says
+    ``[drawing] dimensions = false``."""
+    return replace(scene, dimensions=True) if scene.kind == "linkage" and scene.dimensions is None else scene

@@ -1,0 +1,214 @@
+"""``drafting sweep SCENE [--steps N | --every 5deg] [--csv FILE]``: a linkage over one turn of its crank.
+
+The crank angles start at the scene's crank angle and cover one turn (N steps, default 72, or every X
+degrees or radians).  With ``--csv`` the table is written in the scene's units, units in the header,
+empty cells where the mechanism cannot be assembled (gaps), atomically (a temporary file beside the
+destination renamed into place).  Without it a short summary is printed.
+
+This module must not import :mod:`drafting.app.cli` (cli imports it); errors are :class:`SweepInputError`,
+which cli turns into its one-line ``drafting: error: ...`` and exit 2.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ..scene import limits
+from .progress import Progress
+from ..scene.reader import SceneError, load_scene
+from ..scene.textsafe import printable
+from ..scene.units import UnitError, to_si, unit_symbol
+
+DEFAULT_STEPS = 72
+
+
+class SweepInputError(Exception):
+    """Bad input to a sweep: one sentence (the file, the option)."""
+
+
+def crank_angles(start: float, steps: int | None, every: str | None) -> np.ndarray:
+    """One turn of crank angles from ``start`` (rad): ``steps`` equal steps, or one every ``every``
+    (a value with an angle unit; a plain number is in degrees).  Raises SweepInputError."""
+    turn = 2 * math.pi
+    if every is not None:
+        try:
+            step = to_si(every, "angle", "deg")
+        except UnitError as e:
+            raise SweepInputError(f"--every: {e}") from None
+        if not step > 0:
+            raise SweepInputError(f"--every: {printable(every)!r} is not a positive angle")
+        n = math.ceil(turn / step - 1e-9)
+        problem = limits.sweep_problem(n)
+        if problem:
+            raise SweepInputError(f"--every: {printable(every)!r} gives {problem} (use a larger --every or --steps)")
+        return start + step * np.arange(n)
+    n = DEFAULT_STEPS if steps is None else steps
+    problem = limits.sweep_problem(n)
+    if problem:
+        raise SweepInputError(f"--steps: {problem}")
+    return start + turn * np.arange(n) / n
+
+
+def run_sweep(path: Path, steps: int | None = None, every: str | None = None):
+    """(scene, sweep) for the scene file at ``path``.  Raises SweepInputError."""
+    from constructions.errors import ConstructionError
+    from constructions.sweep import sweep
+    try:
+        scene = load_scene(path)
+    except SceneError as e:
+        raise SweepInputError(str(e)) from None
+    if scene.mechanism is None:
+        raise SweepInputError(f"{printable(str(path))}: a sweep needs a linkage scene, not a {scene.kind} scene")
+    if scene.torque is not None:
+        raise SweepInputError(f"{printable(str(path))}: input.torque: a sweep needs the crank's motion (omega and "
+                              f"alpha); at a given torque the motion over the cycle is a simulation, which "
+                              f"this version does not run")
+    thetas = crank_angles(scene.angle, steps, every)
+    bar = Progress(thetas.size, "sweep")
+    try:
+        result = sweep(scene.mechanism, thetas, scene.omega, scene.alpha, progress=lambda i, n: bar.update(i))
+    except ConstructionError as e:
+        raise SweepInputError(f"{printable(str(path))}: {e}") from None
+    finally:
+        bar.finish()
+    return scene, result
+
+
+def _unit(units, kind: str) -> str:
+    return unit_symbol(units.of(kind))
+
+
+def table(scene, s) -> tuple[list[str], np.ndarray]:
+    """The CSV header and the values (one row per crank angle) in the scene's units (NaN at gaps)."""
+    u = scene.units
+    ua, ul, uv, uacc = (_unit(u, k) for k in ("angle", "length", "velocity", "acceleration"))
+    uw, ual = _unit(u, "angular velocity"), _unit(u, "angular acceleration")
+    header = [f"crank angle [{ua}]"]
+    cols: list[np.ndarray] = [np.array([u.convert("angle", float(t)) for t in s.thetas])]
+    for name in s.positions:
+        for label, src, kind, unit in (("", s.positions, "length", ul), ("v", s.velocities, "velocity", uv),
+                                       ("a", s.accelerations, "acceleration", uacc)):
+            if name not in src:
+                continue
+            scale = u.convert(kind, 1.0)        # every unit here is linear in SI
+            for axis, arr in zip("xy", src[name]):
+                header.append(f"{name} {label}{axis} [{unit}]")
+                cols.append(np.asarray(arr) * scale)
+    for number in s.angular:
+        header.append(f"omega_{number} [{uw}]")
+        cols.append(np.asarray(s.angular[number]) * u.convert("angular velocity", 1.0))
+        if number in s.angular_acceleration:
+            header.append(f"alpha_{number} [{ual}]")
+            cols.append(np.asarray(s.angular_acceleration[number]) * u.convert("angular acceleration", 1.0))
+    return header, np.column_stack(cols) if cols else np.empty((0, 0))
+
+
+def rows_of(values: np.ndarray):
+    """The CSV rows of a table's values: shortest round-trip decimals, empty cells at gaps."""
+    for row in values:
+        yield ["" if not math.isfinite(v) else repr(float(v)) for v in row]
+
+
+def write_csv(path: Path, header: list[str], values: np.ndarray) -> None:
+    """Write atomically: a temporary file beside ``path``, then os.replace, with a progress bar on a
+    terminal for long tables.  Raises SweepInputError."""
+    path = Path(path)
+    folder = path.parent if str(path.parent) else Path(".")
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(header)
+    bar = Progress(len(values), "csv")
+    for i, row in enumerate(rows_of(values)):
+        w.writerow(row)
+        if i % 4096 == 0:
+            bar.update(i)
+    bar.finish()
+    data = buf.getvalue().encode("utf-8")
+    from ..backends.files import ExportError, write_outputs
+    try:
+        if path.is_dir():
+            raise ExportError(f"Cannot write {printable(str(path))}: it is a folder.")
+        write_outputs(folder, path.stem, [(path, lambda: data)])
+    except ExportError as e:
+        raise SweepInputError(str(e)) from None
+
+
+def _fmt(v: float) -> str:
+    return f"{v:.6g}" if math.isfinite(v) else "-"
+
+
+def summary(scene, s) -> str:
+    """A short summary: angles swept, how many assembled, the gaps' angular ranges, and each link's
+    omega and alpha extremes (scene units)."""
+    u = scene.units
+    ua = u.symbol("angle")
+    ang = [u.convert("angle", float(t)) for t in s.thetas]
+    n, ok = s.thetas.size, int(np.count_nonzero(s.assembles))
+    step = (ang[1] - ang[0]) if n > 1 else 0.0
+    lines = [scene.title,
+             f"  {n} crank angles from {_fmt(ang[0])} to {_fmt(ang[-1])} {ua} (step {_fmt(step)} {ua}), "
+             f"{s.model}: {ok} assembled"]
+    gaps = s.gaps()
+    if gaps:
+        spans = ", ".join(f"{_fmt(ang[i])}..{_fmt(ang[j - 1])} {ua}" for i, j in gaps)
+        lines.append(f"  cannot be assembled (gaps, {n - ok} angles): {spans}")
+    if s.change_points:
+        at = ", ".join(f"{_fmt(u.convert('angle', a))} {ua}" for a in s.change_points)
+        lines.append(f"  passes a change point (all links in line) at {at} and stays on its branch")
+    uw, ual = u.symbol("angular velocity"), u.symbol("angular acceleration")
+    rows = [("link", f"omega min [{uw}]", f"omega max [{uw}]", f"alpha min [{ual}]", f"alpha max [{ual}]")]
+    for k, w in s.angular.items():
+        a = s.angular_acceleration.get(k)
+
+        def ext(x, kind):
+            x = np.asarray(x)[np.isfinite(x)] if x is not None else np.array([])
+            if x.size == 0:
+                return "-", "-"
+            return _fmt(u.convert(kind, float(x.min()))), _fmt(u.convert(kind, float(x.max())))
+        rows.append((str(k),) + ext(w, "angular velocity") + ext(a, "angular acceleration"))
+    widths = [max(len(r[i]) for r in rows) for i in range(5)]
+    for k, r in enumerate(rows):
+        lines.append("  " + "  ".join(c.rjust(wd) if k and i else c.ljust(wd)
+                                      for i, (c, wd) in enumerate(zip(r, widths))).rstrip())
+    return "\n".join(lines)
+
+
+def write_cycle_sheet(scene, out_dir: Path) -> list[str]:
+    """The scene's cycle sheet (analyses = ["sweep"]: charts against the crank angle, coupler curves, limit
+    positions) as SVG, PDF and PNG in ``out_dir``, named <scene>-cycle.  Raises SweepInputError."""
+    from dataclasses import replace
+    from constructions.errors import ConstructionError
+    from ..render.errors import LayoutError
+    from ..backends.files import ExportError, write_sheets
+    from ..study.study import Study
+    from ..study.worked import sheets_for
+    study = Study(replace(scene, analyses=("sweep",), find=None))
+    try:
+        study.run()
+        return [str(w) for w in write_sheets(sheets_for(study), out_dir, f"{scene.path.stem}-cycle")]
+    except (ExportError, LayoutError, ConstructionError) as e:
+        raise SweepInputError(f"{printable(str(scene.path))}: --sheet: {e}") from None
+
+
+def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path | None,
+              sheet_dir: Path | None = None) -> int:
+    """The command: write the CSV (and say so) or print the summary; with ``sheet_dir`` also the cycle
+    sheet.  Raises SweepInputError."""
+    scene, s = run_sweep(path, steps, every)
+    if csv_path is not None:
+        header, values = table(scene, s)
+        write_csv(csv_path, header, values)
+        gaps = s.thetas.size - int(np.count_nonzero(s.assembles))
+        print(f"{scene.title}\n  {s.thetas.size} crank angles ({s.model}), {gaps} not assembled; "
+              f"wrote {printable(str(csv_path))}")
+    else:
+        print(summary(scene, s))
+    if sheet_dir is not None:
+        for w in write_cycle_sheet(scene, sheet_dir):
+            print(f"  wrote {printable(w)}")
+    return 0

@@ -1,0 +1,247 @@
+"""The gear families: a pair in mesh ("gear pair": contact geometry drawn as the notes draw it, checked
+against the closed forms of :mod:`constructions.gears.mesh_check`) and a gear train ("gear train": speeds
+by the tabular method and the notes' formula, torques and tooth loads, checked against the pitch-point
+velocity-matching and equilibrium systems of :mod:`constructions.gears.train_check`).  Registered in
+:mod:`drafting.families.registry`; their scene sections are read by :mod:`drafting.families.gear.scene`."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from constructions.gears.interference import (max_gear_for_pinion, min_equal_gears, min_pinion_with_gear,
+                                              min_pinion_with_rack)
+from constructions.gears.mesh import AT_LIMIT, INTERFERENCE, mesh_analysis
+from constructions.gears.mesh_check import closed_form, notes_contact_ratio
+from constructions.gears.train_check import torque_check, velocity_check
+from constructions.gears.train_drawing import train_analysis
+
+from ..registry import Analysis, Family, register
+from .scene import PAIR_SECTIONS, TRAIN_SECTIONS, read_gear_pair, read_gear_train
+
+PAIR_MODEL = "closed forms of the contact geometry (tangent lengths to the base circles)"
+TRAIN_MODEL = "pitch-point velocity matching and member equilibrium (linear systems)"
+
+
+# -- gear pair -------------------------------------------------------------------------------------------
+
+def _contact(study):
+    return mesh_analysis(study.scene.model)
+
+
+def _closed(study):
+    return closed_form(study.scene.model)
+
+
+def _pair_measured(study) -> list:
+    a = study.result("contact")
+    return a.measured() if a is not None else []
+
+
+def _pair_analytic(study):
+    return closed_form(study.scene.model).values() if study.asked("contact") else None
+
+
+def _pair_limits(pair) -> dict[str, Any]:
+    s = pair.pinion.system
+    phi, k = s.pressure_angle, s.addendum
+    out: dict[str, Any] = {"pinion_with_rack": min_pinion_with_rack(phi, k), "equal_gears": min_equal_gears(phi, k),
+                           "max_gear_for_pinion": max_gear_for_pinion(pair.pinion.teeth, phi, k)}
+    if not pair.rack and not pair.internal:
+        out["pinion_with_this_gear"] = min_pinion_with_gear(pair.gear.teeth, phi, k)
+    return out
+
+
+def _pair_notes(study) -> tuple[str, ...]:
+    a = study.result("contact")
+    if a is None:
+        return ()
+    pair, g = study.scene.model, a.geometry
+    cf = closed_form(pair)
+    u = study.scene.units
+    out = [f"Contact ratio {g.contact_ratio:.4f} drawn (AB / p_b = {u.format('length', g.path)} / "
+           f"{u.format('length', g.base_pitch)}); {cf.contact_ratio:.4f} by the closed form "
+           f"(relative difference {abs(g.contact_ratio - cf.contact_ratio) / cf.contact_ratio:.1e})."]
+    if pair.centre_distance is None and not pair.rack and not pair.internal:
+        s = pair.pinion.system
+        n = notes_contact_ratio(pair.pinion.pitch_radius, pair.gear.pitch_radius, s.a, s.a, s.pressure_angle,
+                                s.base_pitch)
+        out.append(f"The notes' contact-ratio formula gives {n:.4f} (standard centre distance).")
+    verdict = {"clear": "no interference", AT_LIMIT: "at the limit of interference (contact starts exactly at an "
+               "interference point): no interference", INTERFERENCE: "INTERFERENCE"}[g.verdict]
+    out.append(f"Interference: {verdict}.")
+    lim = _pair_limits(pair)
+    phi_deg = math.degrees(pair.pinion.system.pressure_angle)
+    words = (("External gears: least" if pair.internal else "Least") + f" pinion free of interference at {phi_deg:g} deg, addendum {pair.pinion.system.addendum:g} module: "
+             f"{lim['pinion_with_rack']} teeth with a rack, {lim['equal_gears']} with an equal gear")
+    if "pinion_with_this_gear" in lim:
+        words += f", {lim['pinion_with_this_gear']} with this {pair.gear.teeth}-tooth gear"
+    mg = lim["max_gear_for_pinion"]
+    words += ("; this pinion takes any gear or a rack." if mg is None else
+              f"; this {pair.pinion.teeth}-tooth pinion takes gears up to {mg} teeth." if mg else
+              f"; this {pair.pinion.teeth}-tooth pinion interferes even with an equal gear.")
+    out.append(words)
+    return tuple(out)
+
+
+def _pair_json(study) -> dict[str, Any]:
+    pair = study.scene.model
+    u = study.scene.units
+    L = lambda x: u.convert("length", x)  # noqa: E731
+
+    def gear(g):
+        s = g.system
+        return {"teeth": g.teeth, "pitch_radius": L(g.pitch_radius), "base_radius": L(g.base_radius),
+                "addendum_radius": L(g.addendum_radius), "dedendum_radius": L(g.dedendum_radius),
+                "circular_pitch": L(s.circular_pitch), "base_pitch": L(g.base_pitch),
+                "tooth_thickness": L(g.thickness_at(g.pitch_radius))}
+    s = pair.pinion.system
+    out: dict[str, Any] = {"teeth_system": {"module": L(s.module), "pressure_angle_deg": math.degrees(s.pressure_angle),
+                                            "addendum": s.addendum, "dedendum": s.dedendum},
+                           "gears": {"1": gear(pair.pinion)} | ({} if pair.rack else {"2": gear(pair.gear)}),
+                           "rack": pair.rack, "internal": pair.internal, "centre_distance": L(pair.distance),
+                           "interference_limits": _pair_limits(pair)}
+    a = study.result("contact")
+    if a is not None:
+        g, cf = a.geometry, closed_form(pair)
+        out["contact"] = {"approach": L(g.approach), "recess": L(g.recess), "path": L(g.path),
+                          "base_pitch": L(g.base_pitch), "working_pressure_angle_deg": math.degrees(g.working_pressure_angle),
+                          "contact_ratio": {"drawn": g.contact_ratio, "closed_form": cf.contact_ratio},
+                          "interference": {"start": g.start, "end": g.end, "verdict": g.verdict},
+                          "points": {n: [L(p.x), L(p.y)] for n, p in g.points.items()}}
+    return out
+
+
+GEAR_PAIR = register(Family(
+    kind="gear pair",
+    analyses={"contact": Analysis("contact", (), _contact, label="contact geometry"),
+              "closed forms": Analysis("closed forms", (), _closed, label="closed forms")},
+    askable=("contact",),
+    measured=_pair_measured,
+    analytic=_pair_analytic,
+    construction=lambda study: study.get("contact").construction,
+    json=_pair_json,
+    warnings=lambda study: study.result("contact").warnings if study.result("contact") is not None else (),
+    model_name=lambda study: PAIR_MODEL if study.asked("contact") else None,
+    notes=_pair_notes,
+    sections=PAIR_SECTIONS,
+    read=read_gear_pair,
+    default_analyses=("contact",),
+))
+
+
+# -- gear train ------------------------------------------------------------------------------------------
+
+def _rate(study):
+    return lambda w: study.scene.units.format("angular velocity", w)
+
+
+def _speeds(study):
+    train, cases = study.scene.model
+    return train_analysis(train, cases)
+
+
+def _train_check(study):
+    train, cases = study.scene.model
+    out = []
+    for c in cases:
+        speeds, rank, res = velocity_check(train, c.givens)
+        row: dict[str, Any] = {"speeds": speeds, "rank": rank, "residual": res}
+        if c.power is not None:
+            held = tuple(g.member for g in c.givens if g.speed == 0.0)
+            row["loads"], row["torques"] = torque_check(train, speeds, c.power, c.inp, c.out, held)
+        out.append(row)
+    return out
+
+
+def _train_measured(study) -> list:
+    a = study.result("speeds")
+    return a.measured() if a is not None else []
+
+
+def _train_analytic(study):
+    if not study.asked("speeds"):
+        return None
+    a = study.get("speeds")
+    chk = study.get("check")
+    out: dict[str, float] = {}
+    for case, row in zip(a.cases, chk):
+        for m, w in row["speeds"].items():
+            out[a.quantity(f"omega_{m}", case)] = w
+        for m, t in row.get("torques", {}).items():
+            out[a.quantity(f"T_{m}", case)] = t
+        for mesh, w in row.get("loads", {}).items():
+            out[a.quantity(f"W_t {mesh}", case)] = w
+    return out
+
+
+def _train_scales(study) -> dict[str, float]:
+    train, cases = study.scene.model
+    return {"angular velocity": max(abs(g.speed) for c in cases for g in c.givens)}
+
+
+def _train_notes(study) -> tuple[str, ...]:
+    a = study.result("speeds")
+    if a is None:
+        return ()
+    train = a.train
+    out = []
+    if train.coaxial:
+        out.append("Reverted: the coaxial shafts' stages have equal sums of pitch radii (r1 + r2 = r3 + r4), checked "
+                   "on the layout.")
+    if train.planetary:
+        out.append(f"Planetary train, carrier {train.carrier}; speeds by the tabular method and the notes' formula, "
+                   f"checked by velocity matching at every pitch point.")
+    chk = study.get("check")
+    for case, row in zip(a.cases, chk):
+        if row["rank"] < len(train.members):
+            out.append(f"{case.name}: the velocity-matching system has rank {row['rank']} for {len(train.members)} "
+                       f"members (not determined).")
+    return tuple(out)
+
+
+def _train_json(study) -> dict[str, Any]:
+    train, cases = study.scene.model
+    u = study.scene.units
+    out: dict[str, Any] = {"gears": {g.name: {"teeth": g.teeth, "shaft": g.member, "carrier": g.carrier,
+                                              "internal": g.internal,
+                                              "pitch_radius": u.convert("length", train.radius(g))} for g in train.gears},
+                           "meshes": [m.name for m in train.meshes], "planetary": train.planetary}
+    a = study.result("speeds")
+    if a is not None:
+        rows = []
+        chk = study.get("check")
+        for case, sol, row in zip(a.cases, a.solutions, chk):
+            r: dict[str, Any] = {"name": case.name,
+                                 "speeds": {m: u.rate_json(w, "angular velocity") for m, w in sol.speeds.items()},
+                                 "relative_values": sol.values,
+                                 "check": {"rank": row["rank"], "residual": row["residual"]}}
+            if sol.torques is not None:
+                r["power_W"] = case.power
+                r["torques"] = {m: u.rate_json(t, "torque") for m, t in sol.torques.items()}
+                r["tooth_loads"] = {m: {"tangential": u.convert("force", w),
+                                        "radial": u.convert("force", w * math.tan(train.pressure_angle)),
+                                        "total": u.convert("force", w / math.cos(train.pressure_angle))}
+                                    for m, w in (sol.loads or {}).items()}
+            rows.append(r)
+        out["cases"] = rows
+    return out
+
+
+GEAR_TRAIN = register(Family(
+    kind="gear train",
+    analyses={"speeds": Analysis("speeds", (), _speeds, label="tabular method"),
+              "check": Analysis("check", (), _train_check, label="velocity-matching system")},
+    askable=("speeds",),
+    measured=_train_measured,
+    analytic=_train_analytic,
+    construction=lambda study: study.get("speeds").construction,
+    json=_train_json,
+    warnings=lambda study: (),
+    model_name=lambda study: TRAIN_MODEL if study.asked("speeds") else None,
+    scales=_train_scales,
+    notes=_train_notes,
+    sections=TRAIN_SECTIONS,
+    read=read_gear_train,
+    default_analyses=("speeds",),
+))

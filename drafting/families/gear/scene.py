@@ -1,0 +1,260 @@
+"""The gear families' sections of a scene file.
+
+A pair in mesh (``kind = "gear pair"``)::
+
+    [teeth]     module = "5 mm" | diametral_pitch = 8 (teeth per inch of pitch diameter);
+                pressure_angle = "20 deg"; system = "full depth" | "stub" (or addendum = 1.0, dedendum = 1.25,
+                the constants in modules); cutter_tip = 0.25 (the tip radius of the rack cutter that
+                generates the teeth, in modules; default c / (1 - sin phi), 0.38 at 20 deg full depth:
+                it decides the fillet and, below the undercut limit, the undercut drawn)
+    [pair]      pinion = 20 (teeth of gear 1, the driver); gear = 40 (teeth of gear 2) or "rack";
+                centre_distance = "152 mm" (optional; for a rack, from O1 to the rack's pitch line);
+                internal = true (gear 2 is an internal gear, a ring, about the pinion)
+
+A gear train (``kind = "gear train"``)::
+
+    [teeth]     module, pressure_angle (as above; the train is laid out and loaded with them)
+    [[gear]]    name = "2"; teeth = 45; shaft = "2" (the member it turns with, default its name: gears on one
+                shaft make a compound gear); carrier = "C" (the arm holding its axis, default the frame);
+                internal = true (a ring)
+    [[mesh]]    gears = ["1", "2"]; angle = "0 deg" (the direction from the first gear's centre to the pitch
+                point; default 0, 90 deg in a planetary train)
+    [train]     coaxial = [["1", "4"]] (shafts whose axes must coincide: a reverted train)
+    [[case]]    name = "carrier held"; driven = "1"; speed = "1000 rpm"; sense = "cw"; held = "C" (a planetary
+                train needs one member held); power = "30 kW" and output = "3" (optional: torques, tooth loads)
+
+Read with the shared reader, so every error is one sentence naming the file and the key.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from constructions.errors import ConstructionError, DegenerateInput
+from constructions.gears.generation import largest_tip_round
+from constructions.gears.mesh import Pair
+from constructions.gears.tooth import INCH, SYSTEMS, Gear, ToothSystem
+from constructions.gears.train_drawing import Case
+from constructions.gears.trains import FRAME, Given, Train, TrainGear, TrainMesh, layout, solve_train
+
+from ...scene.units import UnitError, to_si
+from ...scene.unitset import Units
+
+PAIR_SECTIONS = frozenset({"teeth", "pair"})
+TRAIN_SECTIONS = frozenset({"teeth", "gear", "mesh", "train", "case"})
+TEETH_KEYS = {"module", "diametral_pitch", "pressure_angle", "system", "addendum", "dedendum", "cutter_tip"}
+MAX_TEETH = 10000
+MAX_GEARS = 30
+
+
+def _teeth_count(r, key: str, value: Any, least: int = 3) -> int:
+    if isinstance(value, bool) or not isinstance(value, int) or not (least <= value <= MAX_TEETH):
+        raise r.fail(key, f"{r.shown(value)} must be a whole number of teeth from {least} to {MAX_TEETH}")
+    return value
+
+
+def read_teeth(r, units: Units) -> ToothSystem:
+    if "teeth" not in r.data:
+        raise r.fail("teeth", "is missing: give the module (or diametral pitch) and the pressure angle, e.g. "
+                              "[teeth] module = \"5 mm\", pressure_angle = \"20 deg\"")
+    t = r.table("teeth", TEETH_KEYS, {"pressure_angle"})
+    if ("module" in t) == ("diametral_pitch" in t):
+        raise r.fail("teeth.module", "give either module (SI, e.g. \"5 mm\") or diametral_pitch (teeth per inch), "
+                                     "one of them")
+    if "module" in t:
+        m = r.quantity("teeth.module", t["module"], "length", units)
+        if m <= 0:
+            raise r.fail("teeth.module", "must be a positive length")
+    else:
+        p = t["diametral_pitch"]
+        if isinstance(p, bool) or not isinstance(p, (int, float)) or not (0.01 <= p <= 1000):
+            raise r.fail("teeth.diametral_pitch", f"{r.shown(p)} must be a number of teeth per inch of pitch "
+                                                  f"diameter, from 0.01 to 1000")
+        m = INCH / p
+    phi = r.quantity("teeth.pressure_angle", t["pressure_angle"], "angle", units)
+    if not (math.radians(5) <= phi <= math.radians(40)):
+        raise r.fail("teeth.pressure_angle", "must lie between 5 and 40 deg (14.5, 20 and 25 deg are usual)")
+    ka, kd = 1.0, 1.25
+    if "system" in t:
+        if t["system"] not in SYSTEMS:
+            raise r.fail("teeth.system", f"{r.shown(t['system'])} must be \"full depth\" or \"stub\"")
+        ka, kd = SYSTEMS[t["system"]]
+    for key in ("addendum", "dedendum"):
+        if key in t:
+            v = t[key]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (0.1 <= v <= 3.0):
+                raise r.fail(f"teeth.{key}", f"{r.shown(v)} must be the {key} constant in modules, from 0.1 to 3 "
+                                             f"(full depth: 1 and 1.25; stub: 0.8 and 1)")
+    ka, kd = float(t.get("addendum", ka)), float(t.get("dedendum", kd))
+    if ka > kd:
+        raise r.fail("teeth.dedendum", f"{kd:g} is less than the addendum constant {ka:g}: the tip of one gear would "
+                                       f"hit the root of the other (the clearance is their difference)")
+    s = ToothSystem(m, phi, ka, kd)
+    if "cutter_tip" in t:
+        v = t["cutter_tip"]
+        most = largest_tip_round(s) / m
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not (0.0 <= v <= most + 1e-12):
+            raise r.fail("teeth.cutter_tip", f"{r.shown(v)} must be the tip radius of the rack cutter in modules, from "
+                                             f"0 to {most:.3g} (the most its tooth holds at this pressure angle and "
+                                             f"dedendum: its two tip rounds meet, or its straight flank ends at the "
+                                             f"pitch line; ISO 53 at 20 deg: 0.38)")
+        s = ToothSystem(m, phi, ka, kd, float(v))
+    return s
+
+
+def read_gear_pair(r, units: Units) -> dict:
+    s = read_teeth(r, units)
+    if "pair" not in r.data:
+        raise r.fail("pair", "is missing: give the teeth, e.g. [pair] pinion = 20, gear = 40 (or gear = \"rack\")")
+    t = r.table("pair", {"pinion", "gear", "centre_distance", "internal"}, {"pinion", "gear"})
+    internal = t.get("internal", False)
+    if not isinstance(internal, bool):
+        raise r.fail("pair.internal", "must be true (gear 2 is an internal gear, a ring) or false")
+    n1 = _teeth_count(r, "pair.pinion", t["pinion"])
+    g = t["gear"]
+    if g == "rack":
+        if internal:
+            raise r.fail("pair.internal", "a rack is not an internal gear; give gear = its teeth")
+        gear = None
+    else:
+        n2 = _teeth_count(r, "pair.gear", g)
+        if n2 <= n1 and internal:
+            raise r.fail("pair.gear", f"an internal gear needs more teeth than its {n1}-tooth pinion")
+        if n2 < n1:
+            raise r.fail("pair.gear", f"{n2} teeth is fewer than the pinion's {n1}: gear 1 is the pinion, the smaller "
+                                      f"gear (swap them)")
+        gear = Gear(n2, s)
+    c = None
+    if "centre_distance" in t:
+        c = r.quantity("pair.centre_distance", t["centre_distance"], "length", units)
+    pair = Pair(Gear(n1, s), gear, c, internal=internal)
+    try:
+        from constructions.gears.mesh import contact_geometry
+        contact_geometry(pair)
+    except ConstructionError as e:
+        raise r.fail("pair.centre_distance" if c is not None else "pair", e.reason) from None
+    r.lengths.append(("pair", pair.size))
+    return {"model": pair}
+
+
+def read_gear_train(r, units: Units) -> dict:
+    s = read_teeth(r, units)
+    gears = []
+    names: set[str] = set()
+    items = r.array("gear")
+    if len(items) < 2:
+        raise r.fail("gear", "needs at least two [[gear]] tables (name, teeth)")
+    if len(items) > MAX_GEARS:
+        raise r.fail("gear", f"{len(items)} gears; a train may have at most {MAX_GEARS}")
+    for i, t in enumerate(items, 1):
+        k = f"gear[{i}]"
+        r.table(k, {"name", "teeth", "shaft", "carrier", "internal"}, {"name", "teeth"}, value=t)
+        name = _member(r, f"{k}.name", t["name"])
+        if name in names:
+            raise r.fail(f"{k}.name", f"{name} is already the name of a gear")
+        names.add(name)
+        teeth = _teeth_count(r, f"{k}.teeth", t["teeth"])
+        shaft = _member(r, f"{k}.shaft", t.get("shaft", name))
+        carrier = _member(r, f"{k}.carrier", t.get("carrier", FRAME))
+        internal = t.get("internal", False)
+        if not isinstance(internal, bool):
+            raise r.fail(f"{k}.internal", "must be true or false")
+        gears.append(TrainGear(name, teeth, shaft, carrier, internal))
+    meshes = []
+    for i, t in enumerate(r.array("mesh"), 1):
+        k = f"mesh[{i}]"
+        r.table(k, {"gears", "angle"}, {"gears"}, value=t)
+        g = t["gears"]
+        if not (isinstance(g, list) and len(g) == 2 and all(isinstance(x, str) for x in g)) or g[0] == g[1]:
+            raise r.fail(f"{k}.gears", "must name two gears, e.g. [\"1\", \"2\"]")
+        for x in g:
+            if x not in names:
+                raise r.fail(f"{k}.gears", f"{x} is not a gear of the train (its gears: {', '.join(sorted(names))})")
+        ang = r.quantity(f"{k}.angle", t["angle"], "angle", units) if "angle" in t else None
+        meshes.append(TrainMesh(g[0], g[1], ang))
+    if not meshes:
+        raise r.fail("mesh", "is missing: say which gears mesh, e.g. [[mesh]] gears = [\"1\", \"2\"]")
+    tr = r.table("train", {"coaxial"})
+    coaxial = []
+    for pair in tr.get("coaxial", []):
+        if not (isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)):
+            raise r.fail("train.coaxial", "must list pairs of shafts, e.g. [[\"1\", \"4\"]]")
+        coaxial.append((pair[0], pair[1]))
+    try:
+        train = Train(tuple(gears), tuple(meshes), s.module, s.pressure_angle, tuple(coaxial))
+    except DegenerateInput as e:
+        raise r.fail("mesh", str(e)) from None
+    for a, b in coaxial:
+        for x in (a, b):
+            if x not in train.members:
+                raise r.fail("train.coaxial", f"{x} is not a shaft of the train")
+    try:
+        layout(train)
+    except ConstructionError as e:
+        raise r.fail("train.coaxial" if "coaxial" in e.reason else "mesh", e.reason) from None
+    cases = []
+    items = r.array("case")
+    if not items:
+        raise r.fail("case", "is missing: say what drives the train, e.g. [[case]] driven = \"1\", speed = \"1000 rpm\"")
+    for i, t in enumerate(items, 1):
+        k = f"case[{i}]"
+        r.table(k, {"name", "driven", "speed", "sense", "held", "power", "output"}, {"driven", "speed"}, value=t)
+        name = r.text(f"{k}.name", t["name"]) if "name" in t else (f"case {i}" if len(items) > 1 else "the train")
+        driven = _known_member(r, f"{k}.driven", t["driven"], train)
+        w = r.quantity(f"{k}.speed", t["speed"], "angular velocity", units)
+        w = r.signed(f"{k}.sense", "speed", w, t["speed"], t.get("sense"))
+        if w == 0:
+            raise r.fail(f"{k}.speed", "must not be zero: the driven member turns")
+        givens = []
+        if "held" in t:
+            held = _known_member(r, f"{k}.held", t["held"], train)
+            if held == driven:
+                raise r.fail(f"{k}.held", f"{held} is the driven member; hold another")
+            givens.append(Given(held, 0.0))
+        givens.append(Given(driven, w))
+        if train.planetary and "held" not in t:
+            raise r.fail(f"{k}.held", "is missing: a planetary train has two degrees of freedom; hold one member "
+                                      "(the carrier, the sun or the ring)")
+        if not train.planetary and "held" in t:
+            raise r.fail(f"{k}.held", "an ordinary train (no carrier) has one degree of freedom: give only the "
+                                      "driven member")
+        power = out = None
+        if "power" in t:
+            try:
+                power = to_si(t["power"], "power", "kW")
+            except UnitError as e:
+                raise r.fail(f"{k}.power", str(e)) from None
+            if power <= 0:
+                raise r.fail(f"{k}.power", "must be positive (the power put in at the driven member)")
+            if "output" not in t:
+                raise r.fail(f"{k}.output", "is missing: name the member the power is taken off")
+            out = _known_member(r, f"{k}.output", t["output"], train)
+            if out in (driven, *(g.member for g in givens if g.speed == 0.0)):
+                raise r.fail(f"{k}.output", f"{out} is the driven or the held member; take the power off another")
+        elif "output" in t:
+            raise r.fail(f"{k}.power", "is missing: an output without a power gives no torque")
+        try:
+            sol = solve_train(train, tuple(givens), power=None)
+        except ConstructionError as e:
+            raise r.fail(k, e.reason) from None
+        if out is not None and abs(sol.speeds[out]) < 1e-12 * abs(w):
+            raise r.fail(f"{k}.output", f"{out} stands still in this case: no power is taken off it")
+        cases.append(Case(name, tuple(givens), power, driven if power else None, out))
+    return {"model": (train, tuple(cases))}
+
+
+def _member(r, key: str, value: Any) -> str:
+    if not isinstance(value, str) or not value.strip() or len(value) > 20 or not value.replace("_", "").isalnum():
+        raise r.fail(key, f"{r.shown(value)} must be a member name (letters and digits, e.g. \"2\" or \"C\")")
+    return value
+
+
+def _known_member(r, key: str, value: Any, train: Train) -> str:
+    v = _member(r, key, value)
+    if v not in train.members:
+        raise r.fail(key, f"{v} is not a member of the train (its shafts and carrier: {', '.join(train.members)})")
+    return v
+
+
+__all__ = ["PAIR_SECTIONS", "TRAIN_SECTIONS", "read_gear_pair", "read_gear_train"]

@@ -1,0 +1,372 @@
+"""The linkage family: planar linkages at one pose -- position, velocity polygon, acceleration polygon,
+static and D'Alembert force polygons -- each checked against an independent analytic solution (vector
+loops; the global equilibrium system and virtual work for forces).  Registered in
+:mod:`drafting.families.registry`."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+from typing import Any
+
+from constructions.classify import classify_four_bar
+from constructions.forces.effects import NO_EFFECTS
+from constructions.forces.polygon import force_analysis
+from constructions.check import NotModelled, analytic_solution, analytic_values
+from constructions.linkage import assembly_plan, locate
+from constructions.quantities import Measured
+from constructions.polygons.acceleration import acceleration_polygon
+from constructions.polygons.velocity import velocity_polygon
+from constructions.record import Construction
+
+from ..registry import Analysis, Family, register
+from .scene import SECTIONS, read_linkage
+from ...scene.unitset import direction_deg
+
+
+def _classification(study):
+    return classify_four_bar(study.scene.mechanism)
+
+
+def _loops(study):
+    """The further four-bar loops (a rocker driving a second rocker), each classified."""
+    from constructions.classify import classify_loops
+    return classify_loops(study.scene.mechanism)
+
+
+def _transmission_at_pose(study) -> float | None:
+    """The transmission angle (deg) of the crank's four-bar at the drawn pose, between coupler and rocker."""
+    k = study.get("classification")
+    if k is None:
+        return None
+    P = study.get("position").positions
+    _, b, c, o2 = k.joints
+    u, v = P[b] - P[c], P[o2] - P[c]
+    return math.degrees(abs(math.atan2(u.cross(v), u.dot(v))))
+
+
+def _position(study):
+    s = study.scene
+    pose = locate(s.mechanism, s.angle, assembly_plan(s.mechanism), fmt=s.units.format)
+    if s.dimensions:
+        from constructions.dimensions import dimension_links
+        pose = replace(pose, construction=dimension_links(s.mechanism, pose))
+    return pose
+
+
+def _velocity(study):
+    s = study.scene
+    return velocity_polygon(s.mechanism, study.get("position"), s.omega)
+
+
+def _alpha(study) -> float:
+    """The crank's angular acceleration: the scene's alpha, or (only when the scene gives a torque instead)
+    the analysis "crank alpha"."""
+    return study.scene.alpha if study.scene.torque is None else study.get("crank alpha")
+
+
+def _crank_alpha(study) -> float:
+    """The alpha at which the torque on the crank is the scene's torque, from the equilibrium system of all
+    links (e.g. torque 0 for a body released from rest)."""
+    s = study.scene
+    from constructions.forces.equilibrium import alpha_for_torque
+    return alpha_for_torque(s.mechanism, s.angle, s.omega, _effects(study), s.torque,
+                            guess=study.get("position").positions)
+
+
+def _alpha_by_virtual_work(study) -> float:
+    """The same alpha again by the power balance: the independent check of :func:`_crank_alpha`."""
+    from constructions.forces.equilibrium import alpha_for_torque
+    s = study.scene
+    return alpha_for_torque(s.mechanism, s.angle, s.omega, _effects(study), s.torque,
+                            guess=study.get("position").positions, by="virtual work")
+
+
+def _acceleration(study):
+    s = study.scene
+    return acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
+
+
+def _instant_centres(study):
+    from constructions.instant_centres import instant_centres
+    return instant_centres(study.scene.mechanism, study.get("position"), study.scene.omega)
+
+
+SWEEP_STEPS = 360
+"""A sheet's sweep: one turn of the crank in steps of 1 deg (analytic and vectorised: milliseconds)."""
+
+
+def _sweep(study):
+    """The linkage over one turn of its crank from the drawn angle, and its charts and coupler curves."""
+    from constructions.cycle import cycle_record
+    from constructions.sweep import sweep
+    s = study.scene
+    thetas = s.angle + 2 * math.pi * np.arange(SWEEP_STEPS + 1) / SWEEP_STEPS
+    result = sweep(s.mechanism, thetas, s.omega, _alpha(study))
+    deg = s.units.format
+    return result, cycle_record(s.mechanism, result, study.get("classification"), lambda a: deg("angle", a))
+
+
+def _effects(study):
+    return getattr(study.scene, "effects", None) or NO_EFFECTS
+
+
+def _forces(study):
+    """Static or D'Alembert force polygons: the accelerations only when some body has mass, the velocities
+    only when friction needs the sliding direction -- what the scene declares and nothing else."""
+    s, e = study.scene, _effects(study)
+    velocity = study.get("velocity") if e.friction else None
+    acceleration = study.get("acceleration") if e.inertial else None
+    return force_analysis(s.mechanism, study.get("position"), e, velocity=velocity, acceleration=acceleration)
+
+
+def _force_check(study):
+    """The global equilibrium system of all links and the input torque by virtual work (power balance)."""
+    from constructions.forces.equilibrium import equilibrium, virtual_work_torque
+    s, e = study.scene, _effects(study)
+    guess = study.get("position").positions
+    alpha = _alpha(study)
+    eq = equilibrium(s.mechanism, s.angle, s.omega, alpha, e, guess=guess)
+    vw = virtual_work_torque(s.mechanism, s.angle, s.omega, alpha, e, friction=eq.friction or None, guess=guess)
+    return eq, vw
+
+
+def _analytic(study):
+    """The vector-loop solution, None where it does not assemble, or the NotModelled reason."""
+    s = study.scene
+    try:
+        return analytic_solution(s.mechanism, s.angle, s.omega, _alpha(study),
+                                 accelerations=study.computed("acceleration") is not None,
+                                 guess=study.get("position").positions)
+    except NotModelled as e:
+        return e
+
+
+VIRTUAL_WORK = " (virtual work)"
+INSTANT_CENTRES = " (instant centres)"
+
+
+def _measured(study) -> list:
+    m = study.scene.mechanism
+    out = []
+    for name in ("velocity", "acceleration", "instant centres"):
+        r = study.computed(name)
+        if r is not None:
+            out += r.measured(m)
+    if study.scene.torque is not None:
+        out.append(Measured(f"alpha_{m.crank}", "angular acceleration", study.get("crank alpha")))
+    f = study.result("forces")
+    if f is not None:
+        got = f.measured(m)
+        out += got
+        t = next(x for x in got if x.kind == "torque")
+        out.append(replace(t, name=t.name + VIRTUAL_WORK))
+    return out
+
+
+def _scales(study) -> dict[str, float]:
+    out: dict[str, float] = {}
+    for name in ("velocity", "acceleration", "forces"):
+        r = study.computed(name)
+        if r is not None:
+            out.update(r.scales())
+    return out
+
+
+def _solution(study):
+    a = study.get("analytic")
+    return None if isinstance(a, NotModelled) else a
+
+
+def _analytic_values(study):
+    out: dict = {}
+    if study.computed("velocity") is not None:
+        out.update(analytic_values(study.scene.mechanism, _solution(study)) or {})
+    ic = study.computed("instant centres")
+    if ic is not None:
+        for x in ic.measured(study.scene.mechanism, suffix=""):
+            if x.name in out:
+                out[x.name + INSTANT_CENTRES] = out[x.name]
+    if study.scene.torque is not None:
+        out[f"alpha_{study.scene.mechanism.crank}"] = study.get("alpha check")
+    if study.asked("forces"):
+        eq, vw = study.get("force check")
+        out.update(eq.values(study.scene.mechanism))
+        from constructions.forces.bodies import torque_name
+        out[torque_name(study.scene.mechanism) + VIRTUAL_WORK] = vw
+    return out or None
+
+
+def _construction(study) -> Construction:
+    c = study.get("position").construction
+    for name in ("velocity", "acceleration", "forces", "instant centres"):
+        r = study.computed(name)
+        if r is not None:
+            c = c + r.construction
+    sw = study.computed("sweep")
+    if sw is not None:
+        c = c + sw[1]
+    return c
+
+
+def _notes(study) -> tuple[str, ...]:
+    w: list[str] = []
+    s = study.scene
+    if s.torque is not None:
+        u, n = s.units, s.mechanism.crank
+        w.append(f"\u03b1_{n} follows from the torque on the crank, T_{n} = {u.format('torque', s.torque)}"
+                 + (", released from rest" if s.omega == 0 else "")
+                 + ": its first column from the equilibrium of all links, its second by virtual work.")
+    k = study.get("classification")
+    if k is not None:
+        line = k.summary(lambda v: s.units.format("length", v))
+        mu = _transmission_at_pose(study)
+        if k.transmission_min is not None:
+            lo, hi = math.degrees(k.transmission_min), math.degrees(k.transmission_max)
+            line += f"; transmission angle {lo:.0f}-{hi:.0f} deg"
+            if lo < 40 or hi > 140:
+                line += " (the usual range is 40-140)"
+        if mu is not None:
+            line += f", {mu:.0f} deg as drawn"
+        w.append(line[:1].upper() + line[1:] + ".")
+    for lp in study.get("loops"):
+        q, _, j, o = lp.k.joints
+        w.append(f"Loop {q}-{lp.k.joints[1]}-{j}-{o}, driven by link {lp.input}, by its lengths a "
+                 + lp.k.summary(lambda v: s.units.format("length", v),
+                                ("frame", f"input link {lp.input}", "coupler", "output")) + ".")
+    return tuple(w)
+
+
+def _warnings(study) -> tuple[str, ...]:
+    w: list[str] = []
+    for name in ("velocity", "acceleration", "forces", "instant centres"):
+        r = study.computed(name)
+        if r is not None:
+            w += [x for x in r.warnings if x not in w]
+    sw = study.computed("sweep")
+    if sw is not None and sw[0].gaps():
+        res, u = sw[0], study.scene.units
+        spans = ", ".join(f"{u.format('angle', float(res.thetas[i]))} to {u.format('angle', float(res.thetas[j - 1]))}"
+                          for i, j in res.gaps())
+        w.append(f"Over the turn the linkage cannot be assembled from {spans}: the charts and paths have gaps "
+                 f"there.")
+    if study.computed("velocity") is not None:
+        a = study.get("analytic")
+        if isinstance(a, NotModelled):
+            w.append(f"No analytic check: {a}.")
+        elif a is None:
+            w.append("No analytic check: the vector-loop solution does not assemble at this position.")
+    return tuple(w)
+
+
+def _model(study) -> str | None:
+    names = []
+    if study.computed("velocity") is not None:
+        a = _solution(study)
+        if a is not None:
+            names.append(a.model if a.model == "constraint equations" else f"{a.model} vector loop")
+    if study.asked("forces"):
+        names.append("equilibrium of all links and virtual work")
+    return "; ".join(names) or None
+
+
+def _json(study) -> dict[str, Any]:
+    s, u = study.scene, study.scene.units
+    m = s.mechanism
+    out: dict[str, Any] = {}
+    pose = study.get("position")
+    k = study.get("classification")
+    if k is not None:
+        deg = math.degrees
+        out["classification"] = {
+            "joints": list(k.joints), "closes": k.closes, "grashof": k.grashof, "kind": k.kind,
+            "turns_fully": list(k.turns_fully), "mobility": k.mobility[0],
+            "transmission_angle_deg": {
+                "as_drawn": _transmission_at_pose(study),
+                "min": deg(k.transmission_min) if k.transmission_min is not None else None,
+                "max": deg(k.transmission_max) if k.transmission_max is not None else None,
+                "min_at_crank_deg": deg(k.transmission_min_at) % 360 if k.transmission_min_at is not None else None,
+                "max_at_crank_deg": deg(k.transmission_max_at) % 360 if k.transmission_max_at is not None else None},
+            "limit_positions": [{"extended": lp.extended, "crank_angle_deg": deg(lp.crank_angle) % 360,
+                                 "rocker_angle_deg": deg(lp.rocker_angle) % 360} for lp in k.limit_positions]}
+    loops = study.get("loops")
+    if loops:
+        out["loops"] = [{"input_link": lp.input, "joints": list(lp.k.joints), "closes": lp.k.closes,
+                         "grashof": lp.k.grashof, "kind": lp.k.kind, "turns_fully": list(lp.k.turns_fully)}
+                        for lp in loops]
+    out["position"] = {n: [u.convert("length", p.x), u.convert("length", p.y)] for n, p in pose.positions.items()}
+    v = study.computed("velocity")
+    if v is not None:
+        out["velocity"] = {f"V_{n}": u.vector_json(p, "velocity") for n, p in v.velocities.items() if n not in m.ground}
+        out["relative_velocity"] = {f"V_{j}{p}": u.vector_json(w, "velocity") for (j, p), w in v.relative.items()}
+        out["angular_velocity"] = {f"omega_{n}": u.rate_json(w, "angular velocity")
+                                   for n, w in sorted(v.angular.items())}
+    a = study.computed("acceleration")
+    if a is not None:
+        from constructions.polygons.acceleration import component_name
+        out["acceleration"] = {f"A_{n}": u.vector_json(p, "acceleration") for n, p in a.accelerations.items()
+                               if n not in m.ground}
+        out["acceleration_components"] = {
+            component_name(j, p, sup, m): u.vector_json(x, "acceleration")
+            for comps, sup in ((a.normal, "n"), (a.tangential, "t")) for (j, p), x in comps.items()}
+        out["angular_acceleration"] = {f"alpha_{n}": u.rate_json(al, "angular acceleration")
+                                       for n, al in sorted(a.angular.items())}
+    sw = study.computed("sweep")
+    if sw is not None:
+        res = sw[0]
+        out["sweep"] = {"steps": int(res.thetas.size), "model": res.model,
+                        "assembled": int(np.count_nonzero(res.assembles)),
+                        "gaps_deg": [[math.degrees(float(res.thetas[i])), math.degrees(float(res.thetas[j - 1]))]
+                                     for i, j in res.gaps()]}
+    ic = study.computed("instant centres")
+    if ic is not None:
+        from constructions.instant_centres import centre_name
+        out["instant_centres"] = {
+            centre_name(q): ({"x": u.convert("length", c.at.x), "y": u.convert("length", c.at.y)} if c.finite
+                             else {"at_infinity": True, "direction_deg": direction_deg(c.direction) % 180})
+            for q, c in sorted(ic.centres.items())}
+        out["instant_centres_missing"] = [centre_name(q) for q in ic.missing]
+    f = study.result("forces")
+    if f is not None:
+        rows = {x.name: x.value for x in f.measured(m)}
+        out["forces"] = {
+            "dynamic": f.inertial,
+            "forces": {n: u.vector_json(v, "force") for n, v in rows.items() if not isinstance(v, float)},
+            "driving_torque": {n: u.rate_json(v, "torque") for n, v in rows.items() if isinstance(v, float)}}
+    return out
+
+
+LINKAGE = register(Family(
+    kind="linkage",
+    analyses={
+        "classification": Analysis("classification", (), _classification),
+        "loops": Analysis("loops", (), _loops, label="classification"),     # part of it: one entry in ran
+        "position": Analysis("position", ("classification",), _position),
+        "velocity": Analysis("velocity", ("position",), _velocity),
+        "crank alpha": Analysis("crank alpha", ("position",), _crank_alpha, label="alpha from the torque"),
+        "alpha check": Analysis("alpha check", ("position",), _alpha_by_virtual_work,
+                                label="alpha by virtual work"),
+        "acceleration": Analysis("acceleration", ("velocity",), _acceleration),
+        "analytic": Analysis("analytic", ("position",), _analytic, label="analytic check"),
+        "forces": Analysis("forces", ("position",), _forces, label="force polygons"),
+        "instant centres": Analysis("instant centres", ("velocity",), _instant_centres,
+                                    label="instant centres (Kennedy)"),
+        "sweep": Analysis("sweep", ("position",), _sweep, label="sweep over the cycle"),
+        "force check": Analysis("force check", ("position",), _force_check,
+                                label="equilibrium system and virtual work"),
+    },
+    askable=("position", "velocity", "acceleration", "forces", "instant centres", "sweep"),
+    measured=_measured,
+    analytic=_analytic_values,
+    construction=_construction,
+    json=_json,
+    warnings=_warnings,
+    model_name=_model,
+    scales=_scales,
+    notes=_notes,
+    sections=SECTIONS,
+    read=read_linkage,
+    default_analyses=("velocity",),
+))

@@ -1,0 +1,304 @@
+"""Label placement: every label of a drawn diagram put where it overlaps no other label or symbol.
+
+``place_labels`` searches candidate positions around each label's anchor and scores them by how much
+line they would hide and how well they sit in the gap between the lines at the anchor.  Only the lines,
+symbols and labels in the neighbourhood a label's candidates can reach are tested against them.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
+from ..render.errors import LayoutError
+from ..render.paper import Command, Rect, Rectangle, Text
+from ..render.style import LABEL, measure, rich
+
+LABEL_PAD = 0.4         # white margin of a label's background
+
+
+def _edge(u: Pt, hw: float, hh: float) -> float:
+    """Distance from a box centre to its edge along unit ``u``."""
+    cands = []
+    if abs(u[0]) > 1e-9:
+        cands.append(hw / abs(u[0]))
+    if abs(u[1]) > 1e-9:
+        cands.append(hh / abs(u[1]))
+    return min(cands)
+
+
+#: The 16 directions a point's label is tried in (measured CCW as seen on paper), their paper angles and
+#: the small preference for the upper right (45 deg) each carries.
+_DIRS = tuple((math.cos(2 * math.pi * i / 16), -math.sin(2 * math.pi * i / 16)) for i in range(16))
+_DIR_ATAN = tuple(math.atan2(u[1], u[0]) for u in _DIRS)
+_DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in range(16))
+
+
+_DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0))      # mm from the anchor, then relaxed
+_ARROW_F = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)                # where along an arrow, best first
+_TRIAL_S = (3.0, 6.0, 10.0, 15.0, 22.0)                       # mm in from either end of a trial line
+
+
+_TAU = 2 * math.pi
+
+
+def _gaps(incident: list[float]) -> list[float]:
+    """For each of the 16 directions, the angle to the nearest line at the anchor (pi when none):
+    :func:`~drafting.render.drawing.angle_gap` written out, the same arithmetic."""
+    if not incident:
+        return [math.pi] * 16
+    out = []
+    for ap in _DIR_ATAN:
+        best = math.inf
+        for b in incident:
+            d = abs(ap - b) % _TAU
+            g = _TAU - d
+            if d < g:
+                g = d
+            if g < best:
+                best = g
+        out.append(best)
+    return out
+
+
+class _Candidates:
+    """The candidate centres of a label box of half sizes hw, hh, as their costs (all at once: the search
+    goes cheapest first) and their centres, each made only when the search reaches it.
+
+    In order: a polygon's own anchor first (when not relaxed); a point's 16 directions at each distance;
+    an arrow's places along it (middle first) at each distance, left of it then right; a trial line's
+    places in from its near end then from its far end, at each distance and side.  The cost of a place is
+    its distance, how far it strays from the widest gap between the lines at the anchor (a point), from
+    the middle (an arrow) or from the end (a trial line)."""
+
+    __slots__ = ("costs", "centre")
+
+    def __init__(self, req: LabelReq, hw: float, hh: float, incident: list[float], relax: int) -> None:
+        dists = _DISTS[relax]
+        if req.kind in ("point", "polygon"):
+            self._around(req, hw, hh, incident, dists, req.kind == "polygon" and relax == 0)
+        elif req.kind == "arrow":
+            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists)
+        elif req.kind == "trial":
+            self._along_trial(req, hw, hh, dists[:3] if relax == 0 else dists)
+        else:
+            self.costs, self.centre = [], None
+
+    def _around(self, req, hw, hh, incident, dists, anchor_first) -> None:
+        p, r0 = req.anchor, req.r0
+        gaps = _gaps(incident)
+        edges = [_edge(u, hw, hh) for u in _DIRS]
+        away = [2.0 * (math.pi - gap) for gap in gaps]
+        first = [0.0] if anchor_first else []
+        self.costs = first + [a + 0.8 * dist + lean for dist in dists for a, lean in zip(away, _DIR_LEAN)]
+        skip = len(first)
+
+        def centre(i: int) -> Pt:
+            if i < skip:
+                return p
+            k, j = divmod(i - skip, 16)
+            return shifted(p, _DIRS[j], r0 + dists[k] + edges[j])
+        self.centre = centre
+
+    def _along_arrow(self, req, hw, hh, dists) -> None:
+        tail, tip = req.other, req.anchor
+        v = (tip[0] - tail[0], tip[1] - tail[1])
+        u = unit_vector(v)
+        sides = ((-u[1], u[0]), (u[1], -u[0]))
+        self.costs = [3.0 * abs(f - 0.5) + 0.8 * dist + side * 0.1
+                      for dist in dists for f in _ARROW_F for side in (0, 1)]
+        n_f = len(_ARROW_F)
+
+        def centre(i: int) -> Pt:
+            k, rest = divmod(i, 2 * n_f)
+            f, side = divmod(rest, 2)
+            nn = sides[side]
+            return shifted(shifted(tail, v, _ARROW_F[f]), nn, dists[k] + 0.3 + _edge(nn, hw, hh))
+        self.centre = centre
+
+    def _along_trial(self, req, hw, hh, dists) -> None:
+        end, start = req.anchor, req.other
+        v = unit_vector((start[0] - end[0], start[1] - end[1]))
+        sides = ((-v[1], v[0]), (v[1], -v[0]))
+        self.costs = [0.1 * s + 0.8 * dist + far * 1.0
+                      for dist in dists for s in _TRIAL_S for _ in sides for far in (0, 1)]
+        n_s = len(_TRIAL_S)
+
+        def centre(i: int) -> Pt:
+            k, rest = divmod(i, 4 * n_s)
+            s, rest = divmod(rest, 4)
+            side, far = divmod(rest, 2)
+            nn = sides[side]
+            a = shifted(start, v, -_TRIAL_S[s]) if far else shifted(end, v, _TRIAL_S[s])
+            return shifted(a, nn, dists[k] + _edge(nn, hw, hh))
+        self.centre = centre
+
+
+def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> list[Command]:
+    """Put every label where it overlaps no other label, arrowhead or symbol, inside ``plot``.
+
+    A small candidate search: positions around the anchor are scored by how much line they would
+    cover (a white background hides it) and how well they sit in the widest gap between the lines at
+    the anchor; overlaps with labels, arrowheads, pins and dots are forbidden.  Optional labels
+    (on arrows, trial lines and images) are left out when no free place exists.
+    """
+    placed: list[Rect] = []
+    out: list[Command] = []
+    order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
+                                                        ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
+    segs = _Segments(d.segments)
+    for i in order:
+        req = d.labels[i]
+        spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
+        ext = measure(spans)
+        hw, hh = ext.width / 2 + LABEL_PAD, ext.height / 2 + LABEL_PAD
+        incident = (incident_directions(req.anchor, [d.segments[j] for j in segs.around(req.anchor, 0.2)])
+                    if req.kind == "point" else [])
+        # the neighbourhood every candidate box lies in: only what is in it can collide
+        reach = _reach(req, hw, hh)
+        near_segs = segs.near(reach)
+        near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
+        near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
+        best = None
+        for relax in (0, 1):
+            best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
+                                   near_placed, near_hard, near_segs, req.mandatory)
+            if best is not None:
+                break
+        if best is None:
+            if not req.mandatory:
+                continue
+            # last resort: the nearest position inside the plot that overlaps no other label
+            for relax in (0, 1):
+                cands = _Candidates(req, hw, hh, incident, relax)
+                for i, cost in enumerate(cands.costs):
+                    centre = cands.centre(i)
+                    box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
+                    if plot.contains(box) and not any(box.overlaps(o, 0.3) for o in near_placed):
+                        if best is None or cost < best[0]:
+                            best = (cost, centre, box)
+            if best is None:
+                raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
+        _, centre, box = best
+        placed.append(box)
+        x = centre[0] - ext.width / 2
+        y = centre[1] - (ext.top + ext.bottom) / 2
+        out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
+        out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
+    return out
+
+
+def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
+                    near_hard: list[Rect], near_segs: "_Segments", mandatory: bool):
+    """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
+    or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
+    part of a thick line.  A score is the candidate's cost plus what it hides of the lines (never
+    negative), so the candidates are tried cheapest first and the search stops at the first whose cost
+    exceeds the best score found: most labels are placed by their first few candidates, and only their
+    centres are made.  The arithmetic of a score is the exhaustive test's, operation for operation, so
+    the choice is the same to the last bit (a property test holds it to the exhaustive search, ties
+    included)."""
+    costs = cands.costs
+    if not costs:
+        return None
+    centre_of = cands.centre
+    tol = 1e-6
+    pl, pt, pr, pb = plot.left - tol, plot.top - tol, plot.right + tol, plot.bottom + tol
+    obstacles = [(o.left, o.top, o.right + gap, o.bottom + gap, gap)
+                 for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)) for o in rects]
+    segments = near_segs.rows
+    w, h = 2 * hw, 2 * hh
+    best_total, best_i = math.inf, -1
+    for i in sorted(range(len(costs)), key=costs.__getitem__):     # cheapest first, ties in their order
+        cost = costs[i]
+        if cost > best_total:                   # nothing left can score lower (or tie)
+            break
+        x, y = centre_of(i)
+        le, to = x - hw, y - hh
+        ri, bo = le + w, to + h
+        if not (le >= pl and ri <= pr and to >= pt and bo <= pb):
+            continue
+        if any(le < o_r and o_l < ri + gap and to < o_b and o_t < bo + gap
+               for o_l, o_t, o_r, o_b, gap in obstacles):
+            continue
+        thin = thick = 0.0
+        for x0, y0, x1, y1, a0, a1, dx, dy, heavy, length in segments:
+            if x0 <= ri and x1 >= le and y0 <= bo and y1 >= to:      # else it adds exactly 0.0
+                got = _clip(a0, a1, dx, dy, le, to, ri, bo) * length
+                if heavy:
+                    thick += got
+                else:
+                    thin += got
+        if not mandatory and thick > 0:         # an optional label never hides part of a thick line
+            continue
+        total = cost + 3.0 * thin + 20.0 * thick
+        if total < best_total or (total == best_total and i < best_i):
+            best_total, best_i = total, i
+    if best_i < 0:
+        return None
+    x, y = centre_of(best_i)
+    return best_total, (x, y), Rect(x - hw, y - hh, w, h)
+
+
+class _Segments:
+    """The line segments of a drawing, one row each: the bounding box, the start, the run (end minus
+    start), whether the line is heavy and its length."""
+
+    __slots__ = ("rows",)
+
+    def __init__(self, segments) -> None:
+        rows = []
+        for a, b, heavy, *_ in segments:
+            a0, a1, b0, b1 = float(a[0]), float(a[1]), float(b[0]), float(b[1])
+            rows.append((min(a0, b0), min(a1, b1), max(a0, b0), max(a1, b1), a0, a1, b0 - a0, b1 - a1,
+                         bool(heavy), math.hypot(b0 - a0, b1 - a1)))
+        self.rows = rows
+
+    def around(self, p: Pt, margin: float) -> list[int]:
+        """Indices, in order, of the segments whose boxes grown by ``margin`` hold ``p`` (every line
+        that can leave ``p`` within a tolerance below ``margin`` / 2 is among them)."""
+        x, y = p
+        return [i for i, (x0, y0, x1, y1, *_) in enumerate(self.rows)
+                if x0 - margin <= x <= x1 + margin and y0 - margin <= y <= y1 + margin]
+
+    def near(self, reach: Rect) -> "_Segments":
+        """The segments whose boxes meet ``reach``, in their order."""
+        le, to, ri, bo = reach.left, reach.top, reach.right, reach.bottom
+        sub = object.__new__(_Segments)
+        sub.rows = [r for r in self.rows if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
+        return sub
+
+
+def _clip(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
+          bottom: float) -> float:
+    """The fraction of the segment from (a0, a1) along (dx, dy) inside a box (Liang-Barsky)."""
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, a0 - left), (dx, right - a0), (-dy, a1 - top), (dy, bottom - a1)):
+        if abs(p) < 1e-12:                      # parallel to this edge: outside, or no limit
+            if q < 0:
+                return 0.0
+            continue
+        t = q / p
+        if p < 0:
+            if t > t0:
+                t0 = t
+        elif t < t1:
+            t1 = t
+        if t0 > t1:
+            return 0.0
+    return t1 - t0
+
+
+_FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin
+
+
+def _reach(req: LabelReq, hw: float, hh: float) -> Rect:
+    """A rectangle holding every candidate box of ``req`` (see :class:`_Candidates`)."""
+    r = req.r0 + _FAR + 2 * (hw + hh)
+    if req.kind in ("point", "polygon") or req.other is None:
+        x, y = req.anchor
+        return Rect(x - r, y - r, 2 * r, 2 * r)
+    a, b = req.anchor, req.other
+    if req.kind == "trial":
+        r += 22.0               # candidates run up to 22 mm in from either end
+    return Rect.from_edges(min(a[0], b[0]) - r, min(a[1], b[1]) - r, max(a[0], b[0]) + r, max(a[1], b[1]) + r)

@@ -1,0 +1,28 @@
+"""What a solved study becomes on paper: its worked-solution sheets, and the built-in example scene."""
+
+from __future__ import annotations
+
+from importlib import resources
+from pathlib import Path
+
+from .study import Study
+
+
+def builtin_example() -> Path:
+    """The scene ``drafting`` renders with no arguments: the notes' velocity Example 1."""
+    return Path(str(resources.files("drafting.app") / "examples" / "notes-velocity-example-1.toml"))
+
+
+def sheets_for(study: Study):
+    """The sheets of a solved study: one, or as many pages as its diagrams need to stay legible."""
+    from ..layout.sheet import ResultRow, SheetInfo, compose_sheets, sheet_date
+    s = study.scene
+    info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
+                     date=sheet_date(), units=s.units, notes=study.notes + study.warnings)
+    rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
+    return compose_sheets(study.construction, info, rows)
+
+
+def sheet_for(study: Study):
+    """The first sheet of a study (callers that want one page)."""
+    return sheets_for(study)[0]
