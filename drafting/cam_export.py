@@ -34,7 +34,9 @@ INSUNITS = {"mm": 4, "millimeter": 4, "cm": 5, "centimeter": 5, "m": 6, "meter":
 def profile_for_export(model, tolerance_rel: float = 1e-6) -> tuple[np.ndarray, float]:
     """(points 2 x N in SI, absolute tolerance in SI) of a cam scene's model: the profile-only path
     (:func:`constructions.cams.profile.profile_samples`), trimmed where the analysis finds undercut."""
-    from constructions.cams.profile import analyse, evaluate, profile_samples, trim   # the cam engine, when used
+    from constructions.cams.envelope import evaluate   # the cam engine, when used
+    from constructions.cams.profile import analyse, trim
+    from constructions.cams.sampling import profile_samples
     p, f = model.program, model.follower
     cp = analyse(p, f, samples=1024)
     tol = tolerance_rel * cp.size

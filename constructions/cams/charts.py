@@ -15,7 +15,7 @@ import numpy as np
 
 from ..record import Chart, Diagram, Role, Series
 from .laws import Program, TAU
-from .profile import segment_breaks
+from .search import segment_breaks
 
 
 def chart_diagram(name: str) -> Diagram:

@@ -13,7 +13,7 @@ Notes, "Graphical construction of cam (roller follower)" and "Roller follower wi
    face: the face line square to the line at r_b + s_i; a knife edge: the edge itself);
 8. draw the profile tangent to every roller circle (face line): their envelope.
 
-The stations and roller centres are computed in the cam frame of :mod:`constructions.cams.profile`; the
+The stations and roller centres are computed in the cam frame of :mod:`constructions.cams.envelope`; the
 profile drawn is the exact envelope, its contact points on the roller circles marked.  Measured values
 read off the construction: the roller centres and contact points at the
 segment joins (their distance from O is the prime circle plus the lift tabulated there), and the pressure angle at the station where it is largest (the angle between the
@@ -32,7 +32,9 @@ from ..quantities import Measured
 from ..record import Circle, Construction, Curve, Diagram, Note, Pivot, Point, Role, Segment, StepKind, Value
 from .charts import svaj_charts
 from .laws import DWELL, TAU, Program
-from .profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, CamProfile, Follower, analyse, evaluate
+from .envelope import evaluate
+from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
+from .profile import CamProfile, analyse
 
 CAM = Diagram("cam", "profile")
 

@@ -262,6 +262,12 @@ class Program:
         k = seg.sign * seg.lift
         return (float(self.levels[i] + k * f[0][0]),) + tuple(float(k * f[n][0] / seg.beta ** n) for n in (1, 2, 3))
 
+    def end_velocity(self, i: int, u: float) -> float:
+        """s' of segment ``i`` exactly at one of its ends or inner joins (u = 0, 1/2 for a parabola, 1):
+        :func:`end_slope` scaled, no arrays."""
+        seg = self.segments[i]
+        return 0.0 if seg.kind == DWELL else seg.sign * seg.lift * end_slope(seg.law, u) / seg.beta
+
     def with_speed(self, theta, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(s, v, a, j) in SI with the cam turning steadily at ``omega`` (rad/s; its magnitude counts)."""
         s, d1, d2, d3 = self.derivatives(theta)
