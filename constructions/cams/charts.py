@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from ..record import Chart, Diagram, Role, Series
-from .laws import Program, TAU
+from .laws import Program
 from .search import segment_breaks
 
 

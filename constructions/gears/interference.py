@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 
-from .mesh import AT_LIMIT, CLEAR, INTERFERENCE, Pair, contact_geometry
+from .contact import AT_LIMIT, CLEAR, INTERFERENCE, Pair, contact_geometry
 from .tooth import Gear, ToothSystem
 
 REL = 1e-9
