@@ -30,6 +30,7 @@ import numpy as np
 from ..geometry import Vec
 from ..quantities import Measured
 from ..record import Circle, Construction, Curve, Diagram, Note, Pivot, Point, Role, Segment, StepKind, Value
+from ..tolerance import STATION_REL
 from .charts import svaj_charts
 from .laws import DWELL, TAU, Program
 from .envelope import evaluate
@@ -163,7 +164,7 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     names: dict[str, int] = {}
     k_max = int(np.argmax(ev.s))
     join_stations = sorted({int(round(t / step)) % n for t in program.starts
-                            if abs(t / step - round(t / step)) < 1e-9})
+                            if abs(t / step - round(t / step)) < STATION_REL})
     for i in join_stations:
         tag = _deg(th[i])
         measured.append(Measured(f"P_{tag}", "length", _v(centres[:, i])))

@@ -14,14 +14,10 @@ import numpy as np
 
 from .envelope import Evaluation, convex_curvature_pitch, evaluate
 from .follower import FACES, FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
+from ..tolerance import CUSP_REL, FACE_TURN_MIN, VELOCITY_JUMP_REL
 from .laws import TAU, Program
 from .search import extremum, spans
 from .trimming import trim_envelope
-
-CUSP_REL = 1e-9
-"""The roller radius is *at* the cusp limit when it equals the pitch curve's smallest convex radius of
-curvature within this fraction of the cam's size (designed tangency built from floats reads as equal)."""
-
 
 @dataclass
 class CamProfile:
@@ -120,7 +116,8 @@ def velocity_jumps(program: Program) -> list[float]:
     another law): corners of the pitch curve."""
     n = len(program.segments)
     return [float(program.starts[(i + 1) % n]) for i in range(n)
-            if abs(program.end_velocity(i, 1.0) - program.end_velocity((i + 1) % n, 0.0)) > 1e-9 * program.lift]
+            if abs(program.end_velocity(i, 1.0) - program.end_velocity((i + 1) % n, 0.0))
+            > VELOCITY_JUMP_REL * program.lift]
 
 
 def check_face(program: Program, f: Follower) -> None:
@@ -128,7 +125,7 @@ def check_face(program: Program, f: Follower) -> None:
     else the face stands still relative to the cam and the envelope runs off) and lift away from it (the
     arm below square to the line of centres: beta0 + psi < 90 deg)."""
     t, k = extremum(program, lambda x: f.sense * program.derivatives(x)[1], largest=False)
-    if 1.0 + k <= 1e-9:
+    if 1.0 + k <= FACE_TURN_MIN:
         raise ValueError(f"the arm turns as fast as the cam at {math.degrees(t):.4g} deg (d psi / d theta = "
                          f"{-f.sense:+d}): the face stops turning relative to the cam and has no envelope; swing "
                          f"more slowly (a longer rise) or turn the cam the other way")

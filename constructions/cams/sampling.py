@@ -20,9 +20,9 @@ The sampling.  The program is cut into its smooth pieces (segments; a parabola's
 evenly on its own with its ends as samples (a join, where s'' and the curvature jump, is always a point):
 the step is ``sqrt(8 tol / g_max)`` with ``g_max`` the piece's largest rate, searched on a grid of
 :data:`GRID` points (one-sided at the ends), refined by the parabola through the best point and its
-neighbours and raised by :data:`CHORD_MARGIN`.  A dwell's rate is its arc's radius, exactly.  The points
-need only s and s' (no s'', curvature, pressure angle or jerk, which :func:`.envelope.evaluate` computes for
-the drawing and the checks).  The tests measure the chord error of the result against the exact curve
+neighbours and raised by :data:`~constructions.tolerance.CHORD_MARGIN`.  A dwell's rate is its arc's
+radius, exactly.  The points need only s and s' (no s'', curvature, pressure angle or jerk, which
+:func:`.envelope.evaluate` computes for the drawing and the checks).  The tests measure the chord error of the result against the exact curve
 between every pair of neighbours.
 
 Corners.  Where s' jumps (uniform motion meeting a dwell) the pitch curve has a corner.  A roller's
@@ -38,12 +38,10 @@ from __future__ import annotations
 import math
 import numpy as np
 
+from ..tolerance import CHORD_MARGIN, CORNER_SLOPE_REL, ONE_SIDED_INSET
 from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, Follower, face_terms
 from .frames import quarter_turn as _J
 from .laws import DWELL, INNER_JOINS, NORMALISED, Program, normalised_low
-
-CHORD_MARGIN = 1.05
-"""The largest chord-error rate found on a piece's grid is raised by this factor before its step is chosen."""
 
 GRID = 48
 """Grid points per smooth piece on which the largest chord-error rate is searched."""
@@ -120,7 +118,7 @@ def rate_max(program: Program, f: Follower, cuts) -> list[float]:
     out = [_dwell_rate(f, program.levels[pc[0]]) for pc in cuts]
     if not moving:
         return out
-    x = np.linspace(1e-9, 1.0 - 1e-9, GRID)
+    x = np.linspace(ONE_SIDED_INSET, 1.0 - ONE_SIDED_INSET, GRID)
     ss, d1s, d2s = [], [], []
     for k in moving:
         i, u0, u1 = cuts[k][:3]
@@ -157,7 +155,7 @@ def profile_samples(program: Program, f: Follower, tolerance: float) -> tuple[np
     # is the corner itself, the same from either side)
     corner = [f.kind != KNIFE and abs(program.end_velocity(cuts[k][0], cuts[k][2])
                                     - program.end_velocity(cuts[(k + 1) % n][0], cuts[(k + 1) % n][1]))
-              > 1e-12 * program.lift for k in range(n)]
+              > CORNER_SLOPE_REL * program.lift for k in range(n)]
     ss, dd, tt, first = [], [], [], []
     at = 0
     for k, (pc, g) in enumerate(zip(cuts, gmax)):
@@ -293,4 +291,4 @@ def profile_points(program: Program, f: Follower, tolerance: float) -> np.ndarra
     return profile_samples(program, f, tolerance)[1]
 
 
-__all__ = ["profile_samples", "profile_points", "chord_error_rate", "pieces", "rate_max", "CHORD_MARGIN", "GRID"]
+__all__ = ["profile_samples", "profile_points", "chord_error_rate", "pieces", "rate_max", "GRID"]

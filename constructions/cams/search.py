@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 
+from ..tolerance import SPAN_END_RAD, SPAN_JOIN_RAD
 from .laws import TAU, Program
 
 
@@ -53,11 +54,11 @@ def extremum(program: Program, fn, *, per_piece: int = 256, largest: bool = True
 
 def _boundaries(g, a: np.ndarray, b: np.ndarray, ga: np.ndarray) -> np.ndarray:
     """Where ``g`` changes sign inside each bracket [a, b] (g(a) = ga on the one side): every bracket cut in
-    16 at once per round (one call of ``g``), to 1e-15 rad."""
+    16 at once per round (one call of ``g``), to :data:`~constructions.tolerance.SPAN_END_RAD`."""
     u = np.arange(1, 16) / 16.0
     pos = ga > 0
     for _ in range(16):
-        if not np.max(b - a) >= 1e-15:
+        if not np.max(b - a) >= SPAN_END_RAD:
             break
         x = a[:, None] + (b - a)[:, None] * u[None, :]
         side = (np.asarray(g(x.ravel()), dtype=float).reshape(x.shape) > 0) == pos[:, None]
@@ -90,11 +91,11 @@ def spans(program: Program, g, *, per_piece: int = 256) -> list[tuple[float, flo
             out.append([start, grid[p, -1]])
     merged: list[list[float]] = []
     for a, b in out:
-        if merged and abs(a - merged[-1][1]) < 1e-12:
+        if merged and abs(a - merged[-1][1]) < SPAN_JOIN_RAD:
             merged[-1][1] = b
         else:
             merged.append([a, b])
-    if len(merged) > 1 and merged[0][0] <= 1e-12 and merged[-1][1] >= TAU - 1e-12:
+    if len(merged) > 1 and merged[0][0] <= SPAN_JOIN_RAD and merged[-1][1] >= TAU - SPAN_JOIN_RAD:
         merged[0][0] = merged[-1][0] - TAU
         merged.pop()
     return [(a, b) for a, b in merged]

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..tolerance import DECISION
 from .envelope import Evaluation
 from .follower import FACES, Follower
 
@@ -16,7 +17,7 @@ def trim_envelope(f: Follower, ev: Evaluation, size: float) -> np.ndarray:
     by the crossing of its two branches (see :func:`.profile.trim`)."""
     C = ev.profile
     n = C.shape[1]
-    tol = 1e-9 * size
+    tol = DECISION * size
     keep = np.ones(n, dtype=bool)
     if f.kind in FACES:
         # a point is cut if some face line lies between it and the centre: p . u_j > rb + s_j

@@ -25,6 +25,7 @@ counter-clockwise flank (the clockwise flank is the mirror image).
 from __future__ import annotations
 
 import math
+from ..tolerance import ROOT_BITS, UNDERCUT_REL
 from .flank import CutFlank
 from .tooth import Gear, ToothSystem, inv
 
@@ -58,7 +59,7 @@ def straight_depth(gear: Gear) -> float:
     return gear.system.d - tip_round(gear) * (1.0 - math.sin(gear.system.pressure_angle))
 
 
-def is_undercut(gear: Gear, tol: float = 1e-12) -> bool:
+def is_undercut(gear: Gear, tol: float = UNDERCUT_REL) -> bool:
     """The straight flank reaches past the interference point: depth > r sin^2 phi."""
     phi = gear.system.pressure_angle
     return straight_depth(gear) > gear.pitch_radius * math.sin(phi) ** 2 + tol * gear.system.module
@@ -121,7 +122,7 @@ def cut_flank(gear: Gear, points: int = FILLET_POINTS) -> CutFlank | None:
                 hi = mid
             else:
                 lo = mid
-            if hi - lo <= 2e-16 * max(1.0, abs(hi)):
+            if hi - lo <= ROOT_BITS * max(1.0, abs(hi)):
                 break
         return hi
 
