@@ -11,7 +11,6 @@ FLANK_POINTS = 24
 on a module-5 tooth, ~5 um on paper at 2:1, 1/50 of a thin line; 16 points 6.3 um, 32 points 1.5 um)."""
 
 
-
 @dataclass(frozen=True)
 class CutFlank:
     """One flank as the rack cutter leaves it: the involute from ``involute_from`` to the tip, then the
