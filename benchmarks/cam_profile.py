@@ -6,7 +6,7 @@ The error is the largest distance between the method's polyline and the exact pr
 Hausdorff distance against the analytic envelope at 2^17 points, whose own chord error is below 1e-9 of the
 cam size), as a fraction of the cam size (prime circle + lift); the time is the median of 51 runs.  The cam is
 the notes' roller cam (base 1.5 in, roller 0.5 in, SHM 0.8 in).  The profile-only path
-(:func:`constructions.cams.profile.profile_points`) is run at several chord tolerances; at 1e-6 of the cam
+(:func:`constructions.cams.sampling.profile_points`) is run at several chord tolerances; at 1e-6 of the cam
 size it is the default (what the export writes).
 
 Usage: ``python benchmarks/cam_profile.py [--chart gallery/cam-accuracy-time.svg]`` (the chart: log-log, error
@@ -24,7 +24,9 @@ import numpy as np  # noqa: E402
 from shapely.geometry import Polygon  # noqa: E402
 
 from constructions.cams.laws import DWELL, HARMONIC, RETURN, RISE, TAU, Program, Segment  # noqa: E402
-from constructions.cams.profile import ROLLER, Follower, evaluate, profile_points  # noqa: E402
+from constructions.cams.envelope import evaluate  # noqa: E402
+from constructions.cams.follower import ROLLER, Follower  # noqa: E402
+from constructions.cams.sampling import profile_points  # noqa: E402
 
 IN = 0.0254
 D = math.radians

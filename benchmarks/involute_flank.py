@@ -4,7 +4,7 @@ distance between the exact involute and the straight chords that draw it -- and 
 tooth outline (best of 7).  Gears: 20 and 40 teeth, module 5 mm, 20 deg full depth (the gallery pair), and
 a 12-tooth pinion (a long flank for its size).  The chord error of each chord is found by sampling the
 exact involute at 64 points between its ends.  Measured (this machine): 16 points 6.3 um, 24 points
-2.7 um, 32 points 1.5 um in the model for module 5; the default (constructions.gears.mesh.FLANK_POINTS =
+2.7 um, 32 points 1.5 um in the model for module 5; the default (constructions.gears.flank.FLANK_POINTS =
 24) keeps it near 5 um on paper at 2:1, about 1/50 of a thin line (0.25 mm), at ~0.1 ms a tooth; the
 error scales with the module.
 
@@ -18,7 +18,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # run from a checkout, uninstalled
 
-from constructions.gears.mesh import FLANK_POINTS  # noqa: E402
+from constructions.gears.flank import FLANK_POINTS  # noqa: E402
 from constructions.gears.tooth import Gear, ToothSystem, involute_point, roll_angle  # noqa: E402
 from constructions.geometry import Vec  # noqa: E402
 

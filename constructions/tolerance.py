@@ -74,3 +74,82 @@ class Tolerance:
     @property
     def length(self) -> float:
         return self.rel * self.length_scale
+
+
+# cams and gears -----------------------------------------------------------------------------------------------
+
+CUSP_REL = DECISION
+"""A cam's roller radius is *at* the cusp limit (a face's smallest radius of curvature at zero) within this
+fraction of the cam's size: a designed tangency built from floats reads as equal, as every length decision."""
+
+TURN_REL = 1e-9
+"""A motion program's segment angles cover one turn when their sum is within this fraction of 360 deg: angles
+typed to nine digits add up within it, a missing second of arc (5e-6 rad) does not."""
+
+CLOSING_REL = 1e-9
+"""A motion program is back at zero lift when it ends within this fraction of its largest lift (and never
+below zero by more): lifts written in millimetres to nine digits close within it."""
+
+START_SNAP = 1e-12
+"""A cam angle within this fraction of a turn below a segment's start belongs to that segment: a station
+built as k equal steps carries a few ulp (3e-14 rad) of rounding, far less than any step."""
+
+JOIN_JUMP_REL = 1e-9
+"""A derivative of the follower's motion jumps at a join when it changes by more than this fraction of its
+scale (the lift over the shortest segment's angle to its power): exact laws meet within rounding, 1e-16."""
+
+VELOCITY_JUMP_REL = 1e-9
+"""s' jumps at a join (a corner of the pitch curve, which the analysis trims at) when its one-sided values,
+computed exactly from the laws' end slopes, differ by more than this fraction of the lift per radian."""
+
+CORNER_SLOPE_REL = 1e-12
+"""The profile-only sampling keeps both one-sided points at a join where s' differs by more than this
+fraction of the lift per radian: exact end slopes are equal to the bit where s' is continuous."""
+
+FACE_TURN_MIN = 1e-9
+"""An oscillating flat face must turn against the cam at more than this fraction of the cam's rate (sigma +
+s'): nearer to standing still, the contact's place along the face (a ratio over it) is rounding noise."""
+
+SPAN_END_RAD = 1e-15
+"""The ends of a span along the cam angle are cut to this many radians: a few ulp of a turn (the spacing of
+floats near 2 pi is 9e-16), past which the cam angle has no more bits."""
+
+SPAN_JOIN_RAD = 1e-12
+"""Spans along the cam angle whose ends lie closer than this (in radians) are one span, and one that reaches
+both 0 and 2 pi within it wraps round: far above the ends' precision, far below any grid step."""
+
+ONE_SIDED_INSET = 1e-9
+"""A law's piece is read this fraction of its width inside its ends, so that each end takes the piece's own
+one-sided value (at the end itself the neighbouring piece's formula would be read)."""
+
+SVAJ_JUMP_REL = 1e-9
+"""The s, v, a, j charts break their curve at a join where the value jumps by more than this fraction of the
+curve's largest magnitude (plus one): a continuous law's pieces meet within rounding."""
+
+STATION_REL = 1e-9
+"""A join of the program falls on a station of the cam's construction when it lies within this fraction of
+a station step of one: segments typed in whole degrees meet the divisions within rounding."""
+
+CHORD_MARGIN = 1.05
+"""The largest chord-error rate found on a piece's grid is raised by this factor before its step is chosen:
+the grid's best point, refined by a parabola, may still fall a few per cent short of the true largest."""
+
+UNDERCUT_REL = 1e-12
+"""A rack cutter's straight flank undercuts a gear when it reaches past the interference point by more than
+this many modules: a gear of exactly the limiting number of teeth (a designed limit) reads as not undercut."""
+
+ROOT_BITS = 2e-16
+"""The bisections along a rack cutter's roll run until the bracket is this fraction of the angle (one ulp,
+at least of 1 rad): the fillet's crossing with the involute to the last bits."""
+
+WHOLE_REL = 1e-9
+"""A tooth count from a closed form within this fraction of a whole number is that number (relative to the
+count, at least 1): a case exactly at the interference limit counts as free, as the tables do."""
+
+TRAIN_RATIO_REL = 1e-12
+"""Speed ratios in a gear train (pure numbers, mostly of order 1) that differ by less than this are the same
+(a loop of meshes: this fraction of a ratio above 1): ratios of whole teeth agree to rounding, a lock by far more."""
+
+STANDSTILL = 1e-12
+"""A member of a gear train whose speed is below this (rad/s) stands still: no torque follows from a power
+there, and no sense of rotation is drawn for it."""

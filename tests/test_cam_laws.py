@@ -7,8 +7,9 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
+from constructions.cams.charts import svaj_series
 from constructions.cams.laws import (CYCLOIDAL, DWELL, HARMONIC, LAWS, PARABOLIC, POLY345, POLY4567, RETURN, RISE,
-                                     UNIFORM, Program, Segment, law_name, normalised)
+                                     UNIFORM, Program, Segment, end_slope, law_name, normalised, normalised_low)
 
 D = math.radians
 
@@ -113,7 +114,6 @@ def test_program_errors():
 def test_chart_pieces_keep_their_one_sided_values():
     """Each piece of the s-v-a-j charts ends on its own law's value (the jerk of a cycloidal rise ends at
     +4 pi^2 h / beta^3, not at the dwell's 0), with a break before the next piece's value."""
-    from constructions.cams.charts import svaj_series
     p = Program([Segment(RISE, D(120), 0.01, CYCLOIDAL), Segment(DWELL, D(40)), Segment(RETURN, D(120), 0.01, CYCLOIDAL),
                  Segment(DWELL, D(80))])
     x, (s, v, a, j) = svaj_series(p, None)
@@ -126,9 +126,6 @@ def test_chart_pieces_keep_their_one_sided_values():
 def test_profile_shortcuts_equal_the_laws():
     """The profile-only path's f, f' (fewer operations) and its exact slopes at ends and inner joins equal the
     laws' own formulas."""
-    import numpy as np
-
-    from constructions.cams.laws import LAWS, end_slope, normalised, normalised_low
     u = np.linspace(0.0, 1.0, 1001)
     for law in LAWS:
         f = normalised(law, u)

@@ -11,8 +11,11 @@ from shapely.geometry import LinearRing, Polygon
 
 from constructions.cams.check import closed_form_point, min_base_radius_flat
 from constructions.cams.construction import construct
-from constructions.cams.laws import CYCLOIDAL, DWELL, HARMONIC, LAWS, RETURN, RISE, Program, Segment
-from constructions.cams.profile import FLAT, KNIFE, OSC_FLAT, ROLLER, Follower, analyse, cam_size, evaluate
+from constructions.cams.envelope import evaluate
+from constructions.cams.follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
+from constructions.cams.laws import CYCLOIDAL, DWELL, HARMONIC, LAWS, RETURN, RISE, UNIFORM, Program, Segment
+from constructions.cams.profile import analyse, cam_size, check_face
+from constructions.cams.sampling import chord_error_rate, profile_samples
 
 D = math.radians
 IN = 0.0254
@@ -171,7 +174,6 @@ def test_knife_edge_and_errors():
 def test_oscillating_roller_equals_kennedy(law, swing, a, arm, sense):
     """The oscillating roller's envelope (derivatives of the rotated pitch curve) against the contact point
     found through the instant centre of cam and arm (Kennedy), at every construction station."""
-    from constructions.cams.profile import OSCILLATING
     rb, rr = 0.035, 0.007
     if not abs(a - arm) < rb + rr < a + arm:
         return
@@ -223,7 +225,6 @@ def _chord_errors(p, f, th, C, k=24):
 
 
 def _sampling_cam(law, kind, e, sense, rb):
-    from constructions.cams.profile import OSCILLATING
     osc = kind == OSCILLATING
     h = D(18) if osc else 0.02
     p = Program([Segment(DWELL, D(50)), Segment(RISE, D(100), h, law), Segment(DWELL, D(40)),
@@ -248,7 +249,6 @@ def test_profile_samples_every_chord_within_the_tolerance(law, kind, e, sense, r
     """The profile-only path (:mod:`constructions.cams.sampling`): every point on the exact envelope (the
     full evaluation's, at its cam angle), every chord within the tolerance of the exact curve between its
     ends, for every law (uniform's corners included) and every follower."""
-    from constructions.cams.profile import profile_samples
     p, f = _sampling_cam(law, kind, e, sense, rb)
     size = cam_size(p, f)
     tol = rel * size
@@ -268,7 +268,6 @@ def test_profile_samples_every_chord_within_the_tolerance(law, kind, e, sense, r
 def test_profile_points_default_on_the_notes_cam():
     """The benchmark's default: the notes' roller cam at 1e-6 of its size, every chord within it, and fewer
     points than one even step everywhere would need (2585 at the tightest bend's step)."""
-    from constructions.cams.profile import profile_samples
     p = notes_program()
     f = Follower(ROLLER, 1.5 * IN, 0.5 * IN)
     size = f.prime_radius + p.lift
@@ -284,7 +283,6 @@ def test_profile_points_default_on_the_notes_cam():
 
 def test_chord_error_rate_is_the_curve_s_own():
     """g = |C' x C''| / |C'| from s, s', s'' against numerical derivatives of the exact envelope."""
-    from constructions.cams.sampling import chord_error_rate
     for kind in (KNIFE, ROLLER, FLAT, "oscillating roller", OSC_FLAT):
         p, f = _sampling_cam(HARMONIC, kind, 0.007, -1, 0.04)
         th = np.linspace(D(55), D(140), 30)
@@ -300,8 +298,6 @@ def test_uniform_corners_arcs_and_folds():
     """Uniform motion: s' jumps at its ends, the pitch curve has corners.  A roller's profile takes the
     roller circle's arc at a reflex corner (the start of a rise of a CCW cam) and is trimmed where the
     branches cross (a convex corner); nothing self-intersects."""
-    from constructions.cams.laws import UNIFORM
-    from constructions.cams.profile import profile_samples
     p, f = _sampling_cam(UNIFORM, ROLLER, 0.0, 1, 0.04)
     tol = 1e-6 * (f.prime_radius + p.lift)
     th, C = profile_samples(p, f, tol)
@@ -329,7 +325,6 @@ def test_uniform_corners_arcs_and_folds():
 def test_uniform_corners_are_named_and_the_drawn_profile_trimmed():
     """The analysis behind a sheet finds the joins where s' jumps and draws the profile the trim keeps:
     a uniform-motion cam's profile on the sheet never crosses itself (its raw envelope does)."""
-    from constructions.cams.laws import UNIFORM
     for kind, sense in ((ROLLER, 1), (ROLLER, -1), (FLAT, 1)):
         p, f = _sampling_cam(UNIFORM, kind, 0.0, sense, 0.04)
         cp = analyse(p, f, samples=2048)
@@ -387,7 +382,6 @@ def test_oscillating_flat_face_equals_kennedy(law, swing, a, ef, sense):
 def test_oscillating_flat_face_limits():
     """A dwell is an arc of the base circle (the face tangent to it); the face that would stop turning against
     the cam, or swing past square, is refused with the reason; undercut is found and trimmed."""
-    from constructions.cams.profile import check_face
     p = Program([Segment(RISE, D(120), D(15), CYCLOIDAL), Segment(DWELL, D(40)), Segment(RETURN, D(120), D(15),
                  CYCLOIDAL), Segment(DWELL, D(80))])
     f = Follower(OSC_FLAT, 0.04, sense=-1, pivot_distance=0.1, face_offset=0.01)

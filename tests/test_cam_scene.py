@@ -107,7 +107,8 @@ def test_export_csv_and_dxf_at_the_tolerance(tmp_path):
     import ezdxf
     import numpy as np
 
-    from constructions.cams.profile import evaluate, profile_samples
+    from constructions.cams.envelope import evaluate
+    from constructions.cams.sampling import profile_samples
     from drafting.app.cam_export import export
 
     scene = GALLERY / "notes-roller-cam.toml"

@@ -9,13 +9,16 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from constructions.errors import ConstructionError
-from constructions.gears.interference import (max_gear_for_pinion, min_equal_gears, min_pinion_with_gear,
+from constructions.gears.contact import AT_LIMIT, CLEAR, INTERFERENCE, Pair, contact_geometry
+from constructions.gears.generation import cut_flank, fewest_uncut
+from constructions.gears.interference import (interferes, max_gear_for_pinion, min_equal_gears, min_pinion_with_gear,
                                               min_pinion_with_rack, minimum_teeth_table, search_max_gear,
                                               search_min_pinion)
-from constructions.gears.mesh import AT_LIMIT, CLEAR, INTERFERENCE, Pair, contact_geometry, mesh_analysis
+from constructions.gears.mesh import mesh_analysis
 from constructions.gears.mesh_check import closed_form, notes_contact_ratio
 from constructions.gears.tooth import (Gear, ToothSystem, inv, involute_point, roll_angle, unwinding_points)
 from constructions.geometry import Vec
+from constructions.record import Dimension
 
 REL = 1e-9
 DEG = math.pi / 180
@@ -173,7 +176,6 @@ def test_the_minimum_teeth_table_closed_forms_agree_with_brute_force_everywhere(
 
 
 def _interferes_equal(n, phi, k):
-    from constructions.gears.interference import interferes
     return interferes(n, n, phi, k)
 
 
@@ -248,7 +250,6 @@ def test_an_internal_pair_built_at_the_limit(n1, n2, phi):
 def test_interference_is_dimensioned_on_the_drawing(n1, n2, start, end):
     """Where contact runs off the involutes the stretch is dimensioned on the path of contact: A to T1
     (AP - PT1), T2 to B (PB - PT2); none at the limit or clear."""
-    from constructions.record import Dimension
     s = system(0.01, 30.0 if n2 is None else 20.0)
     pair = Pair(Gear(n1, s)) if n2 is None else Pair(Gear(n1, s), Gear(n2, s))
     a = mesh_analysis(pair)
@@ -275,7 +276,6 @@ def test_an_undercut_pinion_is_drawn_and_said_as_generated():
     the generated outline: on the involute down to R_X, then the fillet), in the space diagram and in
     the involute diagram, and a step of its own says so with R_X (blank on a problem sheet: it is worked
     out, not given); a pinion of 20 teeth is drawn and said as before."""
-    from constructions.gears.generation import cut_flank, fewest_uncut
     s = ToothSystem(0.010, math.radians(30.0))
     pair = Pair(Gear(7, s), None, rack_system=s)
     a = mesh_analysis(pair)
@@ -301,7 +301,6 @@ def test_a_tooth_the_cutter_would_sever_is_said_and_drawn_as_involutes():
     """Three teeth with a deep dedendum: the cutter's tip round crosses the tooth's centre line -- it
     would cut the tooth off at its root.  The sheet says so in one warning and draws the involute teeth,
     not a self-crossing outline."""
-    from constructions.gears.generation import cut_flank
     s = ToothSystem(0.010, math.radians(14.71), 1.146, 1.408)
     pair = Pair(Gear(3, s), None, rack_system=s)
     assert cut_flank(pair.pinion).severed

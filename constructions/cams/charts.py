@@ -14,8 +14,9 @@ import math
 import numpy as np
 
 from ..record import Chart, Diagram, Role, Series
-from .laws import Program, TAU
-from .profile import segment_breaks
+from ..tolerance import ONE_SIDED_INSET, SVAJ_JUMP_REL
+from .laws import Program
+from .search import segment_breaks
 
 
 def chart_diagram(name: str) -> Diagram:
@@ -34,12 +35,12 @@ def svaj_series(program: Program, omega: float | None, per_piece: int = 48):
             continue
         g = np.linspace(lo, hi, per_piece)
         # evaluate just inside the piece so each end takes this piece's one-sided value
-        eps = (hi - lo) * 1e-9       # well inside: a station within 1e-12 turn of a start reads that segment
+        eps = (hi - lo) * ONE_SIDED_INSET     # well inside: a station within START_SNAP of a start reads that segment
         gi = np.clip(g, lo + eps, hi - eps)
         d = program.derivatives(gi)
         vals = [d[0], d[1] * w, d[2] * w ** 2, d[3] * w ** 3]
         if prev_end is not None:
-            jump = [abs(vals[k][0] - prev_end[k]) > 1e-9 * (1.0 + np.max(np.abs(vals[k]))) for k in range(4)]
+            jump = [abs(vals[k][0] - prev_end[k]) > SVAJ_JUMP_REL * (1.0 + np.max(np.abs(vals[k]))) for k in range(4)]
             if any(jump):
                 xs.append(float(lo))
                 for k in range(4):

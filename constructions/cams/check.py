@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from .laws import TAU, Program
-from .profile import FLAT, OSC_FLAT, OSCILLATING, Follower
+from .follower import FLAT, OSC_FLAT, OSCILLATING, Follower
 
 
 def _turn_back(theta: float, sense: int, x: float, y: float) -> tuple[float, float]:

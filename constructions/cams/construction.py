@@ -13,7 +13,7 @@ Notes, "Graphical construction of cam (roller follower)" and "Roller follower wi
    face: the face line square to the line at r_b + s_i; a knife edge: the edge itself);
 8. draw the profile tangent to every roller circle (face line): their envelope.
 
-The stations and roller centres are computed in the cam frame of :mod:`constructions.cams.profile`; the
+The stations and roller centres are computed in the cam frame of :mod:`constructions.cams.envelope`; the
 profile drawn is the exact envelope, its contact points on the roller circles marked.  Measured values
 read off the construction: the roller centres and contact points at the
 segment joins (their distance from O is the prime circle plus the lift tabulated there), and the pressure angle at the station where it is largest (the angle between the
@@ -30,9 +30,12 @@ import numpy as np
 from ..geometry import Vec
 from ..quantities import Measured
 from ..record import Circle, Construction, Curve, Diagram, Note, Pivot, Point, Role, Segment, StepKind, Value
+from ..tolerance import STATION_REL
 from .charts import svaj_charts
 from .laws import DWELL, TAU, Program
-from .profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, CamProfile, Follower, analyse, evaluate
+from .envelope import evaluate
+from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
+from .profile import CamProfile, analyse
 
 CAM = Diagram("cam", "profile")
 
@@ -161,7 +164,7 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     names: dict[str, int] = {}
     k_max = int(np.argmax(ev.s))
     join_stations = sorted({int(round(t / step)) % n for t in program.starts
-                            if abs(t / step - round(t / step)) < 1e-9})
+                            if abs(t / step - round(t / step)) < STATION_REL})
     for i in join_stations:
         tag = _deg(th[i])
         measured.append(Measured(f"P_{tag}", "length", _v(centres[:, i])))

@@ -33,6 +33,8 @@ from typing import Callable
 
 import numpy as np
 
+from ..tolerance import CLOSING_REL, JOIN_JUMP_REL, START_SNAP, TURN_REL
+
 PI = math.pi
 TAU = 2.0 * math.pi
 
@@ -197,12 +199,12 @@ class Program:
     return SI lengths per radian^k; at a join the later segment's value is taken (the earlier one's at
     360 deg itself is the start's)."""
 
-    def __init__(self, segments, *, closing_tolerance: float = 1e-9) -> None:
+    def __init__(self, segments, *, closing_tolerance: float = CLOSING_REL) -> None:
         self.segments = tuple(segments)
         if not self.segments:
             raise ValueError("a motion program needs at least one segment")
         total = sum(s.beta for s in self.segments)
-        if abs(total - TAU) > 1e-9 * TAU:
+        if abs(total - TAU) > TURN_REL * TAU:
             raise ValueError(f"the segments cover {math.degrees(total):.6g} deg; they must cover one turn (360 deg)")
         starts = np.cumsum([0.0] + [s.beta for s in self.segments[:-1]])
         self.starts = tuple(float(a) for a in starts)
@@ -226,7 +228,7 @@ class Program:
     def _index(self, theta: np.ndarray) -> np.ndarray:
         # a cam angle within rounding of a segment's start belongs to that segment (a station at 150 deg
         # built as 10 x 15 deg must not read the end of the segment before as 3e-14 above zero lift)
-        idx = np.searchsorted(np.asarray(self.starts) - 1e-12 * TAU, theta, side="right") - 1
+        idx = np.searchsorted(np.asarray(self.starts) - START_SNAP * TAU, theta, side="right") - 1
         return np.clip(idx, 0, len(self.segments) - 1)
 
     def derivatives(self, theta) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -262,6 +264,12 @@ class Program:
         k = seg.sign * seg.lift
         return (float(self.levels[i] + k * f[0][0]),) + tuple(float(k * f[n][0] / seg.beta ** n) for n in (1, 2, 3))
 
+    def end_velocity(self, i: int, u: float) -> float:
+        """s' of segment ``i`` exactly at one of its ends or inner joins (u = 0, 1/2 for a parabola, 1):
+        :func:`end_slope` scaled, no arrays."""
+        seg = self.segments[i]
+        return 0.0 if seg.kind == DWELL else seg.sign * seg.lift * end_slope(seg.law, u) / seg.beta
+
     def with_speed(self, theta, omega: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(s, v, a, j) in SI with the cam turning steadily at ``omega`` (rad/s; its magnitude counts)."""
         s, d1, d2, d3 = self.derivatives(theta)
@@ -269,7 +277,7 @@ class Program:
         return s, d1 * w, d2 * w ** 2, d3 * w ** 3
 
     # -- joins ----------------------------------------------------------------------------------------------
-    def joins(self, rel: float = 1e-9) -> tuple[Join, ...]:
+    def joins(self, rel: float = JOIN_JUMP_REL) -> tuple[Join, ...]:
         """Every join between segments (including 360 deg back to 0) and every law's inner join, with
         the jumps of s', s'' and s''' across it and their consequence for the follower."""
         n = len(self.segments)

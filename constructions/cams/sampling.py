@@ -5,7 +5,7 @@ The chord error.  A chord over a step ``h`` of the parameter of a smooth curve `
 curve by ``h^2 g / 8`` to leading order, with the *chord-error rate* ``g = |C' x C''| / |C'|`` (length per
 rad^2; ``|C'|^2`` times the curvature).  Rotation leaves ``|C'|`` and ``C' x C''`` alone, so the fixed frame
 (the follower's) serves; with the pitch point ``q(theta)`` there, ``v1 = q' - sigma J q`` and ``v2 = q'' -
-2 sigma J q' - q`` are the cam-frame ``P'``, ``P''`` turned back (:mod:`.profile`).
+2 sigma J q' - q`` are the cam-frame ``P'``, ``P''`` turned back (:mod:`.envelope`).
 
 - Roller (knife edge: ``rr = 0``): ``C = P - rr n`` with ``n`` the pitch curve's outward normal, so ``C' = (1 -
   rr k) P'`` with ``k = -sigma c / v^3`` its convex curvature (``c = v1 x v2``, ``v = |v1|``), and ``C' x C''
@@ -13,16 +13,16 @@ rad^2; ``|C'|^2`` times the curvature).  Rotation leaves ``|C'|`` and ``C' x C''
   ``r = d0 + s``: ``v1 = (sigma r, s' - sigma e)``, ``v2 = (2 sigma s' - e, s'' - r)``.  In a dwell ``g`` is
   the radius of the profile's arc, ``|sqrt(e^2 + r^2) - rr|``.
 - Flat face: ``C = (rb + s) u + sigma s' w`` gives ``C' = sigma rho w`` and ``C'' = sigma rho' w - rho u``
-  (``rho = rb + s + s''``, :mod:`.profile`), so ``g = |rho|``.  An oscillating flat face's normal turns at
+  (``rho = rb + s + s''``, :mod:`.envelope`), so ``g = |rho|``.  An oscillating flat face's normal turns at
   ``phi' = -(sigma + s')`` against the cam, so ``|C'| = |rho phi'|`` and ``g = |rho| (sigma + s')^2``.
 
 The sampling.  The program is cut into its smooth pieces (segments; a parabola's two halves), each stepped
 evenly on its own with its ends as samples (a join, where s'' and the curvature jump, is always a point):
 the step is ``sqrt(8 tol / g_max)`` with ``g_max`` the piece's largest rate, searched on a grid of
 :data:`GRID` points (one-sided at the ends), refined by the parabola through the best point and its
-neighbours and raised by :data:`CHORD_MARGIN`.  A dwell's rate is its arc's radius, exactly.  The points
-need only s and s' (no s'', curvature, pressure angle or jerk, which :func:`.profile.evaluate` computes for
-the drawing and the checks).  The tests measure the chord error of the result against the exact curve
+neighbours and raised by :data:`~constructions.tolerance.CHORD_MARGIN`.  A dwell's rate is its arc's
+radius, exactly.  The points need only s and s' (no s'', curvature, pressure angle or jerk, which
+:func:`.envelope.evaluate` computes for the drawing and the checks).  The tests measure the chord error of the result against the exact curve
 between every pair of neighbours.
 
 Corners.  Where s' jumps (uniform motion meeting a dwell) the pitch curve has a corner.  A roller's
@@ -38,11 +38,10 @@ from __future__ import annotations
 import math
 import numpy as np
 
-from .laws import DWELL, INNER_JOINS, NORMALISED, Program, end_slope, normalised_low
-from .profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, Follower, _J, face_terms
-
-CHORD_MARGIN = 1.05
-"""The largest chord-error rate found on a piece's grid is raised by this factor before its step is chosen."""
+from ..tolerance import CHORD_MARGIN, CORNER_SLOPE_REL, ONE_SIDED_INSET
+from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, Follower, face_terms
+from .frames import quarter_turn as _J
+from .laws import DWELL, INNER_JOINS, NORMALISED, Program, normalised_low
 
 GRID = 48
 """Grid points per smooth piece on which the largest chord-error rate is searched."""
@@ -58,11 +57,6 @@ def pieces(program: Program) -> list[tuple[int, float, float, float, float]]:
         for u0, u1 in zip(cuts[:-1], cuts[1:]):
             out.append((i, u0, u1, t0 + u0 * seg.beta, t0 + u1 * seg.beta))
     return out
-
-
-def _slope(program: Program, i: int, u: float) -> float:
-    seg = program.segments[i]
-    return 0.0 if seg.kind == DWELL else seg.sign * seg.lift * end_slope(seg.law, u) / seg.beta
 
 
 def _fixed_frame(f: Follower, s, d1, d2=None):
@@ -124,7 +118,7 @@ def rate_max(program: Program, f: Follower, cuts) -> list[float]:
     out = [_dwell_rate(f, program.levels[pc[0]]) for pc in cuts]
     if not moving:
         return out
-    x = np.linspace(1e-9, 1.0 - 1e-9, GRID)
+    x = np.linspace(ONE_SIDED_INSET, 1.0 - ONE_SIDED_INSET, GRID)
     ss, d1s, d2s = [], [], []
     for k in moving:
         i, u0, u1 = cuts[k][:3]
@@ -159,8 +153,9 @@ def profile_samples(program: Program, f: Follower, tolerance: float) -> tuple[np
     n = len(cuts)
     # a corner after piece k where s' jumps: keep the piece's own end point there too (a knife edge's point
     # is the corner itself, the same from either side)
-    corner = [f.kind != KNIFE and abs(_slope(program, cuts[k][0], cuts[k][2]) - _slope(program, cuts[(k + 1) % n][0], cuts[(k + 1) % n][1]))
-              > 1e-12 * program.lift for k in range(n)]
+    corner = [f.kind != KNIFE and abs(program.end_velocity(cuts[k][0], cuts[k][2])
+                                    - program.end_velocity(cuts[(k + 1) % n][0], cuts[(k + 1) % n][1]))
+              > CORNER_SLOPE_REL * program.lift for k in range(n)]
     ss, dd, tt, first = [], [], [], []
     at = 0
     for k, (pc, g) in enumerate(zip(cuts, gmax)):
@@ -296,4 +291,4 @@ def profile_points(program: Program, f: Follower, tolerance: float) -> np.ndarra
     return profile_samples(program, f, tolerance)[1]
 
 
-__all__ = ["profile_samples", "profile_points", "chord_error_rate", "pieces", "rate_max", "CHORD_MARGIN", "GRID"]
+__all__ = ["profile_samples", "profile_points", "chord_error_rate", "pieces", "rate_max", "GRID"]

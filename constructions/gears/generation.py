@@ -25,30 +25,12 @@ counter-clockwise flank (the clockwise flank is the mirror image).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-
+from ..tolerance import ROOT_BITS, UNDERCUT_REL
+from .flank import CutFlank
 from .tooth import Gear, ToothSystem, inv
 
 FILLET_POINTS = 24
 """Points of the fillet drawn (as many as an involute flank: FLANK_POINTS)."""
-
-
-@dataclass(frozen=True)
-class CutFlank:
-    """One flank as the rack cutter leaves it: the involute from ``involute_from`` to the tip, then the
-    ``fillet`` (radius, angle from the tooth's centre line) from the involute's end down to the root
-    circle.  ``undercut`` when the fillet cuts into the involute (``involute_from`` is then R_X, else
-    the form radius R_L, where the fillet leaves the involute tangentially)."""
-
-    undercut: bool
-    involute_from: float
-    fillet: tuple[tuple[float, float], ...]
-
-    @property
-    def severed(self) -> bool:
-        """The fillet crosses the tooth's centre line: the cutter cuts through the tooth at its root
-        (a gear of so few teeth cannot be generated with this cutter)."""
-        return any(a <= 0.0 for _, a in self.fillet)
 
 
 def largest_tip_round(s: ToothSystem) -> float:
@@ -77,7 +59,7 @@ def straight_depth(gear: Gear) -> float:
     return gear.system.d - tip_round(gear) * (1.0 - math.sin(gear.system.pressure_angle))
 
 
-def is_undercut(gear: Gear, tol: float = 1e-12) -> bool:
+def is_undercut(gear: Gear, tol: float = UNDERCUT_REL) -> bool:
     """The straight flank reaches past the interference point: depth > r sin^2 phi."""
     phi = gear.system.pressure_angle
     return straight_depth(gear) > gear.pitch_radius * math.sin(phi) ** 2 + tol * gear.system.module
@@ -140,7 +122,7 @@ def cut_flank(gear: Gear, points: int = FILLET_POINTS) -> CutFlank | None:
                 hi = mid
             else:
                 lo = mid
-            if hi - lo <= 2e-16 * max(1.0, abs(hi)):
+            if hi - lo <= ROOT_BITS * max(1.0, abs(hi)):
                 break
         return hi
 
@@ -155,3 +137,18 @@ def cut_flank(gear: Gear, points: int = FILLET_POINTS) -> CutFlank | None:
             involute_from = at(start)[0]
     fillet = tuple(at(start + (theta_root - start) * i / (points - 1)) for i in range(points))
     return CutFlank(undercut, involute_from, fillet)
+
+
+def undercut_flank(gear: Gear) -> CutFlank | None:
+    """The flank a rack cutter leaves on ``gear`` when it undercuts it (perhaps so deep that it severs
+    the tooth: :attr:`CutFlank.severed`); None when it does not (the teeth are then drawn with the
+    involute down to the base circle and radial below it, as the notes draw them).  The closed form
+    (:func:`is_undercut`) says where to look; the flank itself decides (with a large tip round the
+    cut of the involute can begin a fraction of a tooth past the closed form's limit)."""
+    cut = cut_flank(gear) if is_undercut(gear) else None
+    return cut if cut is not None and cut.undercut else None
+
+
+def drawn_flank(cut: CutFlank | None) -> CutFlank | None:
+    """The cut flank to draw: none where the cutter severs the tooth (the involute teeth are drawn)."""
+    return None if cut is None or cut.severed else cut

@@ -10,7 +10,7 @@ pinion's interference point T1 when r_a2 = O2T1, i.e. (N2 + 2k)^2 = N2^2 cos^2 p
     the largest gear a pinion N1 < 2k/s^2 takes:  N2 <= (N1^2 s^2 - 4k^2) / (4k - 2 N1 s^2)
 
 (the pinion's tip against T2 is never the tighter one while N1 <= N2).  Each is compared with a
-tolerance of 1e-9 relative, so a case exactly at the limit counts as free of interference, as the
+tolerance of 1e-9 relative (WHOLE_REL), so a case exactly at the limit counts as free of interference, as the
 construction decides it ("at the limit").
 """
 
@@ -18,21 +18,20 @@ from __future__ import annotations
 
 import math
 
-from .mesh import AT_LIMIT, CLEAR, INTERFERENCE, Pair, contact_geometry
+from ..tolerance import WHOLE_REL
+from .contact import AT_LIMIT, CLEAR, INTERFERENCE, Pair, contact_geometry
 from .tooth import Gear, ToothSystem
-
-REL = 1e-9
 
 
 def _ceil(x: float) -> int:
-    """The least whole number >= x, treating x within REL of a whole number as that number."""
+    """The least whole number >= x, treating x within WHOLE_REL of a whole number as that number."""
     n = round(x)
-    return n if abs(x - n) <= REL * max(1.0, abs(x)) else math.ceil(x)
+    return n if abs(x - n) <= WHOLE_REL * max(1.0, abs(x)) else math.ceil(x)
 
 
 def _floor(x: float) -> int:
     n = round(x)
-    return n if abs(x - n) <= REL * max(1.0, abs(x)) else math.floor(x)
+    return n if abs(x - n) <= WHOLE_REL * max(1.0, abs(x)) else math.floor(x)
 
 
 def min_pinion_with_rack(phi: float, k: float = 1.0) -> int:
@@ -54,7 +53,7 @@ def max_gear_for_pinion(n_pinion: int, phi: float, k: float = 1.0) -> int | None
     0 when none will (not even an equal gear)."""
     s2 = math.sin(phi) ** 2
     den = 4 * k - 2 * n_pinion * s2
-    if den <= REL * 4 * k:
+    if den <= WHOLE_REL * 4 * k:
         return None
     top = _floor((n_pinion ** 2 * s2 - 4 * k * k) / den)
     return top if top >= n_pinion else 0

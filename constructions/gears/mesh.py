@@ -1,15 +1,9 @@
-"""A pair of spur gears in mesh, drawn as the notes draw it, and its contact geometry read off the drawing.
-
-Gear 1 (the pinion) drives, turning clockwise; its centre O1 is at the origin, gear 2's centre O2 on +x
-at the centre distance C (a rack: its pitch line square to O1P at C from O1).  The construction is
-Cartesian, as a drafter works: the pitch point P divides O1O2 in the ratio of the teeth; the line of
-action is drawn through P at the working pressure angle phi' (cos phi' = (r_b1 + r_b2)/C; phi itself at
-the standard distance) to the common tangent of the pitch circles; the base circles touch it at the
-interference points T1 and T2; the addendum circle of the driven gear cuts it where contact starts (A),
-the driver's where it ends (B).  AP is the approach, PB the recess, AB the path of contact; contact
-ratio AB / p_b.  Contact starting or ending outside T1T2 is interference, decided three ways (clear, at
-the limit, interference) within 1e-9 of the scene size.  The closed forms that check these readings
-are :mod:`constructions.gears.mesh_check`.
+"""A pair of spur gears in mesh, drawn as the notes draw it, step by step: the data, the pitch circles and
+the line of action, the base and addendum circles, the path of contact and the interference check, the
+contact ratio, a few teeth of each (as a rack cutter leaves them where it undercuts them) and the involute
+detail (:mod:`constructions.gears.thread`).  The contact geometry itself is constructed in
+:mod:`constructions.gears.contact` and read off here; the closed forms that check the readings are
+:mod:`constructions.gears.mesh_check`.
 """
 
 from __future__ import annotations
@@ -17,97 +11,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..errors import ConstructionError, DegenerateInput
-from ..geometry import Circle as GCircle, Contact, Line, Tolerance, Vec, intersect_line_circle
+from ..geometry import Vec
 from ..quantities import Measured
-from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dimension, Note, Pivot, Point, Role,
-                      Segment, StepKind, Value)
-from .generation import CutFlank, cut_flank, fewest_uncut, is_undercut, straight_depth, tip_round
-from .tooth import Gear, ToothSystem, inv, ring_outline, roll_angle, unwinding_points
+from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dimension, Pivot, Point, Role, Segment,
+                      StepKind, Value)
+from .contact import AT_LIMIT, CLEAR, INTERFERENCE, ContactGeometry, Pair, contact_geometry
+from .flank import FLANK_POINTS
+from .generation import drawn_flank, fewest_uncut, straight_depth, tip_round, undercut_flank
+from .thread import THREAD, thread_construction
+from .tooth import ring_outline
 
 SPACE = Diagram("overall")
-THREAD = Diagram("involute", "by unwinding a thread")
 DETAIL = Diagram("space", "contact at the pitch point")
-
-CLEAR, AT_LIMIT, INTERFERENCE = "clear", "at the limit", "interference"
-
-FLANK_POINTS = 24
-"""Points per involute flank drawn (benchmarks/involute_flank.py: 24 points leave a chord error of 2.7 um
-on a module-5 tooth, ~5 um on paper at 2:1, 1/50 of a thin line; 16 points 6.3 um, 32 points 1.5 um)."""
-
-
-@dataclass(frozen=True)
-class Pair:
-    """Gear 1 (the pinion, driver) with gear 2 -- or a rack when ``gear`` is None -- at ``centre_distance``
-    (None: the standard distance (r1 + r2), or r1 from the rack's pitch line)."""
-
-    pinion: Gear
-    gear: Gear | None = None
-    centre_distance: float | None = None
-    rack_system: ToothSystem | None = None
-    internal: bool = False                    # gear 2 is an internal gear (a ring) about the pinion
-
-    def __post_init__(self) -> None:
-        if self.gear is not None and self.gear.system.module != self.pinion.system.module:
-            raise DegenerateInput("gears in mesh need the same module")
-        if self.gear is not None and self.gear.system.pressure_angle != self.pinion.system.pressure_angle:
-            raise DegenerateInput("gears in mesh need the same pressure angle")
-        if self.internal and (self.gear is None or self.gear.teeth <= self.pinion.teeth):
-            raise DegenerateInput("an internal gear needs more teeth than its pinion")
-
-    @property
-    def rack(self) -> bool:
-        return self.gear is None
-
-    @property
-    def rack_teeth(self) -> ToothSystem:
-        return self.rack_system or self.pinion.system
-
-    @property
-    def standard_distance(self) -> float:
-        r1 = self.pinion.pitch_radius
-        if self.internal:
-            return self.gear.pitch_radius - r1
-        return r1 if self.rack else r1 + self.gear.pitch_radius
-
-    @property
-    def distance(self) -> float:
-        return self.standard_distance if self.centre_distance is None else self.centre_distance
-
-    @property
-    def size(self) -> float:
-        """The scene size L the decisions are taken against: the centre distance plus the larger tip."""
-        if self.internal:
-            return self.gear.pitch_radius + self.gear.system.d
-        ra2 = self.rack_teeth.a if self.rack else self.gear.addendum_radius
-        return self.distance + max(self.pinion.addendum_radius, ra2)
-
-
-@dataclass(frozen=True)
-class ContactGeometry:
-    """The contact geometry read off the construction (SI; points in the drawing's frame)."""
-
-    points: dict[str, Vec]
-    working_pressure_angle: float
-    working_radii: tuple[float, float]          # r1', r2' (rack: r1', inf)
-    approach: float                             # AP
-    recess: float                               # PB
-    path: float                                 # AB
-    base_pitch: float
-    limits: tuple[float, float]                 # PT1, PT2 (rack: PT1, inf)
-    start: str                                  # CLEAR / AT_LIMIT / INTERFERENCE at A (against T1)
-    end: str                                    # ... at B (against T2)
-    tolerance: float
-
-    @property
-    def contact_ratio(self) -> float:
-        return self.path / self.base_pitch
-
-    @property
-    def verdict(self) -> str:
-        if INTERFERENCE in (self.start, self.end):
-            return INTERFERENCE
-        return AT_LIMIT if AT_LIMIT in (self.start, self.end) else CLEAR
 
 
 @dataclass
@@ -133,108 +48,8 @@ class MeshAnalysis:
         return out
 
 
-def _three_way(reach: float, limit: float, tol: float) -> str:
-    gap = limit - reach
-    return CLEAR if gap > tol else AT_LIMIT if gap >= -tol else INTERFERENCE
-
-
 def _v(kind: str, x: float) -> Value:
     return Value(kind, x)
-
-
-def contact_geometry(pair: Pair) -> tuple[ContactGeometry, dict]:
-    """The Cartesian construction of the contact geometry; also returns the lines and circles drawn."""
-    p1 = pair.pinion
-    phi = p1.system.pressure_angle
-    C = pair.distance
-    L = pair.size
-    tol = Tolerance(L)
-    if C < pair.standard_distance - tol.length:
-        what = "rack's pitch line" if pair.rack else "centre distance"
-        raise ConstructionError(f"the {what} {C:.6g} m is less than the standard {pair.standard_distance:.6g} m: "
-                                f"the teeth would jam (an involute pair may be pulled apart, never pushed closer)")
-    O1 = Vec(0.0, 0.0)
-    rb1 = p1.base_radius
-    if pair.rack:
-        phi_w = phi
-        r1w = p1.pitch_radius
-        O2 = None
-    elif pair.internal:
-        g2 = pair.gear
-        rb2 = g2.base_radius
-        phi_w = phi if pair.centre_distance is None else math.acos(min(1.0, (rb2 - rb1) / C))
-        r1w = C * p1.teeth / (g2.teeth - p1.teeth)
-        O2 = Vec(-C, 0.0)                    # the ring's centre: P lies beyond O1, on the ring's pitch circle
-        if g2.pitch_radius - g2.system.a <= rb2 + tol.length:
-            raise ConstructionError(f"the internal gear's addendum circle (r - a) lies inside its base circle: a ring "
-                                    f"of {g2.teeth} teeth has no involute at its tips (it needs more teeth)")
-    else:
-        g2 = pair.gear
-        rb2 = g2.base_radius
-        c = (rb1 + rb2) / C
-        phi_w = phi if pair.centre_distance is None else math.acos(min(1.0, c))
-        r1w = C * p1.teeth / (p1.teeth + g2.teeth)
-        O2 = Vec(C, 0.0)
-    P = Vec(r1w, 0.0)
-    # the line of action through P at phi' to the common tangent (the y axis), leaning so the driver turning
-    # clockwise pushes the contact from T1 towards T2
-    d = Vec(math.sin(phi_w), -math.cos(phi_w))
-    loa = Line(P, d)
-    T1 = loa.foot(O1)
-    pts = {"O1": O1, "P": P, "T1": T1}
-    # where contact ends: the driver's addendum circle on the far side of P from T1
-    cut1 = intersect_line_circle(loa, GCircle(O1, p1.addendum_radius), tol)
-    B = cut1.points[0]                       # ahead along d (towards T2)
-    if pair.rack:
-        rs = pair.rack_teeth
-        tip_x = C - rs.a                     # the rack's addendum line, square to O1P
-        if tip_x >= r1w:
-            raise ConstructionError("the rack's addendum line does not reach the pitch point: its teeth miss the pinion")
-        # the line of action meets the addendum line x = tip_x behind P (towards T1)
-        A = P + d * ((tip_x - P.x) / d.x)
-        T2 = None
-        limit2 = math.inf
-        r2w = math.inf
-    elif pair.internal:
-        T2 = loa.foot(O2)                    # behind T1: both base circles touch the line on one side of P
-        ra2 = pair.gear.pitch_radius - pair.gear.system.a
-        cut2 = intersect_line_circle(loa, GCircle(O2, ra2), tol)
-        A = cut2.points[0]                   # ahead of T2, between it and P
-        pts |= {"O2": O2, "T2": T2}
-        limit2 = math.inf                    # the recess side has no interference point
-        r2w = C + r1w
-    else:
-        O2v = O2
-        T2 = loa.foot(O2v)
-        cut2 = intersect_line_circle(loa, GCircle(O2v, pair.gear.addendum_radius), tol)
-        if cut2.contact is not Contact.CROSSING:
-            raise ConstructionError("the addendum circle of gear 2 does not cut the line of action")
-        A = cut2.points[1]                   # behind the foot T2, towards T1
-        pts |= {"O2": O2v, "T2": T2}
-        limit2 = P.distance_to(T2)
-        r2w = C - r1w
-    along = lambda q: d.dot(q - P)          # noqa: E731 -- signed distance along the line of action from P
-    approach, recess = -along(A), along(B)
-    if approach <= tol.length or recess <= tol.length:
-        who = "gear 2 (or the rack)" if approach <= tol.length else "gear 1"
-        raise ConstructionError(f"the addendum circle of {who} does not reach past the pitch point on the line of "
-                                f"action: the teeth never come into contact there (centre distance too large)")
-    pts |= {"A": A, "B": B}
-    limit1 = P.distance_to(T1)
-    start = _three_way(approach, limit1, tol.length)
-    end = _three_way(recess, limit2, tol.length) if math.isfinite(limit2) else CLEAR
-    geo = ContactGeometry(pts, phi_w, (r1w, r2w), approach, recess, A.distance_to(B), p1.base_pitch,
-                          (limit1, limit2), start, end, tol.length)
-    return geo, {"line": loa}
-
-
-class _Draw:
-    def __init__(self, pair: Pair, geo: ContactGeometry, fmt) -> None:
-        self.pair, self.geo, self.fmt = pair, geo, fmt
-        self.rec = Construction("Gears in mesh: contact geometry")
-
-    def then(self, words, *ents, values=None, kind=StepKind.CONSTRUCTION):
-        self.rec = self.rec.then(words, *ents, values=values, kind=kind)
 
 
 def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int = FLANK_POINTS,
@@ -412,7 +227,7 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
             warnings.append(f"Cut by generation, the {gear.teeth} teeth of gear {number} would be cut through at "
                             f"their root (the cutter's tip round crosses the tooth's centre line): no such gear can "
                             f"be generated with this cutter; its teeth are drawn as involutes only.")
-    cut1, cut2 = _drawn(cut1), _drawn(cut2)
+    cut1, cut2 = drawn_flank(cut1), drawn_flank(cut2)
     ents = [Curve("teeth 1", Role.GIVEN, DETAIL, tuple(p1.teeth_outline(O1, p1.half_tooth_angle - teeth_drawn * 2 * math.pi
                                                                           / p1.teeth, 2 * teeth_drawn + 1, flank_points,
                                                                           cut1)))]
@@ -440,23 +255,8 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
                        f"point, as it does for fewer than 2 depth / (m sin\u00b2 \u03c6) = $nmin teeth; its tip round "
                        f"cuts the involute away below R = $rx, as drawn.", values=vals)
     if thread:
-        rec = rec + _thread_construction(p1, phi_w)
+        rec = rec + thread_construction(p1, phi_w)
     return MeshAnalysis(pair, rec, geo, tuple(warnings))
-
-
-def undercut_flank(gear: Gear) -> CutFlank | None:
-    """The flank a rack cutter leaves on ``gear`` when it undercuts it (perhaps so deep that it severs
-    the tooth: :attr:`CutFlank.severed`); None when it does not (the teeth are then drawn with the
-    involute down to the base circle and radial below it, as the notes draw them).  The closed form
-    (:func:`is_undercut`) says where to look; the flank itself decides (with a large tip round the
-    cut of the involute can begin a fraction of a tooth past the closed form's limit)."""
-    cut = cut_flank(gear) if is_undercut(gear) else None
-    return cut if cut is not None and cut.undercut else None
-
-
-def _drawn(cut: CutFlank | None) -> CutFlank | None:
-    """The cut flank to draw: none where the cutter severs the tooth (the involute teeth are drawn)."""
-    return None if cut is None or cut.severed else cut
 
 
 def _rack_outline(pair: Pair, count: int) -> list[Vec]:
@@ -480,58 +280,3 @@ def _rack_outline(pair: Pair, count: int) -> list[Vec]:
         out += lower + upper
     back = xd + 1.5 * s.module                # the rack's body behind its roots
     return [Vec(back, out[0].y)] + out + [Vec(back, out[-1].y), Vec(back, out[0].y)]
-
-
-def _thread_construction(g: Gear, phi: float) -> Construction:
-    """The involute of gear 1 drawn by unwinding a thread off its base circle (a separate detail)."""
-    rb, ra = g.base_radius, g.addendum_radius
-    O = Vec(0.0, 0.0)
-    u_tip = roll_angle(rb, ra)
-    count = 6
-    step = u_tip / count
-    theta0 = math.pi / 2 - u_tip / 2         # the flank stands upright on the detail
-    marks = unwinding_points(rb, theta0, step, count, O, +1)
-    pitch_angle = 2 * math.pi / g.teeth
-    centre = theta0 + g.half_tooth_angle + inv(g.system.pressure_angle)   # the tooth whose flank this is
-    a0, a1 = theta0 - 0.1, max(theta0 + u_tip + 0.15, centre + 1.5 * pitch_angle)
-    rp, rd = g.pitch_radius, g.dedendum_radius
-    ents = [Arc("thread base arc", Role.CENTRE_LINE, THREAD, O, rb, a0, a1),
-            Arc("thread pitch arc", Role.CENTRE_LINE, THREAD, O, rp, a0, a1),
-            Arc("thread addendum arc", Role.AUXILIARY, THREAD, O, ra, a0, a1),
-            Arc("thread dedendum arc", Role.AUXILIARY, THREAD, O, rd, a0, a1)]
-    rec = Construction("involute").then(
-        "Involute by unwinding a thread: divide the base circle of gear 1 from the flank's root into equal arcs of "
-        "roll angle $du.", *ents, *[Point(f"thread k{k}", Role.LABEL, THREAD, t, str(k)) for k, (t, _, _) in enumerate(marks)],
-        values={"du": Value("angle", step)})
-    tans = [Segment(f"thread tangent {k}", Role.AUXILIARY, THREAD, t, e) for k, (t, e, _) in enumerate(marks) if k]
-    rec = rec.then("At each division draw the tangent and lay off along it the unwound arc r_b u (the thread held "
-                   "tight): its ends are points of the involute.", *tans)
-    from .tooth import involute_point
-    fine = [involute_point(rb, theta0, u_tip * i / (FLANK_POINTS * 2 - 1), O, +1) for i in range(FLANK_POINTS * 2)]
-    rec = rec.then("Join them: the involute flank from the base circle to the addendum circle (drawn computed exactly).",
-                   Curve("involute", Role.RESULT, THREAD, tuple(fine)))
-    # the terms of a spur gear on two of its teeth
-    psi = g.half_tooth_angle
-    space = centre + pitch_angle / 2
-    u = Vec.polar(1.0, space)
-    lab = lambda r, a: O + Vec.polar(r, a)  # noqa: E731
-    ends = a1 + 0.02
-    teeth = g.teeth_outline(O, centre, 2, FLANK_POINTS, _drawn(undercut_flank(g)))
-    terms = [Curve("terms teeth", Role.GIVEN, THREAD, tuple(teeth)),
-             Dimension("terms t", Role.DIMENSION, THREAD, lab(rp, centre - psi), lab(rp, centre + psi), -0.45 * g.system.module,
-                       "t"),
-             Dimension("terms p", Role.DIMENSION, THREAD, lab(rp, centre - psi), lab(rp, centre - psi + pitch_angle),
-                       -(g.system.a + 1.3 * g.system.module), "p"),
-             Dimension("terms a", Role.DIMENSION, THREAD, u * rp, u * ra, 0.0, "a"),
-             Dimension("terms d", Role.DIMENSION, THREAD, u * rd, u * rp, 0.0, "d"),
-             Note("terms pitch", Role.NOTE, THREAD, lab(rp, ends), "pitch circle"),
-             Note("terms base", Role.NOTE, THREAD, lab(rb, ends), "base circle"),
-             Note("terms addendum", Role.NOTE, THREAD, lab(ra, ends), "addendum circle"),
-             Note("terms dedendum", Role.NOTE, THREAD, lab(rd, ends), "dedendum circle")]
-    m = g.system.module
-    rec = rec.then("The terms on two teeth of gear 1: tooth thickness t = \u03c0m/2 = $t and circular pitch p = \u03c0m = $p "
-                   "(arcs of the pitch circle), addendum a = $a, dedendum d = $d, base pitch p_b = p cos \u03c6 = $pb.",
-                   *terms, values={"t": Value("length", math.pi * m / 2), "p": Value("length", math.pi * m),
-                                   "a": Value("length", g.system.a), "d": Value("length", g.system.d),
-                                   "pb": Value("length", g.base_pitch)})
-    return rec

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .mesh import Pair
+from .contact import Pair
 
 
 @dataclass(frozen=True)

@@ -16,13 +16,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from ..errors import DegenerateInput
 from ..geometry import Vec
-
-if TYPE_CHECKING:
-    from .generation import CutFlank
+from .flank import CutFlank
 
 INCH = 0.0254
 
@@ -152,7 +149,7 @@ class Gear:
         """One tooth's outline from its root on one side (dedendum circle) over the tip to the other root,
         counter-clockwise about the gear: the radial root line where the dedendum circle lies inside the
         base circle, the involute flanks computed exactly at ``flank_points`` roll angles, the tip arc.
-        With ``cut`` (:class:`constructions.gears.generation.CutFlank`) the flanks are as a rack cutter
+        With ``cut`` (:class:`constructions.gears.flank.CutFlank`) the flanks are as a rack cutter
         leaves them: the involute down to ``cut.involute_from``, then the fillet to the root circle."""
         rb, ra, rd = self.base_radius, self.addendum_radius, self.dedendum_radius
         u_tip = roll_angle(rb, ra)

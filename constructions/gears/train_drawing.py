@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from ..geometry import Vec
 from ..quantities import Measured
 from ..record import (AngleMark, Bar, Circle, Construction, Diagram, Note, Pivot, Point, Role, StepKind, Value)
+from ..tolerance import STANDSTILL
 from .trains import FRAME, Given, Train, TrainSolution, layout, solve_train
 
 KINEMATIC = Diagram("space")
@@ -143,7 +144,7 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
             marks = []
             for m in train.members:
                 w = sol.speeds[m]
-                if abs(w) < 1e-12:
+                if abs(w) < STANDSTILL:
                     continue
                 gs = [x for x in train.gears if x.member == m]
                 if gs:

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 from ..errors import ConstructionError, DegenerateInput
 from ..geometry import Vec
+from ..tolerance import DECISION, STANDSTILL, TRAIN_RATIO_REL
 
 FRAME = "frame"
 
@@ -154,7 +155,7 @@ def relative_values(train: Train, reference: str) -> tuple[dict[str, float], dic
                     changed = True
                 elif g1.member in vals and g2.member in vals:
                     want = vals[g1.member] * k
-                    if abs(want - vals[g2.member]) > 1e-12 * max(1.0, abs(want)):
+                    if abs(want - vals[g2.member]) > TRAIN_RATIO_REL * max(1.0, abs(want)):
                         raise ConstructionError(f"the meshes form a loop that locks the train (at mesh {m.name})")
     missing = [mb for mb in train.members if mb not in vals]
     if missing:
@@ -185,7 +186,7 @@ def solve_train(train: Train, givens: tuple[Given, ...], reference: str | None =
         (a, b) = givens
         # n = n_c + e x for each: [[1, e_a], [1, e_b]] [n_c, x] = [n_a, n_b]
         det = vals[b.member] - vals[a.member]
-        if abs(det) < 1e-12:
+        if abs(det) < TRAIN_RATIO_REL:
             raise ConstructionError(f"{a.member} and {b.member} turn together relative to the carrier: they cannot "
                                     f"both be given")
         x = (b.speed - a.speed) / det
@@ -201,7 +202,7 @@ def _loads(sol: TrainSolution) -> None:
     t = sol.train
     P, inp, out = sol.power, sol.inp, sol.out
     w_in, w_out = sol.speeds[inp], sol.speeds[out]
-    if abs(w_in) < 1e-12 or abs(w_out) < 1e-12:
+    if abs(w_in) < STANDSTILL or abs(w_out) < STANDSTILL:
         raise ConstructionError("the input or output member stands still: no torque follows from the power")
     torques = {m: 0.0 for m in t.members}
     torques[inp] = P / w_in
@@ -233,7 +234,7 @@ def _loads(sol: TrainSolution) -> None:
     sol.torques, sol.loads = torques, loads
 
 
-def layout(train: Train, tol_rel: float = 1e-9) -> tuple[dict[str, Vec], dict[str, Vec]]:
+def layout(train: Train, tol_rel: float = DECISION) -> tuple[dict[str, Vec], dict[str, Vec]]:
     """Gear centres and pitch points: the first gear at the origin, each mesh placing the other gear at its
     angle (default 0; a planet's meshes 90 deg), a compound gear on its member's centre.  The carrier turns
     about the origin.  Raises when a gear would need two places (a planet that does not fit its ring, a

@@ -1,7 +1,7 @@
 """Export of a cam's profile for machining: CSV and DXF, at a stated tolerance, with the units in the file.
 
 The profile is the exact envelope sampled so that every chord stays within the tolerance of the true
-curve (:func:`constructions.cams.profile.profile_samples`; by default 1e-6 of the cam's size, prime circle
+curve (:func:`constructions.cams.sampling.profile_samples`; by default 1e-6 of the cam's size, prime circle
 plus lift), trimmed where the follower undercuts it.  Coordinates are in the scene's length unit, in the
 cam frame at cam angle 0 (the follower's axis along +y), centred on the cam's axis.
 
@@ -33,8 +33,10 @@ INSUNITS = {"mm": 4, "millimeter": 4, "cm": 5, "centimeter": 5, "m": 6, "meter":
 
 def profile_for_export(model, tolerance_rel: float = 1e-6) -> tuple[np.ndarray, float]:
     """(points 2 x N in SI, absolute tolerance in SI) of a cam scene's model: the profile-only path
-    (:func:`constructions.cams.profile.profile_samples`), trimmed where the analysis finds undercut."""
-    from constructions.cams.profile import analyse, evaluate, profile_samples, trim   # the cam engine, when used
+    (:func:`constructions.cams.sampling.profile_samples`), trimmed where the analysis finds undercut."""
+    from constructions.cams.envelope import evaluate   # the cam engine, when used
+    from constructions.cams.profile import analyse, trim
+    from constructions.cams.sampling import profile_samples
     p, f = model.program, model.follower
     cp = analyse(p, f, samples=1024)
     tol = tolerance_rel * cp.size

@@ -13,7 +13,7 @@ from typing import Any
 
 from constructions.cams import check as cam_check
 from constructions.cams.construction import construct
-from constructions.cams.profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER
+from constructions.cams.follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER
 from constructions.geometry import Vec
 
 from .scene import SECTIONS, read_cam

@@ -24,7 +24,8 @@ import math
 from dataclasses import dataclass
 
 from constructions.cams.laws import DWELL, RETURN, RISE, SEGMENT_KINDS, Program, Segment, law_name
-from constructions.cams.profile import FLAT, FOLLOWERS, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower, check_face
+from constructions.cams.follower import FLAT, FOLLOWERS, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
+from constructions.cams.profile import check_face
 
 from ...scene.unitset import Units
 

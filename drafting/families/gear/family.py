@@ -11,7 +11,8 @@ from typing import Any
 
 from constructions.gears.interference import (max_gear_for_pinion, min_equal_gears, min_pinion_with_gear,
                                               min_pinion_with_rack)
-from constructions.gears.mesh import AT_LIMIT, INTERFERENCE, mesh_analysis
+from constructions.gears.contact import AT_LIMIT, INTERFERENCE
+from constructions.gears.mesh import mesh_analysis
 from constructions.gears.mesh_check import closed_form, notes_contact_ratio
 from constructions.gears.train_check import torque_check, velocity_check
 from constructions.gears.train_drawing import train_analysis

@@ -33,7 +33,7 @@ from typing import Any
 
 from constructions.errors import ConstructionError, DegenerateInput
 from constructions.gears.generation import largest_tip_round
-from constructions.gears.mesh import Pair
+from constructions.gears.contact import Pair
 from constructions.gears.tooth import INCH, SYSTEMS, Gear, ToothSystem
 from constructions.gears.train_drawing import Case
 from constructions.gears.trains import FRAME, Given, Train, TrainGear, TrainMesh, layout, solve_train
@@ -130,7 +130,7 @@ def read_gear_pair(r, units: Units) -> dict:
         c = r.quantity("pair.centre_distance", t["centre_distance"], "length", units)
     pair = Pair(Gear(n1, s), gear, c, internal=internal)
     try:
-        from constructions.gears.mesh import contact_geometry
+        from constructions.gears.contact import contact_geometry
         contact_geometry(pair)
     except ConstructionError as e:
         raise r.fail("pair.centre_distance" if c is not None else "pair", e.reason) from None
