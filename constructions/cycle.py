@@ -20,9 +20,10 @@ import math
 import numpy as np
 
 from .classify import FourBarClass
+from .entities import AngleMark, Chart, Curve, Diagram, Point, Role, Segment, Series
 from .geometry import Vec
 from .linkage import Mechanism
-from .record import AngleMark, Chart, Construction, Curve, Diagram, Point, Role, Segment, Series, StepKind, Value
+from .record import Construction, StepKind, Value
 from .sweep import Sweep
 
 BAND = (math.radians(40.0), math.radians(140.0), "40-140 deg")

@@ -33,10 +33,11 @@ from typing import Mapping
 import numpy as np
 
 from .bodies import Contact, SlotPin, connections, frame_number, moving_bodies, points_of_body
+from .entities import Bar, Diagram, Point, Role, Segment
 from .geometry import Vec
 from .linkage import Mechanism, Pose, slide_line
 from .quantities import Measured
-from .record import Bar, Construction, Diagram, Point, Role, Segment, StepKind, Value
+from .record import Construction, StepKind, Value
 
 DIAGRAM = Diagram("instant centres")
 CIRCLE = DIAGRAM

@@ -28,8 +28,8 @@ from .formatting import Formatter, si_format
 from .tolerance import scene_size
 from .geometry import (Circle, Contact, Intersection, Line, Tolerance, Vec, intersect_circles,
                        intersect_line_circle, intersect_lines)
-from .record import (AngleMark, Arc, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point, Role, Segment,
-                     StepKind, Value)
+from .entities import AngleMark, Arc, Bar, Block, Diagram, Guide, Pivot, Plate, Point, Role, Segment
+from .record import Construction, StepKind, Value
 
 
 @dataclass(frozen=True, slots=True)

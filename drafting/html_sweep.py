@@ -34,7 +34,8 @@ from constructions.cycle import one_turn
 from constructions.geometry import Vec
 from constructions.linkage import Mechanism
 from constructions.sweep import crank_points
-from constructions.record import Chart, Construction
+from constructions.entities import Chart
+from constructions.record import Construction
 
 from .chart import AxisUnits, chart_with_axes
 from .drawing import PIN_R, DOT_R

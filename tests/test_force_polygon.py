@@ -21,7 +21,7 @@ from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.record import AngleMark, Arrow, Dimension, Point, Segment, TrialLine
+from constructions.entities import AngleMark, Arrow, Dimension, Point, Segment, TrialLine
 from mechanisms import quick_return, rocker_with_slot, slot_and_guide
 from test_linkage_velocity import angles, coords, four_bars, sizes, slider_cranks, speeds, transmission
 

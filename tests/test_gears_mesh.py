@@ -248,7 +248,7 @@ def test_an_internal_pair_built_at_the_limit(n1, n2, phi):
 def test_interference_is_dimensioned_on_the_drawing(n1, n2, start, end):
     """Where contact runs off the involutes the stretch is dimensioned on the path of contact: A to T1
     (AP - PT1), T2 to B (PB - PT2); none at the limit or clear."""
-    from constructions.record import Dimension
+    from constructions.entities import Dimension
     s = system(0.01, 30.0 if n2 is None else 20.0)
     pair = Pair(Gear(n1, s)) if n2 is None else Pair(Gear(n1, s), Gear(n2, s))
     a = mesh_analysis(pair)

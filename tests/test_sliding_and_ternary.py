@@ -10,13 +10,13 @@ import math
 import pytest
 from hypothesis import HealthCheck, assume, given, settings, strategies as st
 
+from constructions.entities import Diagram
 from constructions.errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from constructions.geometry import Vec
 from constructions.linkage import (Branch, Link, Mechanism, SlotThrough, Slide, assembly_plan, locate,
                                    mobility)
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.record import Diagram
 from mechanisms import (quick_return, rocker_with_slot, slot_and_guide, ternary_posed_by_other_points,
                         watt_six_bar)
 

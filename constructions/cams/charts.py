@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..record import Chart, Diagram, Role, Series
+from ..entities import Chart, Diagram, Role, Series
 from .laws import Program, TAU
 from .profile import segment_breaks
 

@@ -38,7 +38,8 @@ from ..geometry import Vec
 from ..linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles, TwoLines,
                        assembly_plan, slide_line)
 from ..quantities import Measured
-from ..record import Arrow, Bar, Block, Construction, Curve, Diagram, Plate, Role, Segment, StepKind, Value
+from ..entities import Arrow, Bar, Block, Curve, Diagram, Plate, Role, Segment
+from ..record import Construction, StepKind, Value
 from .bodies import force_name, torque_name
 from .board import Drawing, Force, ForcesNotDrawn, body_label, force_value, known_forces, resultant
 from .dyads import driving_crank, prp, rpr, rrp, rrr

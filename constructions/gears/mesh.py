@@ -17,11 +17,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from ..entities import AngleMark, Arc, Circle, Curve, Diagram, Dimension, Note, Pivot, Point, Role, Segment
 from ..errors import ConstructionError, DegenerateInput
 from ..geometry import Circle as GCircle, Contact, Line, Tolerance, Vec, intersect_line_circle
 from ..quantities import Measured
-from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dimension, Note, Pivot, Point, Role,
-                      Segment, StepKind, Value)
+from ..record import Construction, StepKind, Value
 from .generation import CutFlank, cut_flank, fewest_uncut, is_undercut, straight_depth, tip_round
 from .tooth import Gear, ToothSystem, inv, ring_outline, roll_angle, unwinding_points
 
