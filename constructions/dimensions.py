@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from .entities import Diagram, Dimension, Role
 from .geometry import Vec
-from .linkage import Mechanism, Pose
+from .mechanisms.model import Mechanism
+from .mechanisms.pose import Pose
 from .record import Construction, Value
 
 STANDOFF = 0.12

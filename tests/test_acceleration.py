@@ -12,7 +12,8 @@ from constructions.check import analytic_solution, analytic_values, compare
 from constructions.entities import Diagram, Role
 from constructions.errors import IndeterminatePosition
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Link, Mechanism, Slide, locate
+from constructions.mechanisms.model import Attached, Link, Mechanism, Slide
+from constructions.mechanisms.pose import locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import StepKind

@@ -10,9 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from constructions.classify import classify_four_bar
-from constructions.cycle import BAND, one_turn, transmission_angles
 from constructions.entities import Chart, Curve, Diagram
+from constructions.mechanisms.classify import classify_four_bar
+from constructions.mechanisms.cycle import BAND, one_turn, transmission_angles
 from constructions.sweep import sweep
 from drafting.chart import DEGREE_STEPS, ticks
 from drafting.scene import load_scene, parse_scene

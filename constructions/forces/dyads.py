@@ -27,7 +27,8 @@ import math
 
 from ..errors import IndeterminatePosition
 from ..geometry import Vec
-from ..linkage import CircleAndGuide, CrankTip, SlotThrough, TwoCircles, TwoLines, describe_angle, slide_line
+from ..mechanisms.assembly import CircleAndGuide, CrankTip, SlotThrough, TwoCircles, TwoLines
+from ..mechanisms.model import describe_angle, slide_line
 from ..polygons.common import WARN_SINE, rounding_estimate
 from ..entities import AngleMark, Arrow, Diagram, Dimension, Point, Role, ScaleBar, Segment, TrialLine
 from ..record import StepKind, Value

@@ -33,10 +33,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Mapping
 
-from ..bodies import Contact, Pin, frame_number
+from ..mechanisms.topology import Contact, Pin, frame_number
 from ..geometry import Vec
-from ..linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles, TwoLines,
-                       assembly_plan, slide_line)
+from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines,
+                                   assembly_plan)
+from ..mechanisms.model import Mechanism, slide_line
+from ..mechanisms.pose import Pose
 from ..quantities import Measured
 from ..entities import Arrow, Bar, Block, Curve, Diagram, Plate, Role, Segment
 from ..record import Construction, StepKind, Value

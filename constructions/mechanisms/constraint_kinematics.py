@@ -77,9 +77,9 @@ from typing import Mapping
 
 import numpy as np
 
-from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
-from .geometry import Vec
-from .linkage import Mechanism, coincident_name, describe_angle
+from ..errors import CannotAssemble, DegenerateInput, IndeterminatePosition
+from ..geometry import Vec
+from .model import Mechanism, coincident_name, describe_angle
 
 __all__ = ["MAX_ITERATIONS", "SINGULAR", "TOLERANCE", "ConstraintPose", "ConstraintState", "constraint_count",
            "solve_constraints", "solve_positions"]

@@ -32,12 +32,13 @@ from typing import Mapping
 
 import numpy as np
 
-from .bodies import Contact, SlotPin, connections, frame_number, moving_bodies, points_of_body
-from .entities import Bar, Diagram, Point, Role, Segment
-from .geometry import Vec
-from .linkage import Mechanism, Pose, slide_line
-from .quantities import Measured
-from .record import Construction, StepKind, Value
+from ..entities import Bar, Diagram, Point, Role, Segment
+from ..geometry import Vec
+from ..quantities import Measured
+from ..record import Construction, StepKind, Value
+from .model import Mechanism, slide_line
+from .pose import Pose
+from .topology import Contact, SlotPin, connections, frame_number, moving_bodies, points_of_body
 
 DIAGRAM = Diagram("instant centres")
 CIRCLE = DIAGRAM

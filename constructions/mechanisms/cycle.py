@@ -19,12 +19,12 @@ import math
 
 import numpy as np
 
+from ..entities import AngleMark, Chart, Curve, Diagram, Point, Role, Segment, Series
+from ..geometry import Vec
+from ..record import Construction, StepKind, Value
+from ..sweep import Sweep
 from .classify import FourBarClass
-from .entities import AngleMark, Chart, Curve, Diagram, Point, Role, Segment, Series
-from .geometry import Vec
-from .linkage import Mechanism
-from .record import Construction, StepKind, Value
-from .sweep import Sweep
+from .model import Mechanism
 
 BAND = (math.radians(40.0), math.radians(140.0), "40-140 deg")
 """The usual range of a transmission angle (notes, "Transmission angle")."""
