@@ -27,8 +27,9 @@ from constructions import analytic
 from constructions.errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from constructions.geometry import Vec
 from constructions.mechanisms.assembly import assembly_plan
-from constructions.mechanisms.constraint_kinematics import (SINGULAR, TOLERANCE, ConstraintState, constraint_count,
+from constructions.mechanisms.constraint_kinematics import (SINGULAR, TOLERANCE, ConstraintState,
                                                             solve_constraints, solve_positions)
+from constructions.mechanisms.constraint_model import constraint_count
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 from constructions.mechanisms.pose import locate
 from constructions.vector_loops import chain_solution
