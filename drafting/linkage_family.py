@@ -323,7 +323,7 @@ def _json(study) -> dict[str, Any]:
                                      for i, j in res.gaps()]}
     ic = study.computed("instant centres")
     if ic is not None:
-        from constructions.mechanisms.instant_centres import centre_name
+        from constructions.mechanisms.centres import centre_name
         out["instant_centres"] = {
             centre_name(q): ({"x": u.convert("length", c.at.x), "y": u.convert("length", c.at.y)} if c.finite
                              else {"at_infinity": True, "direction_deg": direction_deg(c.direction) % 180})

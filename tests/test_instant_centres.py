@@ -13,7 +13,8 @@ from hypothesis import HealthCheck, given, settings
 
 import mechanisms as M
 from constructions.geometry import Vec
-from constructions.mechanisms.instant_centres import DIAGRAM, FAR, centre_name, instant_centres
+from constructions.mechanisms.centres import DIAGRAM, FAR, centre_name
+from constructions.mechanisms.instant_centres import instant_centres
 from constructions.mechanisms.pose import locate
 from constructions.polygons.velocity import velocity_polygon
 from drafting.scene import load_scene
