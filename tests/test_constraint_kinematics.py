@@ -1,5 +1,5 @@
-"""The constraint solver in body coordinates (constructions.constraint_kinematics): the analytic check of
-every mechanism the model accepts.
+"""The constraint solver in body coordinates (constructions.mechanisms.constraint_kinematics): the
+analytic check of every mechanism the model accepts.
 
 Checked (1) against the closed forms of constructions.analytic (four-bar, slider-crank, coupler points)
 and against the dyad chains of constructions.vector_loops (toggle linkage, six-bars of binary links) on

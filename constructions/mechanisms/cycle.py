@@ -165,7 +165,7 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
 
 def _limit_positions(rec: Construction, m: Mechanism, k: FourBarClass | None, s: Sweep, degrees) -> Construction:
     """The rocker's two limit positions on the space diagram (crank and coupler in line, found by
-    construction in :mod:`constructions.classify`), dashed, with the rocker's swing between them."""
+    construction in :mod:`constructions.mechanisms.classify`), dashed, with the rocker's swing between them."""
     if k is None or len(k.limit_positions) != 2:
         return rec
     o1, _, c, o2 = k.joints
