@@ -14,10 +14,11 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from .closed_forms import closed_form_parts, closed_form_state
-from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
-from .linkage import Mechanism, SlotThrough, TwoLines, assembly_plan
+from .mechanisms.assembly import SlotThrough, TwoLines, assembly_plan
+from .mechanisms.constraint_kinematics import solve_constraints
+from .mechanisms.model import Mechanism
 from .quantities import Measured
 from .vector_loops import chain_solution
 

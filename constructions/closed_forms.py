@@ -12,8 +12,9 @@ from typing import Mapping
 import numpy as np
 
 from . import analytic
-from .linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, SlotThrough, TwoCircles, TwoLines,
-                      assembly_plan)
+from .mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines,
+                                  assembly_plan)
+from .mechanisms.model import Mechanism
 
 XY = tuple[np.ndarray, np.ndarray]
 

@@ -8,9 +8,11 @@ cross the links they measure; the crank angle is already on the space diagram.  
 
 from __future__ import annotations
 
+from .entities import Diagram, Dimension, Role
 from .geometry import Vec
-from .linkage import Mechanism, Pose
-from .record import Construction, Diagram, Dimension, Role, Value
+from .mechanisms.model import Mechanism
+from .mechanisms.pose import Pose
+from .record import Construction, Value
 
 STANDOFF = 0.12
 """How far a dimension line stands off its link, as a fraction of the mechanism's size."""

@@ -24,7 +24,7 @@ class Measured:
 
     ``condition`` is the sine of the worst trial-line crossing the value depends on (1 when it was
     drawn directly); near 0 the value is sensitive to the drawing and the check widens its tolerance.
-    ``diagram`` is the key of the diagram it is read off (:attr:`~constructions.record.Diagram.key`), where
+    ``diagram`` is the key of the diagram it is read off (:attr:`~constructions.entities.Diagram.key`), where
     a construction draws several of its kind at different scales; "" when it need not say.
     """
 

@@ -26,10 +26,11 @@ from typing import Mapping
 import numpy as np
 
 from .closed_forms import closed_form_parts, closed_form_state
-from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, ConstructionError, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
-from .linkage import Mechanism, locate, place_rigid
+from .mechanisms.constraint_kinematics import solve_constraints
+from .mechanisms.model import Mechanism, place_rigid
+from .mechanisms.pose import locate
 from .vector_loops import chain_solution
 
 XY = tuple[np.ndarray, np.ndarray]
@@ -92,8 +93,8 @@ def _through_change_points(m: Mechanism, th: np.ndarray, omega: float, alpha: fl
     crank angle (the crank along the frame line) the continuation is the assembly whose joint velocities,
     just past it, are nearest those just before it; the sweep follows it, and says where it did."""
     from dataclasses import replace as _replace
-    from .classify import classify_four_bar
-    from .linkage import Branch
+    from .mechanisms.classify import classify_four_bar
+    from .mechanisms.model import Branch
     k = classify_four_bar(m)
     if k is None or k.grashof != "change point" or th.size == 0:
         return own

@@ -56,7 +56,7 @@ from typing import Mapping
 import numpy as np
 
 from .errors import DegenerateInput
-from .linkage import Attached, Branch, Link, Mechanism, Slide
+from .mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 from .tolerance import ASSEMBLY_RTOL, snap_tolerance
 
 __all__ = ["ASSEMBLY_RTOL", "SINGULAR", "ChainPoint", "ChainState", "chain_solution", "solving_order"]

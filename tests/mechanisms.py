@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide
+from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 
 MM = 1e-3
 

@@ -9,12 +9,14 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings, strategies as st
 
 from constructions.check import analytic_solution, analytic_values, compare
+from constructions.entities import Diagram, Role
 from constructions.errors import IndeterminatePosition
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Link, Mechanism, Slide, locate
+from constructions.mechanisms.model import Attached, Link, Mechanism, Slide
+from constructions.mechanisms.pose import locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.record import Diagram, Role, StepKind
+from constructions.record import StepKind
 from test_compound import toggle_linkage
 from test_linkage_velocity import four_bar, four_bars, slider_crank, slider_cranks
 

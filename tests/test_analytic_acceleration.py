@@ -27,7 +27,7 @@ from hypothesis import strategies as st
 from constructions import analytic as an
 from constructions.analytic import coupler_point, four_bar, slider_crank
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide
+from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 from constructions.vector_loops import chain_solution
 from mechanisms import six_bar, toggle_linkage as short_toggle_linkage   # the non-Grashof toggle linkage
 

@@ -11,9 +11,9 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings, strategies as st
 
 from constructions import analytic
-from constructions.classify import classify_four_bar
 from constructions.geometry import Vec
-from constructions.linkage import Branch, Link, Mechanism, Slide
+from constructions.mechanisms.classify import classify_four_bar
+from constructions.mechanisms.model import Branch, Link, Mechanism, Slide
 
 
 def four_bar(g, a, b, c, branch=1, frame_angle=0.0):
@@ -111,8 +111,8 @@ def test_gallery_four_bar_reads_as_the_notes_would_say():
 def test_a_second_loop_driven_by_a_rocker_is_classified():
     """A Stephenson six-bar: the rocker O2C carries E, which drives the dyad E-F-O3; its loop
     O2-E-F-O3 is a four-bar with the rocker as input, classified by its own lengths."""
-    from constructions.classify import classify_loops
-    from constructions.linkage import Attached
+    from constructions.mechanisms.classify import classify_loops
+    from constructions.mechanisms.model import Attached
     m = Mechanism({"O1": Vec(0.0, 0.0), "O2": Vec(0.10, 0.0), "O3": Vec(0.16, 0.05)},
                   (Link(1, ("O1", "B"), 0.03), Link(2, ("B", "C"), 0.09), Link(3, ("O2", "C"), 0.07),
                    Link(4, ("E", "F"), 0.08), Link(5, ("O3", "F"), 0.06)), (),

@@ -9,7 +9,7 @@ import math
 import pytest
 
 from constructions.check import analytic_solution, analytic_values, compare
-from constructions.linkage import locate
+from constructions.mechanisms.pose import locate
 from constructions.polygons.velocity import velocity_polygon
 from mechanisms import toggle_linkage
 

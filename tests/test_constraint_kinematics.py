@@ -1,5 +1,5 @@
-"""The constraint solver in body coordinates (constructions.constraint_kinematics): the analytic check of
-every mechanism the model accepts.
+"""The constraint solver in body coordinates (constructions.mechanisms.constraint_kinematics): the
+analytic check of every mechanism the model accepts.
 
 Checked (1) against the closed forms of constructions.analytic (four-bar, slider-crank, coupler points)
 and against the dyad chains of constructions.vector_loops (toggle linkage, six-bars of binary links) on
@@ -24,11 +24,14 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from constructions import analytic
-from constructions.constraint_kinematics import (SINGULAR, TOLERANCE, ConstraintState, constraint_count,
-                                                 solve_constraints, solve_positions)
 from constructions.errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan, locate
+from constructions.mechanisms.assembly import assembly_plan
+from constructions.mechanisms.constraint_kinematics import (SINGULAR, TOLERANCE, ConstraintState,
+                                                            solve_constraints, solve_positions)
+from constructions.mechanisms.constraint_model import constraint_count
+from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
+from constructions.mechanisms.pose import locate
 from constructions.vector_loops import chain_solution
 from mechanisms import (quick_return, rocker_with_slot, six_bar, slanted_slot, ternary_posed_by_other_points,
                         toggle_linkage, watt_chain, watt_six_bar)

@@ -10,9 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from constructions.classify import classify_four_bar
-from constructions.cycle import BAND, one_turn, transmission_angles
-from constructions.record import Chart, Curve, Diagram
+from constructions.entities import Chart, Curve, Diagram
+from constructions.mechanisms.classify import classify_four_bar
+from constructions.mechanisms.cycle import BAND, one_turn, transmission_angles
 from constructions.sweep import sweep
 from drafting.layout.chart import DEGREE_STEPS, ticks
 from drafting.scene.reader import load_scene, parse_scene
@@ -93,7 +93,7 @@ def test_limit_positions_drawn_are_the_ends_of_the_rockers_swing():
     """The limit positions (crank and coupler in line, by construction) are where the sweep's rocker angle
     turns back: at their crank angles the sweep puts C there to 1e-9, and the swing drawn is the chart's
     range."""
-    from constructions.record import AngleMark, Point
+    from constructions.entities import AngleMark, Point
     s = Study(load_scene(CYCLE)).run()
     k = s.get("classification")
     res, _ = s.computed("sweep")

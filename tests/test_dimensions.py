@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 import drafting
-from constructions.record import Diagram, Dimension
+from constructions.entities import Diagram, Dimension
 from drafting.scene.reader import SceneError, parse_scene
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"

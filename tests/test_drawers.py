@@ -14,9 +14,10 @@ from dataclasses import dataclass
 
 import pytest
 
+from constructions.entities import (AngleMark, Chart, Circle, Curve, Diagram, Dimension, Entity, Note, Point, Role,
+                                    Segment, Series)
 from constructions.geometry import Vec
-from constructions.record import (AngleMark, Chart, Circle, Construction, Curve, Diagram, Dimension, Entity,
-                                  Note, Point, Role, Segment, Series, Step, Value)
+from constructions.record import Construction, Step, Value
 from drafting.render import drawing as D
 from drafting.layout.diagram import draw_entities, drawer, drawer_for, model_points
 from drafting.render.errors import DrawingError, StyleError

@@ -13,7 +13,9 @@ import pytest
 from constructions.forces import inertia as I
 from constructions.forces.effects import NO_EFFECTS, End
 from constructions.geometry import Vec
-from constructions.linkage import Attached, FixedToLink, assembly_plan, locate
+from constructions.mechanisms.assembly import FixedToLink, assembly_plan
+from constructions.mechanisms.model import Attached
+from constructions.mechanisms.pose import locate
 from drafting.app.cli import builtin_example, main
 from drafting.scene.effects import SECTIONS
 from drafting.scene.reader import SceneError, load_scene, parse_scene

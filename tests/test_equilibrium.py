@@ -13,11 +13,12 @@ from hypothesis import HealthCheck, assume, given, settings, strategies as st
 import constructions.forces.equilibrium as eqm
 from constructions.check import NotModelled, analytic_solution
 from constructions.errors import IndeterminatePosition
-from constructions.bodies import Contact, Pin, SlotPin, moving_bodies, points_of_body
 from constructions.forces.effects import Couple, Effects, End, Load, Mass, Spring
 from constructions.forces.equilibrium import alpha_for_torque, equilibrium, virtual_work_torque
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Link, Mechanism, locate
+from constructions.mechanisms.model import Attached, Link, Mechanism
+from constructions.mechanisms.pose import locate
+from constructions.mechanisms.topology import Contact, Pin, SlotPin, moving_bodies, points_of_body
 from mechanisms import quick_return, rocker_with_slot, slanted_slot, slot_and_guide
 from test_acceleration import toggle_four_bar
 from test_linkage_velocity import four_bars, slider_crank, slider_cranks

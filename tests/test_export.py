@@ -17,8 +17,9 @@ import zlib
 
 import pytest
 
+from constructions.entities import Arrow, Diagram, Point, Role, ScaleBar
 from constructions.geometry import Vec
-from constructions.record import Arrow, Construction, Diagram, Point, Role, ScaleBar
+from constructions.record import Construction
 from drafting.backends import files as export_mod
 from drafting.layout import text as L
 from drafting.backends.files import ExportError, write_sheet

@@ -8,9 +8,10 @@ import json
 
 import pytest
 
+from constructions.entities import Diagram, Note, Role, Segment
 from constructions.geometry import Vec
 from constructions.quantities import Measured
-from constructions.record import Construction, Diagram, Note, Role, Segment, Value
+from constructions.record import Construction, Value
 from drafting.families.registry import FAMILIES, Analysis, Family, register
 from drafting.scene.reader import SceneError, parse_scene
 from drafting.study.study import Study

@@ -13,15 +13,16 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 from constructions.check import compare
 from constructions.errors import IndeterminatePosition
-from constructions.bodies import Contact, SlotPin, frame_number
+from constructions.mechanisms.topology import Contact, SlotPin, frame_number
 from constructions.forces.effects import Couple, Effects, End, Load, Mass, Spring
 from constructions.forces.equilibrium import equilibrium, virtual_work_torque
 from constructions.forces.polygon import ForcesNotDrawn, force_analysis
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
+from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
+from constructions.mechanisms.pose import locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.record import AngleMark, Arrow, Dimension, Point, Segment, TrialLine
+from constructions.entities import AngleMark, Arrow, Dimension, Point, Segment, TrialLine
 from mechanisms import quick_return, rocker_with_slot, slot_and_guide
 from test_linkage_velocity import angles, coords, four_bars, sizes, slider_cranks, speeds, transmission
 
@@ -109,7 +110,7 @@ def test_a_polygon_that_cannot_close_is_named():
 
 def test_three_force_member_by_concurrency():
     from test_linkage_velocity import four_bar
-    from constructions.linkage import Attached
+    from constructions.mechanisms.model import Attached
     m = four_bar((0, 0), (0.12, 0.01), 0.04, 0.13, 0.09, 1, (Attached("E", 2, "B", 0.08, -0.4),))
     fa = solve(m, 1.2, Effects(loads=(Load("P", 2, "E", Vec(10.0, -30.0)),)))
     lines = [e for e in fa.construction.entities() if isinstance(e, TrialLine) and e.diagram.kind == "free-body"

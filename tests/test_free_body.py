@@ -12,13 +12,13 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, assume, given, settings, strategies as st
 
+from constructions.entities import Role, TrialLine
 from constructions.errors import ConstructionError
 from constructions.forces.effects import Couple, Load
 from constructions.forces.free_body import (ImproperlyConstrained, RigidBody, StaticallyIndeterminate, Support,
                                             check_supports, free_body_analysis)
 from constructions.forces.free_body_check import equilibrium_matrix, equilibrium_solution
 from constructions.geometry import Vec
-from constructions.record import Role, TrialLine
 from drafting.app.cli import main
 from drafting.families.registry import BUILTIN, family
 from drafting.scene.reader import SceneError, load_scene, parse_scene

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from constructions.record import Arrow
+from constructions.entities import Arrow
 from drafting.scene.reader import load_scene, parse_scene
 from drafting.study.study import Study
 

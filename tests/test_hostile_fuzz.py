@@ -33,7 +33,7 @@ KINDS = sorted(fuzz.MUTATIONS)
 def known_engine_bug(r) -> str | None:
     """A failure that is a known bug outside this issue's files (reported; remove when fixed)."""
     if r.problems == ["traceback"] and "is already used in 'Space diagram'" in r.stderr:
-        return ("constructions/linkage.py: two points fixed to one link draw the link's outline twice under "
+        return ("constructions/mechanisms/pose.py: two points fixed to one link draw the link's outline twice under "
                 "one entity name (ValueError from the record)")
     return None
 

@@ -188,7 +188,7 @@ def test_in_headless_chromium_the_slider_moves_the_mechanism(tmp_path, cycle, ga
 def test_a_slotted_lever_charts_its_slider_travel():
     """The quick-return's first block rides in the slotted lever; the output is the block on the fixed
     guide, and the cycle charts its travel (the position of Q along the guide) for the slider's cursor."""
-    from constructions.cycle import cycle_record, one_turn
+    from constructions.mechanisms.cycle import cycle_record, one_turn
     from drafting.scene.reader import load_scene
     sc = load_scene(GALLERY / "quick-return-slotted-lever.toml")
     th = sc.angle + 2 * math.pi * np.arange(37) / 36

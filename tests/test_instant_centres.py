@@ -13,8 +13,9 @@ from hypothesis import HealthCheck, given, settings
 
 import mechanisms as M
 from constructions.geometry import Vec
-from constructions.instant_centres import DIAGRAM, FAR, centre_name, instant_centres
-from constructions.linkage import locate
+from constructions.mechanisms.centres import DIAGRAM, FAR, centre_name
+from constructions.mechanisms.instant_centres import instant_centres
+from constructions.mechanisms.pose import locate
 from constructions.polygons.velocity import velocity_polygon
 from drafting.scene.reader import load_scene
 from drafting.study.study import Study
@@ -24,7 +25,7 @@ GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 
 
 def _points(m, body):
-    from constructions.bodies import points_of_body
+    from constructions.mechanisms.topology import points_of_body
     return points_of_body(m, body)
 
 

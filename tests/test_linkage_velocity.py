@@ -22,9 +22,10 @@ from hypothesis import strategies as st
 from constructions import analytic
 from constructions.errors import CannotAssemble, ConstructionError, DegenerateInput, IndeterminatePosition
 from constructions.geometry import ORIGIN, Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
-from constructions.record import (Arrow, Diagram, Point, Polygon, Role, ScaleBar, TrialLine,
-                                  VectorEquation)
+from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
+from constructions.mechanisms.pose import locate
+from constructions.entities import Arrow, Diagram, Point, Polygon, Role, ScaleBar, TrialLine
+from constructions.record import VectorEquation
 from constructions.polygons.common import DEAD_CENTRE_SINE, SINGULAR_SINE, WARN_SINE
 from constructions.polygons.velocity import velocity_polygon
 

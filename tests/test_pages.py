@@ -17,7 +17,8 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from constructions.record import Construction, Diagram, ScaleBar, Step, Term, Value, VectorEquation
+from constructions.entities import Diagram, ScaleBar
+from constructions.record import Construction, Step, Term, Value, VectorEquation
 from drafting.layout.diagram import model_points
 from drafting.render.errors import LayoutError
 from drafting.render.paper import command_points

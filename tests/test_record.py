@@ -7,8 +7,9 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
+from constructions.entities import Arrow, Diagram, Point, Role
 from constructions.geometry import Vec
-from constructions.record import Arrow, Construction, Diagram, Point, Role, Term, VectorEquation
+from constructions.record import Construction, Term, VectorEquation
 from drafting.layout.sheet import SheetInfo, compose_sheet, compose_sheets
 from drafting.backends.svg import sheet_to_svg
 

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from constructions.entities import Diagram
 from constructions.geometry import Vec
-from constructions.record import Diagram
 from drafting.app.cli import main
 from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study

@@ -15,9 +15,10 @@ import xml.etree.ElementTree as ET
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
+from constructions.entities import (Arc, Arrow, Bar, Block, Diagram, Guide, Pivot, Plate, Point,
+                                    Polygon as PolygonEntity, Role, ScaleBar, TrialLine)
 from constructions.geometry import Vec
-from constructions.record import (Arc, Arrow, Bar, Block, Construction, Diagram, Guide, Pivot, Plate, Point,
-                                  Polygon as PolygonEntity, Role, ScaleBar, Term, TrialLine, VectorEquation)
+from constructions.record import Construction, Term, VectorEquation
 from drafting.layout import text as L
 from drafting.layout.text import LayoutError
 from drafting.render.paper import Line, Polygon, Rectangle

@@ -10,13 +10,14 @@ import math
 import pytest
 from hypothesis import HealthCheck, assume, given, settings, strategies as st
 
+from constructions.entities import Diagram
 from constructions.errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from constructions.geometry import Vec
-from constructions.linkage import (Branch, Link, Mechanism, SlotThrough, Slide, assembly_plan, locate,
-                                   mobility)
+from constructions.mechanisms.assembly import SlotThrough, assembly_plan
+from constructions.mechanisms.model import Branch, Link, Mechanism, Slide, mobility
+from constructions.mechanisms.pose import locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.record import Diagram
 from mechanisms import (quick_return, rocker_with_slot, slot_and_guide, ternary_posed_by_other_points,
                         watt_six_bar)
 
@@ -197,7 +198,7 @@ def test_graphical_equals_the_constraint_equations(m, theta, omega, alpha):
 
 
 def test_a_joint_carried_along_two_lines_reads_as_the_notes_would_write_it():
-    from constructions.linkage import TwoLines
+    from constructions.mechanisms.assembly import TwoLines
     m = slot_and_guide()
     plan = assembly_plan(m)
     assert isinstance(plan[-1], TwoLines) and plan[-1].coincident_a == "J3"

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from constructions.check import analytic_solution
-from constructions.linkage import locate
+from constructions.mechanisms.pose import locate
 from constructions.sweep import sweep
 from drafting.app import cli
 from drafting.scene.reader import load_scene
@@ -233,7 +233,7 @@ def test_a_parallelogram_stays_a_parallelogram_through_its_change_points(tmp_pat
 
 
 def load_classification(scene):
-    from constructions.classify import classify_four_bar
+    from constructions.mechanisms.classify import classify_four_bar
     return classify_four_bar(scene.mechanism)
 
 

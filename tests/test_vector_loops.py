@@ -22,11 +22,12 @@ from constructions import analytic
 from constructions.check import AGREEMENT, analytic_solution, analytic_values, compare
 from constructions.errors import CannotAssemble, DegenerateInput
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
+from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
+from constructions.mechanisms.pose import locate
 from constructions.polygons.velocity import velocity_polygon
-from mechanisms import six_bar, toggle_linkage, watt_chain
 from constructions.vector_loops import chain_solution, solving_order
 from drafting.app.cli import main
+from mechanisms import six_bar, toggle_linkage, watt_chain
 
 MM = 1e-3
 

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..record import Chart, Diagram, Role, Series
+from ..entities import Chart, Diagram, Role, Series
 from ..tolerance import ONE_SIDED_INSET, SVAJ_JUMP_REL
 from .laws import Program
 from .search import segment_breaks

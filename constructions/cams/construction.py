@@ -27,9 +27,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..entities import Circle, Curve, Diagram, Note, Pivot, Point, Role, Segment
 from ..geometry import Vec
 from ..quantities import Measured
-from ..record import Circle, Construction, Curve, Diagram, Note, Pivot, Point, Role, Segment, StepKind, Value
+from ..record import Construction, StepKind, Value
 from ..tolerance import STATION_REL
 from .charts import svaj_charts
 from .laws import DWELL, TAU, Program

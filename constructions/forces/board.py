@@ -10,12 +10,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..bodies import Contact, Pin, SlotPin, carriers, connections, frame_number
+from ..entities import Arrow, Diagram, Point, Role, ScaleBar, TrialLine
 from ..errors import ConstructionError, IndeterminatePosition
 from ..geometry import Vec
-from ..linkage import Mechanism, Pose, describe_angle
+from ..mechanisms.model import Mechanism, describe_angle
+from ..mechanisms.pose import Pose
+from ..mechanisms.topology import Contact, Pin, SlotPin, carriers, connections, frame_number
 from ..polygons.common import WARN_SINE, rounding_estimate
-from ..record import Arrow, Diagram, Point, Role, ScaleBar, StepKind, TrialLine, Value
+from ..record import StepKind, Value
 from .bodies import force_name
 from .effects import Effects
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from ..linkage import Mechanism
+    from ..mechanisms.model import Mechanism
 
 
 def force_name(by: int, on: int) -> str:

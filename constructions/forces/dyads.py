@@ -27,10 +27,11 @@ import math
 
 from ..errors import IndeterminatePosition
 from ..geometry import Vec
-from ..linkage import CircleAndGuide, CrankTip, SlotThrough, TwoCircles, TwoLines, describe_angle, slide_line
+from ..mechanisms.assembly import CircleAndGuide, CrankTip, SlotThrough, TwoCircles, TwoLines
+from ..mechanisms.model import describe_angle, slide_line
 from ..polygons.common import WARN_SINE, rounding_estimate
-from ..record import (AngleMark, Arrow, Diagram, Dimension, Point, Role, ScaleBar, Segment, StepKind, TrialLine,
-                      Value)
+from ..entities import AngleMark, Arrow, Diagram, Dimension, Point, Role, ScaleBar, Segment, TrialLine
+from ..record import StepKind, Value
 from .bodies import force_name, torque_name
 from .board import (ORIGIN, PARALLEL_SINE, Drawing, Force, ForcesNotDrawn, answer, body_label, close, contact,
                     force_value, is_loaded, meet, moment_step, outer_carrier, resultant, resultant_line,

@@ -26,11 +26,13 @@ from typing import Mapping
 
 import numpy as np
 
-from ..bodies import Connection, Contact, Pin, SlotPin, connections, moving_bodies, points_of_body
 from ..check import AnalyticSolution, NotModelled, analytic_solution
 from ..errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from ..geometry import Vec
-from ..linkage import CrankTip, FixedToLink, Mechanism, assembly_plan, describe_angle, locate, slide_line
+from ..mechanisms.assembly import CrankTip, FixedToLink, assembly_plan
+from ..mechanisms.model import Mechanism, describe_angle, slide_line
+from ..mechanisms.pose import locate
+from ..mechanisms.topology import Connection, Contact, Pin, SlotPin, connections, moving_bodies, points_of_body
 from .bodies import force_name, torque_name
 from .effects import Effects
 

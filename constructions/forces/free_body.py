@@ -45,12 +45,13 @@ import math
 from dataclasses import dataclass, field
 from typing import Callable, Mapping
 
+from ..entities import (AngleMark, Arrow, Bar, Block, Circle, Diagram, Guide, Pivot, Plate, Point, Role, ScaleBar,
+                        Segment, TrialLine)
 from ..errors import ConstructionError
 from ..geometry import Vec
 from ..polygons.common import WARN_SINE, rounding_estimate
 from ..quantities import Measured
-from ..record import (AngleMark, Arrow, Bar, Block, Circle, Construction, Diagram, Guide, Pivot, Plate, Point, Role, ScaleBar,
-                      Segment, StepKind, Term, TrialLine, Value, VectorEquation)
+from ..record import Construction, StepKind, Term, Value, VectorEquation
 from ..tolerance import DECISION, scene_size
 from .effects import Couple, Load
 # the linkage force polygons' shared pieces: a force on a body, where two lines of action meet, the sum of

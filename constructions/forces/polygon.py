@@ -33,12 +33,15 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Mapping
 
-from ..bodies import Contact, Pin, frame_number
+from ..mechanisms.topology import Contact, Pin, frame_number
 from ..geometry import Vec
-from ..linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles, TwoLines,
-                       assembly_plan, slide_line)
+from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines,
+                                   assembly_plan)
+from ..mechanisms.model import Mechanism, slide_line
+from ..mechanisms.pose import Pose
 from ..quantities import Measured
-from ..record import Arrow, Bar, Block, Construction, Curve, Diagram, Plate, Role, Segment, StepKind, Value
+from ..entities import Arrow, Bar, Block, Curve, Diagram, Plate, Role, Segment
+from ..record import Construction, StepKind, Value
 from .bodies import force_name, torque_name
 from .board import Drawing, Force, ForcesNotDrawn, body_label, force_value, known_forces, resultant
 from .dyads import driving_crank, prp, rpr, rrp, rrr

@@ -13,8 +13,8 @@ from dataclasses import dataclass, field
 
 from ..geometry import Vec
 from ..quantities import Measured
-from ..record import (AngleMark, Arc, Circle, Construction, Curve, Diagram, Dimension, Pivot, Point, Role, Segment,
-                      StepKind, Value)
+from ..entities import AngleMark, Arc, Circle, Curve, Diagram, Dimension, Pivot, Point, Role, Segment
+from ..record import Construction, StepKind, Value
 from .contact import AT_LIMIT, CLEAR, INTERFERENCE, ContactGeometry, Pair, contact_geometry
 from .flank import FLANK_POINTS
 from .generation import drawn_flank, fewest_uncut, straight_depth, tip_round, undercut_flank

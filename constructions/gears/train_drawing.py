@@ -8,9 +8,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..entities import AngleMark, Bar, Circle, Diagram, Note, Pivot, Point, Role
 from ..geometry import Vec
 from ..quantities import Measured
-from ..record import (AngleMark, Bar, Circle, Construction, Diagram, Note, Pivot, Point, Role, StepKind, Value)
+from ..record import Construction, StepKind, Value
 from ..tolerance import STANDSTILL
 from .trains import FRAME, Given, Train, TrainSolution, layout, solve_train
 

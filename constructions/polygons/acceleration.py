@@ -21,13 +21,13 @@ import math
 from dataclasses import dataclass, field
 from typing import Mapping
 
+from ..entities import Arrow, Diagram, Point, Polygon, Role, ScaleBar, TrialLine
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, SlotThrough,
-                       TwoLines, assembly_plan, slide_line)
+from ..mechanisms.assembly import CircleAndGuide, CrankTip, Dyad, FixedToLink, SlotThrough, TwoLines, assembly_plan
+from ..mechanisms.model import Mechanism, slide_line
 from ..quantities import Measured
-from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
-                      TrialLine, Value, VectorEquation)
+from ..record import Construction, StepKind, Term, Value, VectorEquation
 from .common import (SINGULAR_SINE, PolygonDrawing, image_name, image_point, joined, rounding_estimate,
                      sense)
 from .velocity import VelocityAnalysis

@@ -9,7 +9,9 @@ import math
 
 from ..errors import IndeterminatePosition
 from ..geometry import Contact, Line, Vec, intersect_lines
-from ..linkage import CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, TwoLines, describe_angle
+from ..mechanisms.assembly import CrankTip, FixedToLink, TwoCircles, TwoLines
+from ..mechanisms.model import Mechanism, describe_angle
+from ..mechanisms.pose import Pose
 
 SINGULAR_SINE = 1e-4
 """Trial lines crossing at a sine below this mark a singular position (toggle, limit, change point).

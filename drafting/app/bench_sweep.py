@@ -31,7 +31,7 @@ import numpy as np
 
 from constructions.analytic import four_bar, four_bar_buffers, slider_crank
 from constructions.geometry import Vec
-from constructions.linkage import Branch, Link, Mechanism, Slide
+from constructions.mechanisms.model import Branch, Link, Mechanism, Slide
 from constructions.vector_loops import chain_solution
 
 __all__ = ["ALPHA", "CHAIN_MAX", "MECHANISMS", "OMEGA", "format_detail", "format_table", "sweep_rows",

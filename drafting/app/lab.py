@@ -28,8 +28,9 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Sequence
 
+from constructions.entities import Role
 from constructions.geometry import Vec
-from constructions.record import Construction, Role, Step, StepKind
+from constructions.record import Construction, Step, StepKind
 
 from .answers import KeyItem, key_items
 from ..render.errors import LayoutError

@@ -30,11 +30,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from constructions.cycle import one_turn
+from constructions.mechanisms.cycle import one_turn
 from constructions.geometry import Vec
-from constructions.linkage import Mechanism
+from constructions.mechanisms.model import Mechanism
 from constructions.sweep import crank_points
-from constructions.record import Chart, Construction
+from constructions.entities import Chart
+from constructions.record import Construction
 
 from ..layout.chart import AxisUnits, chart_with_axes
 from ..render.drawing import PIN_R, DOT_R

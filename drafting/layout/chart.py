@@ -12,7 +12,7 @@ import math
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
-from constructions.record import Chart
+from constructions.entities import Chart
 
 from ..render.drawing import panel_drawer
 from ..render.paper import Command, Line, Polyline, Rect, Rectangle, Text

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 from typing import Sequence
 
+from constructions.entities import Entity
 from constructions.geometry import Vec
-from constructions.record import Entity
 
 from . import chart  # noqa: F401  (registers the chart drawer)
 from ..render.drawers import diagram_facts, draw_pins, trial_crossings

@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Sequence
 
-from constructions.record import Arrow, Chart, Entity, Point, Role, ScaleBar
+from constructions.entities import Arrow, Chart, Entity, Point, Role, ScaleBar
 
 from . import text as L
 from .chart import CHART_MIN, AxisUnits, draw_chart

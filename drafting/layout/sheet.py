@@ -26,7 +26,8 @@ from dataclasses import dataclass, field, fields, replace
 from types import MappingProxyType
 from typing import Mapping, Sequence
 
-from constructions.record import Construction, Entity, ScaleBar, Step
+from constructions.entities import Entity, ScaleBar
+from constructions.record import Construction, Step
 
 from . import text as L
 from ..render.errors import LayoutError

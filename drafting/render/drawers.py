@@ -14,10 +14,10 @@ from __future__ import annotations
 import math
 from typing import Sequence
 
+from constructions.entities import (AngleMark, Arc, Arrow, Bar, Block, Circle as CircleEntity, Curve, Dimension,
+                                    Entity, Guide, Note, Pivot, Plate, Point, Polygon as PolygonEntity, Role,
+                                    ScaleBar, Segment, TrialLine)
 from constructions.geometry import Vec
-from constructions.record import (AngleMark, Arc, Arrow, Bar, Block, Circle as CircleEntity, Curve, Dimension,
-                                  Entity, Guide, Note, Pivot, Plate, Point, Polygon as PolygonEntity, Role,
-                                  ScaleBar, Segment, TrialLine)
 
 from .drawing import (ARROW_LEN, BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, NOTES, PATHS, PIN_R, PINS,
                       SHAFTS, THICK_STYLES, TRIALS, DrawContext, Drawing, LabelReq, Pt, _dist, angle_gap,

@@ -28,8 +28,8 @@ import math
 from dataclasses import dataclass, field
 from typing import Callable, Iterable, Sequence
 
+from constructions.entities import Entity
 from constructions.geometry import Vec
-from constructions.record import Entity
 
 from .errors import DrawingError
 from .paper import Command, Line, Polygon, Polyline, Rect, Strokes, command_points, translated

@@ -17,7 +17,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from constructions.record import Role
+from constructions.entities import Role
 
 from .errors import StyleError
 from .paper import Rect, Span

@@ -19,7 +19,8 @@ from constructions.errors import DegenerateInput
 from constructions.forces import inertia as inertia_of
 from constructions.forces.effects import NO_EFFECTS, Couple, Effects, End, Load, Mass, Spring
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Mechanism, assembly_plan
+from constructions.mechanisms.assembly import assembly_plan
+from constructions.mechanisms.model import Attached, Mechanism
 
 from . import limits
 from .unitset import Units

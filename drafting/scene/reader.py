@@ -16,7 +16,7 @@ from typing import Any
 
 from constructions.forces.effects import NO_EFFECTS, Effects
 from constructions.geometry import Vec
-from constructions.linkage import Mechanism
+from constructions.mechanisms.model import Mechanism
 
 from .unitset import KEYS as UNIT_KEYS, Units
 from . import limits

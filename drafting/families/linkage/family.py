@@ -11,11 +11,12 @@ from dataclasses import replace
 import numpy as np
 from typing import Any
 
-from constructions.classify import classify_four_bar
+from constructions.mechanisms.classify import classify_four_bar
 from constructions.forces.effects import NO_EFFECTS
 from constructions.forces.polygon import force_analysis
 from constructions.check import NotModelled, analytic_solution, analytic_values
-from constructions.linkage import assembly_plan, locate
+from constructions.mechanisms.assembly import assembly_plan
+from constructions.mechanisms.pose import locate
 from constructions.quantities import Measured
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
@@ -32,7 +33,7 @@ def _classification(study):
 
 def _loops(study):
     """The further four-bar loops (a rocker driving a second rocker), each classified."""
-    from constructions.classify import classify_loops
+    from constructions.mechanisms.classify import classify_loops
     return classify_loops(study.scene.mechanism)
 
 
@@ -90,7 +91,7 @@ def _acceleration(study):
 
 
 def _instant_centres(study):
-    from constructions.instant_centres import instant_centres
+    from constructions.mechanisms.instant_centres import instant_centres
     return instant_centres(study.scene.mechanism, study.get("position"), study.scene.omega)
 
 
@@ -100,7 +101,7 @@ SWEEP_STEPS = 360
 
 def _sweep(study):
     """The linkage over one turn of its crank from the drawn angle, and its charts and coupler curves."""
-    from constructions.cycle import cycle_record
+    from constructions.mechanisms.cycle import cycle_record
     from constructions.sweep import sweep
     s = study.scene
     thetas = s.angle + 2 * math.pi * np.arange(SWEEP_STEPS + 1) / SWEEP_STEPS
@@ -322,7 +323,7 @@ def _json(study) -> dict[str, Any]:
                                      for i, j in res.gaps()]}
     ic = study.computed("instant centres")
     if ic is not None:
-        from constructions.instant_centres import centre_name
+        from constructions.mechanisms.centres import centre_name
         out["instant_centres"] = {
             centre_name(q): ({"x": u.convert("length", c.at.x), "y": u.convert("length", c.at.y)} if c.finite
                              else {"at_infinity": True, "direction_deg": direction_deg(c.direction) % 180})

@@ -10,7 +10,8 @@ from typing import Any
 
 from constructions.errors import DegenerateInput
 from constructions.geometry import Vec
-from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan
+from constructions.mechanisms.assembly import assembly_plan
+from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 
 from ...scene.effects import SECTIONS as EFFECT_SECTIONS, read_effects
 from ...scene.unitset import Units

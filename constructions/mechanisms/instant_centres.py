@@ -26,63 +26,23 @@ polygon's and the analytic ones.
 from __future__ import annotations
 
 import itertools
-import math
 from dataclasses import dataclass, field
 from typing import Mapping
 
 import numpy as np
 
-from .bodies import Contact, SlotPin, connections, frame_number, moving_bodies, points_of_body
-from .geometry import Vec
-from .linkage import Mechanism, Pose, slide_line
-from .quantities import Measured
-from .record import Bar, Construction, Diagram, Point, Role, Segment, StepKind, Value
+from ..entities import Point, Role
+from ..geometry import Vec
+from ..quantities import Measured
+from ..record import Construction, StepKind, Value
+from .centre_diagram import circle_diagram, drawn_box, kennedy_entities, link_bars
+from .centres import DIAGRAM, FAR, Centre, Pair, centre_name, pair
+from .model import Mechanism, slide_line
+from .pose import Pose
+from .topology import Contact, SlotPin, connections, frame_number, moving_bodies, points_of_body
 
-DIAGRAM = Diagram("instant centres")
-CIRCLE = DIAGRAM
-"""The circle diagram is drawn beside the centres, in their diagram."""
 PARALLEL = 1e-9
 """Below this (normalised) crossing two Kennedy lines are one line: the centre is not found from them."""
-FAR = 2.5
-"""Centres farther than this many mechanism sizes from its middle are named, not drawn."""
-
-Pair = tuple[int, int]
-
-
-def pair(i: int, j: int) -> Pair:
-    return (i, j) if i < j else (j, i)
-
-
-def centre_name(p: Pair) -> str:
-    """I_13 (I_1,12 when a number has two digits)."""
-    sep = "," if p[0] >= 10 or p[1] >= 10 else ""
-    return f"I_{p[0]}{sep}{p[1]}"
-
-
-@dataclass(frozen=True)
-class Centre:
-    """The instant centre of ``bodies``: ``point`` homogeneous (w = 1 finite, w = 0 at infinity), ``how``
-    it was found, the two ``lines`` (pairs of centres) Kennedy crossed, and the sine they crossed at."""
-
-    bodies: Pair
-    point: tuple[float, float, float]
-    how: str
-    lines: tuple[tuple[Pair, Pair], ...] = ()
-    condition: float = 1.0
-
-    @property
-    def finite(self) -> bool:
-        return self.point[2] != 0.0
-
-    @property
-    def at(self) -> Vec:
-        x, y, w = self.point
-        return Vec(x / w, y / w)
-
-    @property
-    def direction(self) -> Vec:
-        """The direction of a centre at infinity."""
-        return Vec(self.point[0], self.point[1]).unit()
 
 
 @dataclass(frozen=True)
@@ -154,7 +114,7 @@ def instant_centres(m: Mechanism, pose: Pose, omega: float) -> InstantCentres:
             (c.point[0] / c.point[2] - mid.x) / size, (c.point[1] / c.point[2] - mid.y) / size, 1.0])
             if c.finite else np.array([c.point[0], c.point[1], 0.0]))
 
-    rec = rec.then("Draw the links where they are.", *_links(m, pos), kind=StepKind.GIVEN)
+    rec = rec.then("Draw the links where they are.", *link_bars(m, pos), kind=StepKind.GIVEN)
     # primary centres: pins shared by bodies, one step (and one point) per pin
     for p in pos:
         on = [b for b in bodies if p in _points(m, b, f)]
@@ -226,7 +186,7 @@ def instant_centres(m: Mechanism, pose: Pose, omega: float) -> InstantCentres:
                            f"bodies are in line); they cross at {centre_name(q)}"
                            + ("" if c.finite else ", at infinity")
                            + (", off the drawing at x = $x, y = $y" if far else "") + ".",
-                           *_kennedy_entities(c, found, norm, mid, size),
+                           *kennedy_entities(c, found, norm, mid, size),
                            values={k: Value("length", v if abs(v) > 1e-12 * size else 0.0)
                                    for k, v in (("x", c.at.x), ("y", c.at.y))} if far else None,
                            kind=StepKind.CONSTRUCTION)
@@ -236,7 +196,7 @@ def instant_centres(m: Mechanism, pose: Pose, omega: float) -> InstantCentres:
     if missing:
         warnings.append("Kennedy's theorem leaves " + ", ".join(centre_name(q) for q in missing)
                         + " undetermined at this position (their lines coincide: a change point or toggle).")
-    rec = _circle_diagram(rec, bodies, found, m.size, _drawn_box(rec))
+    rec = circle_diagram(rec, bodies, found, m.size, drawn_box(rec))
     angular, fields = _velocities(m, f, bodies, found, omega, pos)
     velocities = {p: _velocity(fields[b], pos[p]) for p in pos
                   for b in [_body_of(m, p, f, fields)] if b is not None}
@@ -250,16 +210,6 @@ def instant_centres(m: Mechanism, pose: Pose, omega: float) -> InstantCentres:
                        kind=StepKind.ANSWER)
     return InstantCentres(rec, f, bodies, found, missing, angular, velocities, tuple(warnings), conditions)
 
-
-def _links(m: Mechanism, pos) -> list:
-    """Each link as bars between its points (a ternary link as all its sides), faint: the centres matter."""
-    out = []
-    for k in m.links:
-        pts = [p for p in m.points_of(k.number) if p in pos]
-        for a, b in itertools.combinations(pts, 2):
-            if (pos[a] - pos[b]).norm() > 0:
-                out.append(Bar(f"ic link {k.number} {a}{b}", Role.GIVEN, DIAGRAM, pos[a], pos[b], k.number))
-    return out
 
 
 def _points(m: Mechanism, body: int, frame: int) -> tuple[str, ...]:
@@ -279,85 +229,6 @@ def _line_words(source) -> str:
         a, b = source
         return f"the line {centre_name(a)} {centre_name(b)}"
     return str(source)
-
-
-def _centre_entities(c: Centre, norm) -> tuple:
-    name = centre_name(c.bodies)
-    if c.finite and norm(c.at).norm() <= FAR:
-        return (Point(f"ic {name}", Role.RESULT, DIAGRAM, c.at, name),)
-    return ()
-
-
-def _kennedy_entities(c: Centre, found, norm, mid: Vec, size: float) -> tuple:
-    """The found centre (if near) and its two lines, from the centres on them toward it, clipped to the
-    region the diagram shows."""
-    out = list(_centre_entities(c, norm))
-    name = centre_name(c.bodies)
-    for idx, (a, b) in enumerate(c.lines):
-        ends = [found[x] for x in (a, b)] + [c]
-        seg = _clip_line(ends, mid, size)
-        if seg is not None:
-            out.append(Segment(f"ic {name} line {idx + 1}", Role.AUXILIARY, DIAGRAM, seg[0], seg[1]))
-    return tuple(out)
-
-
-def _clip_line(centres: list[Centre], mid: Vec, size: float) -> tuple[Vec, Vec] | None:
-    """The stretch of the line through ``centres`` that covers the finite ones within the drawn region
-    (FAR sizes about the middle), a little past them."""
-    near = [c.at for c in centres if c.finite and (c.at - mid).norm() <= FAR * size]
-    if not near:
-        return None
-    far = [c for c in centres if not (c.finite and (c.at - mid).norm() <= FAR * size)]
-    if len(near) >= 2:
-        d = max(((p, q) for p in near for q in near), key=lambda t: (t[0] - t[1]).norm())
-        direction = (d[1] - d[0]).unit() if (d[1] - d[0]).norm() > 0 else None
-    else:
-        direction = None
-    if direction is None and far:
-        c = far[0]
-        direction = c.direction if not c.finite else (c.at - near[0]).unit()
-    if direction is None:
-        return None
-    ts = [(p - near[0]).dot(direction) for p in near]
-    lo, hi = min(ts), max(ts)
-    pad = 0.15 * size
-    if far:                                            # run on toward the centre off the drawing
-        target = far[0]
-        toward = target.direction if not target.finite else (target.at - near[0])
-        if toward.dot(direction) > 0:
-            hi = max(hi, lo) + 0.6 * size
-        else:
-            lo = min(lo, hi) - 0.6 * size
-    return near[0] + direction * (lo - pad), near[0] + direction * (hi + pad)
-
-
-def _drawn_box(rec: Construction) -> tuple[float, float, float, float]:
-    """(xmin, ymin, xmax, ymax) of what the instant-centre diagram holds so far."""
-    pts: list[Vec] = []
-    for e in rec.entities(DIAGRAM):
-        for name in ("at", "start", "end"):
-            v = getattr(e, name, None)
-            if isinstance(v, Vec):
-                pts.append(v)
-    return (min(p.x for p in pts), min(p.y for p in pts), max(p.x for p in pts), max(p.y for p in pts))
-
-
-def _circle_diagram(rec: Construction, bodies, found, size: float, box) -> Construction:
-    """The circle diagram, beside the centres in the same diagram (it has no scale of its own): the bodies
-    on a circle, a chord for each centre (solid: from a joint, dashed: by Kennedy)."""
-    x0, y0, x1, y1 = box
-    r = max(0.2 * max(x1 - x0, y1 - y0), 0.3 * size)
-    centre = Vec(x1 + 1.6 * r, 0.5 * (y0 + y1))
-    n = len(bodies)
-    at = {b: centre + Vec(-r * math.sin(2 * math.pi * i / n), r * math.cos(2 * math.pi * i / n))
-          for i, b in enumerate(bodies)}
-    ents = [Point(f"circle {b}", Role.LABEL, CIRCLE, at[b], str(b)) for b in bodies]
-    for q, c in found.items():
-        role = Role.AUXILIARY if c.lines or "Kennedy" in c.how else Role.GIVEN
-        ents.append(Segment(f"circle {centre_name(q)}", role, CIRCLE, at[q[0]], at[q[1]]))
-    return rec.then("The circle diagram: one chord per centre found, solid where a joint gives it, dashed "
-                    "where Kennedy's theorem does (each dashed chord closes two triangles of known chords).",
-                    *ents, kind=StepKind.CONSTRUCTION)
 
 
 def _velocities(m: Mechanism, f: int, bodies, found, omega: float, pos):

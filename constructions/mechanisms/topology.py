@@ -23,9 +23,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .errors import DegenerateInput
-from .linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, SlotThrough, TwoCircles, TwoLines,
-                       assembly_plan)
+from ..errors import DegenerateInput
+from .assembly import CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines, assembly_plan
+from .model import Mechanism
 
 
 def frame_number(m: Mechanism) -> int:

@@ -28,9 +28,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .errors import ConstructionError
-from .geometry import Circle, Contact, Vec, intersect_circles
-from .linkage import CrankTip, Mechanism, TwoCircles, assembly_plan, mobility
+from ..errors import ConstructionError
+from ..geometry import Circle, Contact, Vec, intersect_circles
+from .assembly import CrankTip, TwoCircles, assembly_plan
+from .model import Branch, Link, Mechanism, mobility
 
 
 @dataclass(frozen=True)
@@ -171,7 +172,6 @@ def classify_loops(m: Mechanism) -> tuple[Loop, ...]:
     point of a link that turns about a fixed pivot of its own (a rocker driving a second rocker, as in a
     Watt or Stephenson six-bar), classified as a four-bar with that link as its input.  The input's own
     swing may be less than a turn, so "turns fully" is what the loop's lengths allow."""
-    from .linkage import Branch, Link
     out = []
     first = classify_four_bar(m)
     for step in assembly_plan(m)[1:]:

@@ -19,11 +19,12 @@ import math
 
 import numpy as np
 
+from ..entities import AngleMark, Chart, Curve, Diagram, Point, Role, Segment, Series
+from ..geometry import Vec
+from ..record import Construction, StepKind, Value
+from ..sweep import Sweep
 from .classify import FourBarClass
-from .geometry import Vec
-from .linkage import Mechanism
-from .record import AngleMark, Chart, Construction, Curve, Diagram, Point, Role, Segment, Series, StepKind, Value
-from .sweep import Sweep
+from .model import Mechanism
 
 BAND = (math.radians(40.0), math.radians(140.0), "40-140 deg")
 """The usual range of a transmission angle (notes, "Transmission angle")."""
@@ -164,7 +165,7 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
 
 def _limit_positions(rec: Construction, m: Mechanism, k: FourBarClass | None, s: Sweep, degrees) -> Construction:
     """The rocker's two limit positions on the space diagram (crank and coupler in line, found by
-    construction in :mod:`constructions.classify`), dashed, with the rocker's swing between them."""
+    construction in :mod:`constructions.mechanisms.classify`), dashed, with the rocker's swing between them."""
     if k is None or len(k.limit_positions) != 2:
         return rec
     o1, _, c, o2 = k.joints
