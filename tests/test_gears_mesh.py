@@ -18,7 +18,7 @@ from constructions.gears.mesh import mesh_analysis
 from constructions.gears.mesh_check import closed_form, notes_contact_ratio
 from constructions.gears.tooth import (Gear, ToothSystem, inv, involute_point, roll_angle, unwinding_points)
 from constructions.geometry import Vec
-from constructions.record import Dimension
+from constructions.entities import Dimension
 
 REL = 1e-9
 DEG = math.pi / 180

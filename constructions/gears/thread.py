@@ -7,7 +7,8 @@ from __future__ import annotations
 import math
 
 from ..geometry import Vec
-from ..record import Arc, Construction, Curve, Diagram, Dimension, Note, Point, Role, Segment, Value
+from ..entities import Arc, Curve, Diagram, Dimension, Note, Point, Role, Segment
+from ..record import Construction, Value
 from .flank import FLANK_POINTS
 from .generation import drawn_flank, undercut_flank
 from .tooth import Gear, involute_point, inv, roll_angle, unwinding_points

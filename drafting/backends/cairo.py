@@ -25,7 +25,6 @@ import io
 import os
 import re
 import time
-from pathlib import Path
 from typing import Sequence
 
 from ..render.paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
