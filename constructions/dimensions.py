@@ -11,6 +11,7 @@ from __future__ import annotations
 from .geometry import Vec
 from .linkage import Mechanism, Pose
 from .record import Construction, Diagram, Dimension, Role, Value
+from .tolerance import DECISION
 
 STANDOFF = 0.12
 """How far a dimension line stands off its link, as a fraction of the mechanism's size."""
@@ -43,7 +44,7 @@ def dimension_links(m: Mechanism, pose: Pose) -> Construction:
         if s.on is not None:
             continue
         foot = s.line.foot(m.ground[o1])
-        if (foot - m.ground[o1]).norm() <= 1e-9 * m.size:
+        if (foot - m.ground[o1]).norm() <= DECISION * m.size:
             continue
         ents.append(Dimension(f"dimension offset {s.joint}", Role.DIMENSION, Diagram.SPACE,
                               m.ground[o1], foot, 0.0, f"e $e{s.joint}"))

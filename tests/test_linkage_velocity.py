@@ -25,7 +25,7 @@ from constructions.geometry import ORIGIN, Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, locate
 from constructions.record import (Arrow, Diagram, Point, Polygon, Role, ScaleBar, TrialLine,
                                   VectorEquation)
-from constructions.polygons.common import DEAD_CENTRE_SINE, SINGULAR_SINE, WARN_SINE
+from constructions.tolerance import DEAD_CENTRE_SINE, SINGULAR_SINE, WARN_SINE
 from constructions.polygons.velocity import velocity_polygon
 
 AGREE = 1e-9
