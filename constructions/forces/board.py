@@ -14,14 +14,13 @@ from ..bodies import Contact, Pin, SlotPin, carriers, connections, frame_number
 from ..errors import ConstructionError, IndeterminatePosition
 from ..geometry import Vec
 from ..linkage import Mechanism, Pose, describe_angle
-from ..polygons.common import WARN_SINE, rounding_estimate
+from ..polygons.common import rounding_estimate
 from ..record import Arrow, Diagram, Point, Role, ScaleBar, StepKind, TrialLine, Value
+from ..tolerance import PARALLEL_SINE, WARN_SINE
 from .bodies import force_name
 from .effects import Effects
 
 ORIGIN = Vec(0.0, 0.0)
-PARALLEL_SINE = 1e-9
-"""Below this sine two lines of action are parallel: the force polygon cannot close."""
 
 
 class ForcesNotDrawn(ConstructionError):
