@@ -21,13 +21,12 @@ import math
 
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, SlotThrough,
+from ..linkage import (CrankTip, Dyad, FixedToLink, Mechanism, SlotThrough,
                        TwoLines, assembly_plan, slide_line)
-from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
-                      TrialLine, Value, VectorEquation)
+from ..record import Arrow, Diagram, Point, Role, StepKind, Term, TrialLine, Value, VectorEquation
 from ..tolerance import SINGULAR_SINE
 from .analyses import AccelerationAnalysis, VelocityAnalysis
-from .common import PolygonDrawing, component_name, image_name, image_point, joined, sense
+from .common import PolygonDrawing, dyad_arms, component_name, image_name, image_point, joined, sense
 from .equations import acceleration_caption, acceleration_equation, acceleration_slot_equation
 
 PRIME = "'"
@@ -170,10 +169,10 @@ class _Polygon(PolygonDrawing):
         return self.parallel_trial(f"Through its tip draw the direction of the sliding component {name}, "
                                    f"parallel to the slot.", f"trial {name}", tip, g, eq, True)
 
-    def _slot_lines(self, j: str, jg: str, on: int, g: Vec, eq) -> tuple[Vec, Line]:
+    def slot_trial(self, j: str, jg: str, on: int, g: Vec, eq) -> tuple[Line, Vec]:
         """J in the slot of link ``on``: the acceleration image of the link's point JG under J, the Coriolis
-        component from it, and through its tip the trial line of the sliding component.  Returns the
-        Coriolis component's tip and that line."""
+        component from it, and through its tip the trial line of the sliding component.  Returns that line
+        and the Coriolis component's tip."""
         a_jg = self._acceleration_on(on, jg)
         self.acc[jg] = a_jg
         self.steps.append((f"Mark {_img(jg)}, the acceleration image of the point {jg} of link {on} "
@@ -182,19 +181,13 @@ class _Polygon(PolygonDrawing):
                            eq, {"a": _a(a_jg.norm())}, StepKind.CONSTRUCTION))
         v_rel = self.va.velocities[j] - self.va.velocities[jg]
         tip = self._coriolis(on, v_rel, a_jg, f"A_{j}{jg}^c", f"{j}{jg}", jg, eq)
-        return tip, self._sliding_trial(f"A_{j}{jg}^s", tip, g, eq)
+        return self._sliding_trial(f"A_{j}{jg}^s", tip, g, eq), tip
 
     def dyad(self, step: Dyad) -> None:
         """One vector equation: the known normal (and Coriolis) components, two trial lines, their crossing."""
-        if isinstance(step, SlotThrough):
-            return self.slot_through(step)
-        if isinstance(step, TwoLines):
-            return self.two_lines(step)
         m, pos = self.m, self.pose.positions
         j = step.joint
-        guided = isinstance(step, CircleAndGuide)
-        on = step.slide.on if guided else None
-        arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
+        guided, on, arms = dyad_arms(step)
         eq = acceleration_equation(m, self.crank.tip, arms, j, guided, step.coincident if on is not None else "")
         self.equations.append((acceleration_caption(m, eq, arms, j, guided, step), eq))
         trials: list[Line] = []
@@ -202,15 +195,7 @@ class _Polygon(PolygonDrawing):
         for link, centre in arms:
             tips[centre], line = self._normal(j, j, centre, link.number, eq)
             trials.append(line)
-        slide_tip = None
-        if guided:
-            g = self.pose.lines[j].direction
-            if on is None:
-                trials.append(self.guide_trial(j, g, eq))
-            else:
-                slide_tip, line = self._slot_lines(j, step.coincident, on, g, eq)
-                trials.append(line)
-        aj = self._close(step, trials)
+        aj, slide_tip = self.close_dyad(step, trials, eq)
         self.acc[j] = aj
         values: dict[str, Value] = {}
         measured: list[Arrow] = []
@@ -265,7 +250,7 @@ class _Polygon(PolygonDrawing):
                 trials.append(self.guide_trial(j, g, eq, f"trial A_{j} guide"))
                 tips.append(None)
                 continue
-            tip, line = self._slot_lines(j, jg, sl.on, g, eq)
+            line, tip = self.slot_trial(j, jg, sl.on, g, eq)
             trials.append(line)
             tips.append((jg, tip))
         aj = self._close(step, trials)
@@ -344,27 +329,14 @@ class _Polygon(PolygonDrawing):
         self._alpha_of(link.number)
         ip, iq, idd = (("O_a" if x in self.m.ground else _img(x)) for x in (p, q, d))
         self.acc[d] = ad
-        self.steps.append((
+        self.image_answer(
             f"Acceleration image of link {link.number}: on {joined(ip, iq)} draw the triangle {joined(ip, iq, idd)} "
             f"similar to {p}{q}{d}, in the same order of letters (it is {p}{q}{d} turned and scaled as "
             f"{joined(ip, iq)} is {p}{q}). "
-            f"Join O_a to {idd}: A_{d} = $a.",
-            (Polygon(f"acceleration image {p}{q}{d}", Role.IMAGE, Diagram.ACCELERATION, (ap, aq, ad)),
-             Point(f"acceleration image {d}", Role.LABEL, Diagram.ACCELERATION, ad, idd),
-             Arrow(f"result A_{d}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, ad, f"A_{d}")),
-            None, {"a": _a(ad.norm())}, StepKind.ANSWER))
+            f"Join O_a to {idd}: A_{d} = $a.", "acceleration image", p, q, d, (ap, aq, ad), idd, {"a": _a(ad.norm())})
 
     def analysis(self, scale: float | None) -> AccelerationAnalysis:
         """The record in the notes' order: equations, pole, scale, then the drawing steps."""
-        rec = Construction("Acceleration polygon")
-        for words, eq in self.equations:
-            rec = rec.then(words, equation=eq, kind=StepKind.GIVEN)
-        rec = rec.then("Choose the pole O_a.", Point("pole O_a", Role.LABEL, Diagram.ACCELERATION, ORIGIN, "O_a"))
-        rec = rec.then(f"Choose the acceleration scale: 1 mm = $s; A_{self.crank.tip} is $len.",
-                       ScaleBar("acceleration scale", Role.SCALE_BAR, Diagram.ACCELERATION, "acceleration", scale),
-                       values={"s": Value("scale", scale, "acceleration"),
-                               "len": Value("paper length", self.known, "acceleration")})
-        for words, entities, eq, values, kind in self.steps:
-            rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
+        rec = self.record("acceleration", scale, self.known)
         return AccelerationAnalysis(rec, self.va, self.acc, self.normal, self.tangential, self.ang, self.cond,
                                     scale, tuple(self.warnings), self.alpha, self.coriolis, self.sliding)

@@ -10,8 +10,9 @@ import math
 
 from ..errors import IndeterminatePosition
 from ..geometry import ORIGIN, Contact, Line, Vec, intersect_lines
-from ..linkage import CrankTip, FixedToLink, Mechanism, Pose, TwoCircles, TwoLines, describe_angle
-from ..record import Role, StepKind, TrialLine
+from ..linkage import (CircleAndGuide, CrankTip, FixedToLink, Mechanism, Pose, SlotThrough, TwoCircles, TwoLines,
+                       describe_angle)
+from ..record import Arrow, Construction, Point, Polygon, Role, ScaleBar, StepKind, TrialLine, Value
 from ..tolerance import CHANGE_POINT_REL, CONDITION_FLOOR, DEAD_CENTRE_SINE, ROUNDING, WARN_SINE
 
 
@@ -128,6 +129,15 @@ def change_point(m: Mechanism, pose: Pose) -> bool:
     return all(abs(axis.signed_distance(p)) <= CHANGE_POINT_REL * m.size for p in pts)
 
 
+def dyad_arms(step) -> tuple[bool, int | None, list]:
+    """A dyad as (on a guide or slot, the slotted link or None, its arms (link, centre)): the link and its
+    centre on a guide or slot, else both links with their outer joints."""
+    guided = isinstance(step, CircleAndGuide)
+    on = step.slide.on if guided else None
+    arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
+    return guided, on, arms
+
+
 def image_point(P: Vec, Q: Vec, D: Vec, ip: Vec, iq: Vec) -> tuple[Vec, float, float]:
     """The image d of a point D of a rigid link PQ, given the images p and q: the triangle pqd is similar
     to PQD (same complex ratio (D - P)/(Q - P)), exact for velocity and acceleration images alike.
@@ -153,9 +163,15 @@ class PolygonDrawing:
     diagram = None
 
     def draw_plan(self, plan) -> None:
+        """Each step after the crank: an image, a slotted link through a joint, a joint on two lines, or a
+        dyad of two links (or a link and a guide or slot)."""
         for step in plan[1:]:
             if isinstance(step, FixedToLink):
                 self.image(step)
+            elif isinstance(step, SlotThrough):
+                self.slot_through(step)
+            elif isinstance(step, TwoLines):
+                self.two_lines(step)
             elif not isinstance(step, CrankTip):
                 self.dyad(step)
 
@@ -169,6 +185,31 @@ class PolygonDrawing:
             self.warnings.append(near_singular_warning(self.m, step, self.pose, hit.condition, self.what))
         return hit.points[0]
 
+    def image_answer(self, words: str, prefix: str, p: str, q: str, d: str, corners: tuple[Vec, Vec, Vec],
+                     label: str, values) -> None:
+        """The step ``words`` that places the image of D, a point of link PQ: the image triangle ``corners``
+        (p, q, d), d's ``label``, and D's absolute vector from the pole."""
+        sym, tip = self.symbol, corners[2]
+        self.steps.append((words, (Polygon(f"{prefix} {p}{q}{d}", Role.IMAGE, self.diagram, corners),
+                                   Point(f"{prefix} {d}", Role.LABEL, self.diagram, tip, label),
+                                   Arrow(f"result {sym}_{d}", Role.RESULT, self.diagram, ORIGIN, tip, f"{sym}_{d}")),
+                           None, values, StepKind.ANSWER))
+
+    def record(self, kind: str, scale: float | None, known: float) -> Construction:
+        """The record in the notes' order: the equations, the pole, the ``kind`` scale (``known`` the length
+        of the crank tip's vector), then the drawing steps."""
+        rec = Construction(f"{kind.capitalize()} polygon")
+        for words, eq in self.equations:
+            rec = rec.then(words, equation=eq, kind=StepKind.GIVEN)
+        rec = rec.then(f"Choose the pole {self.pole}.",
+                       Point(f"pole {self.pole}", Role.LABEL, self.diagram, ORIGIN, self.pole))
+        rec = rec.then(f"Choose the {kind} scale: 1 mm = $s; {self.symbol}_{self.crank.tip} is $len.",
+                       ScaleBar(f"{kind} scale", Role.SCALE_BAR, self.diagram, kind, scale),
+                       values={"s": Value("scale", scale, kind), "len": Value("paper length", known, kind)})
+        for words, entities, eq, values, kind_ in self.steps:
+            rec = rec.then(words, *entities, equation=eq, values=values, kind=kind_)
+        return rec
+
     def parallel_trial(self, words: str, name: str, through: Vec, g: Vec, eq, slot: bool, *marks,
                        values=None) -> Line:
         """The step ``words``: the points ``marks``, then the trial line ``name`` through ``through``, parallel
@@ -177,6 +218,21 @@ class PolygonDrawing:
         self.steps.append((words, (*marks, TrialLine(name, Role.TRIAL, self.diagram, through, g, label)), eq,
                            values or {}, StepKind.CONSTRUCTION))
         return Line(through, g)
+
+    def close_dyad(self, step, trials: list[Line], eq) -> tuple[Vec, Vec | None]:
+        """The crossing of a dyad's trial lines: its arms' ``trials`` and, for a joint on a fixed guide, the
+        line through the pole along it, or in the slot of a moving link the line ``slot_trial`` draws.
+        Returns the crossing and where the sliding vector along the slot starts (None without a slot)."""
+        start = None
+        if isinstance(step, CircleAndGuide):
+            j = step.joint
+            g = self.pose.lines[j].direction
+            if step.slide.on is None:
+                trials = trials + [self.guide_trial(j, g, eq)]
+            else:
+                line, start = self.slot_trial(j, step.coincident, step.slide.on, g, eq)
+                trials = trials + [line]
+        return self._close(step, trials), start
 
     def guide_trial(self, j: str, g: Vec, eq, name: str = "") -> Line:
         """The direction of the absolute velocity (acceleration) of a joint on a fixed guide: through the

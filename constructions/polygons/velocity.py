@@ -16,13 +16,12 @@ import math
 
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..linkage import (CircleAndGuide, CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough,
+from ..linkage import (CrankTip, Dyad, FixedToLink, Mechanism, Pose, SlotThrough,
                        TwoLines, assembly_plan, slide_line)
-from ..record import (Arrow, Construction, Diagram, Point, Polygon, Role, ScaleBar, StepKind, Term,
-                      TrialLine, Value, VectorEquation)
+from ..record import Arrow, Construction, Diagram, Point, Role, StepKind, Term, TrialLine, Value, VectorEquation
 from ..tolerance import SINGULAR_SINE, WARN_SINE
 from .analyses import VelocityAnalysis
-from .common import PolygonDrawing, dead_centre, image_name, image_point, joined, sense
+from .common import PolygonDrawing, dyad_arms, dead_centre, image_name, image_point, joined, sense
 from .equations import velocity_caption, velocity_equation, velocity_slot_equation
 
 
@@ -120,38 +119,29 @@ class _Polygon(PolygonDrawing):
                                       r.perp(), f"\u22a5 {centre}{j}"),), eq, {}, StepKind.CONSTRUCTION))
         return Line(self.vel[centre], r.perp())
 
+    def slot_trial(self, j: str, jg: str, on: int, g: Vec, eq) -> tuple[Line, Vec]:
+        """J in the slot of link ``on``: the image of the link's point JG under J, and through it the direction
+        of V_J,JG along the slot.  Returns that line and V_JG."""
+        v_jg = self._velocity_on(on, jg)
+        self.vel[jg] = v_jg
+        line = self.parallel_trial(
+            f"Mark {image_name(jg)}, the image of the point {jg} of link {on} under {j} "
+            f"(V_{jg} = $vg); through it draw the direction of V_{j}{jg}, parallel to the slot.",
+            f"trial V_{j}{jg}", v_jg, g, eq, True,
+            Point(f"image {jg}", Role.LABEL, Diagram.VELOCITY, v_jg, image_name(jg)),
+            values={"vg": _v(v_jg.norm())})
+        return line, v_jg
+
     def dyad(self, step: Dyad) -> None:
         """One vector equation, V_C = V_B + V_CB: two trial lines and their crossing c."""
-        if isinstance(step, SlotThrough):
-            return self.slot_through(step)
-        if isinstance(step, TwoLines):
-            return self.two_lines(step)
         m, pos = self.m, self.pose.positions
         j = step.joint
-        guided = isinstance(step, CircleAndGuide)
-        on = step.slide.on if guided else None
-        arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
+        guided, on, arms = dyad_arms(step)
         eq = velocity_equation(arms, j, m, guided, step.coincident if on is not None else "")
         self.equations.append((velocity_caption(eq, arms, j, m, step), eq))
         trials = [self._square_trial(self._what(j, centre), centre, j, pos[j] - pos[centre], eq)
                   for _, centre in arms]
-        slide_v = None
-        if guided:
-            g = self.pose.lines[j].direction
-            if on is None:
-                trials.append(self.guide_trial(j, g, eq))
-            else:
-                jg = step.coincident
-                v_jg = self._velocity_on(on, jg)
-                self.vel[jg] = v_jg
-                trials.append(self.parallel_trial(
-                    f"Mark {image_name(jg)}, the image of the point {jg} of link {on} under {j} "
-                    f"(V_{jg} = $vg); through it draw the direction of V_{j}{jg}, parallel to the slot.",
-                    f"trial V_{j}{jg}", v_jg, g, eq, True,
-                    Point(f"image {jg}", Role.LABEL, Diagram.VELOCITY, v_jg, image_name(jg)),
-                    values={"vg": _v(v_jg.norm())}))
-                slide_v = v_jg
-        vj = self._close(step, trials)
+        vj, slide_v = self.close_dyad(step, trials, eq)
         self.vel[j] = vj
         dead = dead_centre(pos, self.crank, arms, j)
         if dead:
@@ -303,26 +293,11 @@ class _Polygon(PolygonDrawing):
                 None, {}, StepKind.CONSTRUCTION))
         vel[d] = vd
         self.rel[(d, p)] = vd - vp
-        self.steps.append((
-            f"The shaded triangle {joined(ip, iq, idd)} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
-            f"V_{d} = $v.",
-            (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd)),
-             Point(f"image {d}", Role.LABEL, Diagram.VELOCITY, vd, idd),
-             Arrow(f"result V_{d}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vd, f"V_{d}")),
-            None, {"v": _v(vd.norm())}, StepKind.ANSWER))
+        self.image_answer(f"The shaded triangle {joined(ip, iq, idd)} is the velocity image of {p}{q}{d}. Join O_v "
+                          f"to {idd}: V_{d} = $v.", "image", p, q, d, (vp, vq, vd), idd, {"v": _v(vd.norm())})
 
     def analysis(self, scale: float | None) -> VelocityAnalysis:
         """The record in the notes' order: equations, pole, scale, then the drawing steps."""
-        known = self.v_known.norm()
-        rec = Construction("Velocity polygon")
-        for words, eq in self.equations:
-            rec = rec.then(words, equation=eq, kind=StepKind.GIVEN)
-        rec = rec.then("Choose the pole O_v.", Point("pole O_v", Role.LABEL, Diagram.VELOCITY, ORIGIN, "O_v"))
-        rec = rec.then(f"Choose the velocity scale: 1 mm = $s; V_{self.crank.tip} is $len.",
-                       ScaleBar("velocity scale", Role.SCALE_BAR, Diagram.VELOCITY, "velocity", scale),
-                       values={"s": Value("scale", scale, "velocity"),
-                               "len": Value("paper length", known, "velocity")})
-        for words, entities, eq, values, kind in self.steps:
-            rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
+        rec = self.record("velocity", scale, self.v_known.norm())
         return VelocityAnalysis(rec, self.pose, self.vel, self.rel, self.ang, self.cond, scale,
                                 tuple(self.warnings), self.omega)
