@@ -234,8 +234,8 @@ class _Polygon(PolygonDrawing):
             f"{j}): {eq.text(marks=False)}, with {self._what(jg, c)} \u22a5 {c}{j} and V_{jg}{j} \u2225 slot; "
             f"two unknown magnitudes.", eq))
         square = self._square_trial(self._what(jg, c), c, j, r, eq)
-        slot = self.parallel_trial(f"Draw the direction of V_{jg}{j} through {image_name(j)}, parallel to the slot.",
-                                   f"trial V_{jg}{j}", self.vel[j], g, eq, True)
+        slot = self.parallel_trial(f"Draw the direction of V_{jg}{j} through {image_name(j)}, parallel to the "
+                                   f"slot.", f"trial V_{jg}{j}", self.vel[j], g, eq, True)
         v = self._close(step, [square, slot])
         self.vel[jg] = v
         self.rel[(jg, c)] = v - self.vel[c]
