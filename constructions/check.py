@@ -20,14 +20,8 @@ from .mechanisms.assembly import SlotThrough, TwoLines, assembly_plan
 from .mechanisms.constraint_kinematics import solve_constraints
 from .mechanisms.model import Mechanism
 from .quantities import Measured
+from .tolerance import AGREEMENT, CONDITION_FLOOR, EPSILON, OTHER_ASSEMBLY, SAFETY
 from .vector_loops import chain_solution
-
-AGREEMENT = 1e-9
-"""Graphical and analytic agree when they differ by less than this, relative to the reference value
-(the largest measured value of the same kind), at well-conditioned positions."""
-
-SAFETY = 64.0
-"""Headroom over the rounding estimate when the tolerance widens near a singular position."""
 
 _ORDER = {"velocity": 2, "angular velocity": 2, "acceleration": 3, "angular acceleration": 3, "force": 3,
           "torque": 3}
@@ -42,8 +36,8 @@ def agreement(kind: str, condition: float) -> float:
     so the tolerance is max(1e-9, 64 eps / s^p), which is 1e-9 wherever the position is well
     conditioned and widens only where the construction warns that it is near a singular position."""
     p = _ORDER.get(kind, 1)
-    c = max(condition, 1e-300)
-    return max(AGREEMENT, SAFETY * 2.220446049250313e-16 / c ** p)
+    c = max(condition, CONDITION_FLOOR)
+    return max(AGREEMENT, SAFETY * EPSILON / c ** p)
 
 
 class NotModelled(Exception):
@@ -166,7 +160,7 @@ def _constraint_solution(m, angle, omega, alpha, guess, accelerations) -> Analyt
         raise NotModelled(f"the constraint equations are singular here ({e.reason})") from None
     L = m.size
     moved = max((st.positions[n].distance_to(p) for n, p in guess.items() if n in st.positions), default=0.0)
-    if moved > 1e-6 * L:
+    if moved > OTHER_ASSEMBLY * L:
         raise NotModelled(f"Newton's method settled on another assembly ({moved / L:.1e} L from the "
                           f"construction), so there is nothing to compare")
     return AnalyticSolution("constraint equations", dict(st.positions), dict(st.velocities), dict(st.angular),

@@ -13,6 +13,7 @@ from .geometry import Vec
 from .mechanisms.model import Mechanism
 from .mechanisms.pose import Pose
 from .record import Construction, Value
+from .tolerance import DECISION
 
 STANDOFF = 0.12
 """How far a dimension line stands off its link, as a fraction of the mechanism's size."""
@@ -45,7 +46,7 @@ def dimension_links(m: Mechanism, pose: Pose) -> Construction:
         if s.on is not None:
             continue
         foot = s.line.foot(m.ground[o1])
-        if (foot - m.ground[o1]).norm() <= 1e-9 * m.size:
+        if (foot - m.ground[o1]).norm() <= DECISION * m.size:
             continue
         ents.append(Dimension(f"dimension offset {s.joint}", Role.DIMENSION, Diagram.SPACE,
                               m.ground[o1], foot, 0.0, f"e $e{s.joint}"))

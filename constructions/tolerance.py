@@ -153,3 +153,71 @@ TRAIN_RATIO_REL = 1e-12
 STANDSTILL = 1e-12
 """A member of a gear train whose speed is below this (rad/s) stands still: no torque follows from a power
 there, and no sense of rotation is drawn for it."""
+
+# polygons, forces and geometry ------------------------------------------------------------------------
+# The thresholds of the vector polygons, the force constructions and the check, each with why its value.
+
+SINGULAR_SINE = 1e-4
+"""Trial lines crossing at a sine below this mark a singular position (toggle, limit, change point).
+The closest crossing a float figure can tell from a tangency (gap 1e-9 L) has a sine near 4.5e-5; the
+conditioning of the measured values grows like 1/sine^2, so above 1e-4 they keep at least 7 digits."""
+
+WARN_SINE = 1e-2
+"""Below this sine a crossing's values are returned with a warning and an error estimate: they have lost
+four of their digits (1/sine^2), still far more than a drawing shows, but the reader must know."""
+
+DEAD_CENTRE_SINE = 1e-9
+"""Crank and driven link closer to a line than this (sine of the angle between them) are at dead centre:
+the decision tolerance (1e-9 L) as a sine, so a designed in-line position reads as one and a near one not."""
+
+PARALLEL_SINE = 1e-9
+"""Below this sine two lines of action are parallel and a force polygon cannot close on them: the same
+size as the decision tolerance (1e-9 L), so lines that meet only beyond 1e9 L count as parallel."""
+
+ROUNDING = 4.0 * 2.2e-16
+"""Relative rounding of one crossing of well-conditioned trial lines (a few ulp); it grows as 1/sine^2."""
+
+CONDITION_FLOOR = 1e-300
+"""A condition (a sine) is never divided by below this: near the smallest normal float, so an exact zero
+gives a huge, finite error estimate instead of a division by zero."""
+
+CHANGE_POINT_REL = 1e-6
+"""Joints within this fraction of the scene size of one line are a change point: far above the rounding of
+positions assembled through a singular dyad (whose error grows as the square root of the gap)."""
+
+NEGLIGIBLE = 1e-12
+"""A value within this fraction of its own scale (the largest force, the scene size, the fastest velocity,
+the moment it was taken from) is rounding, and zero: a few thousand ulp, above what the sums and products of
+a construction leave and far below anything a drawing could show."""
+
+DEAD_CENTRE_ARM = 1e-12
+"""Below this arm (relative to the scene size) the crank's resultant passes through its pivot: a dead centre,
+no torque.  Rounding-level only: a larger arm is a small torque the check still expects (an arm of 1e-9 of
+the scene times a bearing force larger than the loads is a torque beyond the 1e-9 agreement)."""
+
+CONDITION_SHARE = 0.5
+"""Of the ways to draw a free body's construction, those conditioned at least this share of the best one
+lose at most one binary digit, so among them the one that keeps its points nearest the body is drawn."""
+
+SINGULAR_RCOND = 1e-10
+"""Below this reciprocal condition number of the scaled equilibrium system the position is a toggle: two
+unknown forces act along one line and the equations have no unique solution (above it the forces keep at
+least five digits)."""
+
+SIGN_SLACK = 1e-10
+"""A normal force within this fraction of the largest unknown of the equilibrium system agrees with either
+sign of its friction: far above the rounding of the scaled solve, far below any force a sheet shows."""
+
+AGREEMENT = 1e-9
+"""Graphical and analytic agree when they differ by less than this, relative to the reference value
+(the largest measured value of the same kind), at well-conditioned positions."""
+
+SAFETY = 64.0
+"""Headroom over the rounding estimate when the tolerance widens near a singular position."""
+
+EPSILON = 2.220446049250313e-16
+"""The spacing of doubles at 1 (float64 machine epsilon): the unit of every rounding estimate."""
+
+OTHER_ASSEMBLY = 1e-6
+"""A Newton solution that moved a joint more than this fraction of the scene size from the construction's
+position settled on another assembly: far above Newton's convergence (1e-12 L), far below a branch's gap."""

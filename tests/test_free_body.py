@@ -15,8 +15,9 @@ from hypothesis import HealthCheck, assume, given, settings, strategies as st
 from constructions.entities import Role, TrialLine
 from constructions.errors import ConstructionError
 from constructions.forces.effects import Couple, Load
-from constructions.forces.free_body import (ImproperlyConstrained, RigidBody, StaticallyIndeterminate, Support,
-                                            check_supports, free_body_analysis)
+from constructions.forces.free_body import free_body_analysis
+from constructions.forces.rigid_body import (ImproperlyConstrained, RigidBody, StaticallyIndeterminate, Support,
+                                             check_supports)
 from constructions.forces.free_body_check import equilibrium_matrix, equilibrium_solution
 from constructions.geometry import Vec
 from drafting.app.cli import main

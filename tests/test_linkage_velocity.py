@@ -26,7 +26,7 @@ from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Sl
 from constructions.mechanisms.pose import locate
 from constructions.entities import Arrow, Diagram, Point, Polygon, Role, ScaleBar, TrialLine
 from constructions.record import VectorEquation
-from constructions.polygons.common import DEAD_CENTRE_SINE, SINGULAR_SINE, WARN_SINE
+from constructions.tolerance import DEAD_CENTRE_SINE, SINGULAR_SINE, WARN_SINE
 from constructions.polygons.velocity import velocity_polygon
 
 AGREE = 1e-9

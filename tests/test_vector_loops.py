@@ -19,9 +19,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from constructions import analytic
-from constructions.check import AGREEMENT, analytic_solution, analytic_values, compare
+from constructions.check import analytic_solution, analytic_values, compare
 from constructions.errors import CannotAssemble, DegenerateInput
 from constructions.geometry import Vec
+from constructions.tolerance import AGREEMENT
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 from constructions.mechanisms.pose import locate
 from constructions.polygons.velocity import velocity_polygon

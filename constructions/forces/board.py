@@ -16,14 +16,13 @@ from ..geometry import Vec
 from ..mechanisms.model import Mechanism, describe_angle
 from ..mechanisms.pose import Pose
 from ..mechanisms.topology import Contact, Pin, SlotPin, carriers, connections, frame_number
-from ..polygons.common import WARN_SINE, rounding_estimate
+from ..polygons.common import rounding_estimate
 from ..record import StepKind, Value
+from ..tolerance import PARALLEL_SINE, WARN_SINE
 from .bodies import force_name
 from .effects import Effects
 
 ORIGIN = Vec(0.0, 0.0)
-PARALLEL_SINE = 1e-9
-"""Below this sine two lines of action are parallel: the force polygon cannot close."""
 
 
 class ForcesNotDrawn(ConstructionError):

@@ -33,13 +33,9 @@ from ..mechanisms.assembly import CrankTip, FixedToLink, assembly_plan
 from ..mechanisms.model import Mechanism, describe_angle, slide_line
 from ..mechanisms.pose import locate
 from ..mechanisms.topology import Connection, Contact, Pin, SlotPin, connections, moving_bodies, points_of_body
+from ..tolerance import NEGLIGIBLE, SIGN_SLACK, SINGULAR_RCOND
 from .bodies import force_name, torque_name
 from .effects import Effects
-
-SINGULAR_RCOND = 1e-10
-"""Below this reciprocal condition number of the scaled system the position is a toggle: two unknown
-forces act along one line and the equations have no unique solution (above it the forces keep at
-least five digits)."""
 
 ZERO = Vec(0.0, 0.0)
 
@@ -245,7 +241,7 @@ def equilibrium(m: Mechanism, angle: float, omega: float, alpha: float, effects:
         if not mu:
             continue
         slip = (kin.velocities[c.joint] - _guide_point_velocity(m, c, kin)).dot(normals[c][1])
-        if abs(slip) <= 1e-12 * scale:
+        if abs(slip) <= NEGLIGIBLE * scale:
             warnings.append(f"{c.slide.label} does not slide here ({describe_angle(angle)}): the friction "
                             f"force is undetermined and left out")
             continue
@@ -261,7 +257,7 @@ def equilibrium(m: Mechanism, angle: float, omega: float, alpha: float, effects:
 
     def consistent(signs: tuple[float, ...]) -> tuple[np.ndarray, float, tuple[float, ...]]:
         x, rcond = solve(signs)                                # a normal force within rounding of
-        tiny = 1e-10 * float(np.max(np.abs(x[:-1]), initial=0.0))   # zero agrees with either sign
+        tiny = SIGN_SLACK * float(np.max(np.abs(x[:-1]), initial=0.0))   # zero agrees with either sign
         return x, rcond, tuple(s if x[cols[c]] * s >= -tiny else -s for (c, _, _), s in zip(rubbing, signs))
 
     signs = tuple(1.0 for _ in rubbing)

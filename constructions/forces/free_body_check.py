@@ -16,7 +16,7 @@ from typing import Mapping
 import numpy as np
 
 from ..geometry import Vec
-from .free_body import PIN, RigidBody
+from .rigid_body import PIN, RigidBody
 
 
 @dataclass(frozen=True)

@@ -27,10 +27,7 @@ from dataclasses import dataclass
 from typing import Iterable
 
 from ..geometry import Vec
-
-ROUNDING = 1e-12
-"""A moment about the centre that comes out negative by less than this fraction of the moment it was
-taken from (a point mass given as I_A = m d^2 in rounded decimals) is rounding, and is zero."""
+from ..tolerance import NEGLIGIBLE
 
 
 def _check(mass: float, **dims: float) -> None:
@@ -96,11 +93,12 @@ def about_centre(inertia_point: float, mass: float, distance: float) -> float:
     """The parallel-axis theorem the other way: the moment about the centre of mass from the moment about
     a point ``distance`` from it, I_G = I_A - m d^2.  Raises ValueError when that is negative (I_A is
     smaller than m d^2: no body of that mass has its centre that far from A); a shortfall within
-    :data:`ROUNDING` of I_A is rounding and gives zero (a point mass)."""
+    :data:`~constructions.tolerance.NEGLIGIBLE` of I_A is rounding and gives zero (a point mass given as
+    I_A = m d^2 in rounded decimals)."""
     _check(mass, inertia=inertia_point, distance=abs(distance))
     out = inertia_point - mass * distance**2
     if out < 0:
-        if -out <= ROUNDING * max(inertia_point, mass * distance**2):
+        if -out <= NEGLIGIBLE * max(inertia_point, mass * distance**2):
             return 0.0
         raise ValueError(f"I_A = {inertia_point:.6g} kg m^2 is less than m d^2 = {mass * distance**2:.6g} "
                          f"kg m^2, so the moment about the centre of mass would be negative")

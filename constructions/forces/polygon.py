@@ -24,8 +24,9 @@ assembly order, so each has at most two unknown magnitudes when its polygon is d
   times its perpendicular distance from the pivot (zero at a dead centre, where that distance is zero).
 
 Each solved pin force is carried to the body at the other side as a known force of its later polygon.
-The dyads are drawn in :mod:`.dyads` on the shared state of :mod:`.board`; this module runs them in order,
-draws the free bodies and records the result.
+The dyads are drawn in :mod:`.dyads` (RRR, RRP) and :mod:`.slotted` (RPR, PRP), the crank in :mod:`.crank`,
+on the shared state of :mod:`.board`; this module runs them in order, draws the free bodies and records the
+result.
 """
 
 from __future__ import annotations
@@ -44,8 +45,10 @@ from ..entities import Arrow, Bar, Block, Curve, Diagram, Plate, Role, Segment
 from ..record import Construction, StepKind, Value
 from .bodies import force_name, torque_name
 from .board import Drawing, Force, ForcesNotDrawn, body_label, force_value, known_forces, resultant
-from .dyads import driving_crank, prp, rpr, rrp, rrr
+from .crank import driving_crank
+from .dyads import rrp, rrr
 from .effects import Effects, Spring
+from .slotted import prp, rpr
 
 __all__ = ["Force", "ForceAnalysis", "ForcesNotDrawn", "force_analysis", "known_forces", "resultant"]
 

@@ -18,89 +18,23 @@ component and j', and angular accelerations those sides divided by the link leng
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from typing import Mapping
 
-from ..entities import Arrow, Diagram, Point, Polygon, Role, ScaleBar, TrialLine
+from ..entities import Arrow, Diagram, Point, Role, TrialLine
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..mechanisms.assembly import CircleAndGuide, CrankTip, Dyad, FixedToLink, SlotThrough, TwoLines, assembly_plan
+from ..mechanisms.assembly import CrankTip, Dyad, FixedToLink, SlotThrough, TwoLines, assembly_plan
 from ..mechanisms.model import Mechanism, slide_line
-from ..quantities import Measured
-from ..record import Construction, StepKind, Term, Value, VectorEquation
-from .common import (SINGULAR_SINE, PolygonDrawing, image_name, image_point, joined, rounding_estimate,
-                     sense)
-from .velocity import VelocityAnalysis
+from ..record import StepKind, Term, Value, VectorEquation
+from ..tolerance import SINGULAR_SINE
+from .analyses import AccelerationAnalysis, VelocityAnalysis
+from .common import PolygonDrawing, dyad_arms, component_name, image_name, image_point, joined, sense
+from .equations import acceleration_caption, acceleration_equation, acceleration_slot_equation
 
 PRIME = "'"
 
 
 def _img(joint: str) -> str:
     return image_name(joint, PRIME)
-
-
-@dataclass(frozen=True)
-class AccelerationAnalysis:
-    """The acceleration polygon at one position and the values measured off it (SI, CCW positive).
-
-    ``accelerations`` maps every joint and point to its absolute acceleration (fixed pivots: zero);
-    ``normal[(J, P)]`` and ``tangential[(J, P)]`` are the components A_JP^n and A_JP^t of the
-    acceleration of J relative to P on the link joining them (P may be a fixed pivot: then they are
-    A_J^n and A_J^t); ``angular`` maps link numbers to their angular acceleration (slider blocks: 0);
-    ``conditions`` maps each joint found by trial lines to the sine of their crossing; ``scale`` is the
-    scale fixed by the caller or None (the drawing chooses).
-    """
-
-    construction: Construction
-    velocity: VelocityAnalysis
-    accelerations: Mapping[str, Vec]
-    normal: Mapping[tuple[str, str], Vec]
-    tangential: Mapping[tuple[str, str], Vec]
-    angular: Mapping[int, float]
-    conditions: Mapping[str, float]
-    scale: float | None
-    warnings: tuple[str, ...]
-    alpha: float = 0.0
-    coriolis: Mapping[str, Vec] = field(default_factory=dict)   # name (A_A3A^c) -> 2 omega x V_rel
-    sliding: Mapping[str, Vec] = field(default_factory=dict)    # name (A_A3A^s) -> along the slot
-
-    @property
-    def worst_condition(self) -> float:
-        return min(list(self.conditions.values()) + [self.velocity.worst_condition])
-
-    @property
-    def relative_error_estimate(self) -> float:
-        return rounding_estimate(self.worst_condition) / max(self.worst_condition, 1e-300)
-
-    def scales(self) -> dict[str, float]:
-        """The input's scale of each kind: |A_B| for accelerations and max(|alpha_1|, omega_k^2) for angular
-        accelerations (alpha and omega^2 share their unit and both set the polygon's size)."""
-        w2 = max(w * w for w in self.velocity.angular.values())
-        return {"acceleration": max(a.norm() for a in self.accelerations.values()),
-                "angular acceleration": max(abs(self.alpha), w2)}
-
-    def measured(self, m: Mechanism) -> list[Measured]:
-        """Absolute accelerations of the moving joints and points, the normal and tangential components
-        of every dyad (named as in the notes: A_CB^n, A_CB^t; A_C^n, A_C^t about a fixed pivot) and the
-        angular accelerations of the links that are neither the crank nor a slider block."""
-        c = self.worst_condition
-        out = [Measured(f"A_{n}", "acceleration", a, c) for n, a in self.accelerations.items()
-               if n not in m.ground]
-        rest = self.velocity.at_rest          # no normal or Coriolis parts: zero by the data, not measured
-        for comps, sup in ((self.normal, "n"), (self.tangential, "t")):
-            if not (rest and sup == "n"):
-                out += [Measured(component_name(j, p, sup, m), "acceleration", a, c) for (j, p), a in comps.items()]
-        for comps in ((self.sliding,) if rest else (self.coriolis, self.sliding)):
-            out += [Measured(name, "acceleration", a, c) for name, a in comps.items()]
-        skip = {m.crank} | {s.number for s in m.slides}
-        out += [Measured(f"alpha_{n}", "angular acceleration", al, c) for n, al in sorted(self.angular.items())
-                if n not in skip]
-        return out
-
-
-def component_name(j: str, p: str, sup: str, m: Mechanism) -> str:
-    """A_CB^t; about a fixed pivot the notes drop the pivot: A_C^t."""
-    return f"A_{j}^{sup}" if p in m.ground else f"A_{j}{p}^{sup}"
 
 
 def acceleration_polygon(m: Mechanism, va: VelocityAnalysis, alpha: float = 0.0, *,
@@ -125,7 +59,7 @@ def _a(value: float) -> Value:
 class _Polygon(PolygonDrawing):
     """The acceleration polygon while it is drawn."""
 
-    what = "acceleration polygon"
+    what, symbol, pole, diagram = "acceleration polygon", "A", "O_a", Diagram.ACCELERATION
 
     def __init__(self, m: Mechanism, va: VelocityAnalysis, crank: CrankTip, alpha: float) -> None:
         self.m, self.va, self.pose, self.crank, self.alpha = m, va, va.pose, crank, alpha
@@ -170,12 +104,6 @@ class _Polygon(PolygonDrawing):
         self.steps.append((words, tuple(entities), None, {"an": _a(an.norm()), "at": _a(at.norm())},
                            StepKind.CONSTRUCTION))
 
-    def _terms_of(self, p: str) -> tuple[Term, ...]:
-        """The known acceleration of a joint as the notes write it: the crank tip as A_B^n + A_B^t."""
-        if p == self.crank.tip:
-            return (Term("A", p, True, True, "n"), Term("A", p, True, True, "t"))
-        return (Term("A", p, True, True),)
-
     def _alpha_of(self, number: int) -> float:
         """The angular acceleration of a link whose acceleration image is known at two points."""
         if number not in self.ang:
@@ -213,66 +141,62 @@ class _Polygon(PolygonDrawing):
         self.steps.append((words, ent, eq, {"ac": _a(ac.norm())}, StepKind.CONSTRUCTION))
         return tip
 
+    def _normal(self, name: str, j: str, centre: str, number: int, eq) -> tuple[Vec, Line]:
+        """From the image of ``centre`` the normal component omega^2 r towards it (r from the centre to the
+        joint ``j``, link ``number``), and through its tip the trial line of the tangential component, square
+        to the link; components named for ``name`` (J, or the slotted link's point under J).  Returns the
+        tip and that line."""
+        m = self.m
+        r = self.pose.positions[j] - self.pose.positions[centre]
+        w = self.va.angular[number]
+        an = r * (-w * w)
+        start = self.acc[centre]
+        tip = start + an
+        self.normal[(name, centre)] = an
+        comp, trial_name = component_name(name, centre, "n", m), component_name(name, centre, "t", m)
+        at = "O_a" if centre in m.ground else _img(centre)
+        self.steps.append((
+            f"From {at} draw {comp} = \u03c9_{number}\u00b2 \u00b7 {centre}{j} ($an), parallel to "
+            f"{centre}{j} towards {centre}; through its tip draw the direction of {trial_name}, "
+            f"perpendicular to {centre}{j}.",
+            (Arrow(comp, Role.KNOWN, Diagram.ACCELERATION, start, tip, comp),
+             TrialLine(f"trial {trial_name}", Role.TRIAL, Diagram.ACCELERATION, tip, r.perp(),
+                       f"\u22a5 {centre}{j}")),
+            eq, {"an": _a(an.norm())}, StepKind.CONSTRUCTION))
+        return tip, Line(tip, r.perp())
+
+    def _sliding_trial(self, name: str, tip: Vec, g: Vec, eq) -> Line:
+        """Through ``tip`` (the Coriolis component's) the direction of the sliding component ``name``."""
+        return self.parallel_trial(f"Through its tip draw the direction of the sliding component {name}, "
+                                   f"parallel to the slot.", f"trial {name}", tip, g, eq, True)
+
+    def slot_trial(self, j: str, jg: str, on: int, g: Vec, eq) -> tuple[Line, Vec]:
+        """J in the slot of link ``on``: the acceleration image of the link's point JG under J, the Coriolis
+        component from it, and through its tip the trial line of the sliding component.  Returns that line
+        and the Coriolis component's tip."""
+        a_jg = self._acceleration_on(on, jg)
+        self.acc[jg] = a_jg
+        self.steps.append((f"Mark {_img(jg)}, the acceleration image of the point {jg} of link {on} "
+                           f"under {j} (A_{jg} = $a).",
+                           (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a_jg, _img(jg)),),
+                           eq, {"a": _a(a_jg.norm())}, StepKind.CONSTRUCTION))
+        v_rel = self.va.velocities[j] - self.va.velocities[jg]
+        tip = self._coriolis(on, v_rel, a_jg, f"A_{j}{jg}^c", f"{j}{jg}", jg, eq)
+        return self._sliding_trial(f"A_{j}{jg}^s", tip, g, eq), tip
+
     def dyad(self, step: Dyad) -> None:
         """One vector equation: the known normal (and Coriolis) components, two trial lines, their crossing."""
-        if isinstance(step, SlotThrough):
-            return self.slot_through(step)
-        if isinstance(step, TwoLines):
-            return self.two_lines(step)
-        m, pos, vel = self.m, self.pose.positions, self.va
+        m, pos = self.m, self.pose.positions
         j = step.joint
-        guided = isinstance(step, CircleAndGuide)
-        on = step.slide.on if guided else None
-        arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
-        eq = self._equation(arms, j, guided, step.coincident if on is not None else "")
-        self.equations.append((self._equation_words(eq, arms, j, guided, step), eq))
+        guided, on, arms = dyad_arms(step)
+        eq = acceleration_equation(m, self.crank.tip, arms, j, guided, step.coincident if on is not None else "")
+        self.equations.append((acceleration_caption(m, eq, arms, j, guided, step), eq))
         trials: list[Line] = []
         tips: dict[str, Vec] = {}
         for link, centre in arms:
-            r = pos[j] - pos[centre]
-            w = vel.angular[link.number]
-            an = r * (-w * w)
-            start = self.acc[centre]
-            tip = start + an
-            tips[centre] = tip
-            self.normal[(j, centre)] = an
-            comp = component_name(j, centre, "n", m)
-            at = "O_a" if centre in m.ground else _img(centre)
-            trial_name = component_name(j, centre, "t", m)
-            self.steps.append((
-                f"From {at} draw {comp} = \u03c9_{link.number}\u00b2 \u00b7 {centre}{j} ($an), parallel to "
-                f"{centre}{j} towards {centre}; through its tip draw the direction of {trial_name}, "
-                f"perpendicular to {centre}{j}.",
-                (Arrow(comp, Role.KNOWN, Diagram.ACCELERATION, start, tip, comp),
-                 TrialLine(f"trial {trial_name}", Role.TRIAL, Diagram.ACCELERATION, tip, r.perp(),
-                           f"\u22a5 {centre}{j}")),
-                eq, {"an": _a(an.norm())}, StepKind.CONSTRUCTION))
-            trials.append(Line(tip, r.perp()))
-        slide_tip = None
-        if guided:
-            g = self.pose.lines[j].direction
-            if on is None:
-                trials.append(Line(ORIGIN, g))
-                self.steps.append((f"Draw the direction of A_{j} through O_a, parallel to the guide.",
-                                   (TrialLine(f"trial A_{j}", Role.TRIAL, Diagram.ACCELERATION, ORIGIN, g,
-                                              "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
-            else:
-                jg = step.coincident
-                a_jg = self._acceleration_on(on, jg)
-                self.acc[jg] = a_jg
-                self.steps.append((f"Mark {_img(jg)}, the acceleration image of the point {jg} of link {on} "
-                                   f"under {j} (A_{jg} = $a).",
-                                   (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a_jg, _img(jg)),),
-                                   eq, {"a": _a(a_jg.norm())}, StepKind.CONSTRUCTION))
-                v_rel = vel.velocities[j] - vel.velocities[jg]
-                tip = self._coriolis(on, v_rel, a_jg, f"A_{j}{jg}^c", f"{j}{jg}", jg, eq)
-                trials.append(Line(tip, g))
-                self.steps.append((f"Through its tip draw the direction of the sliding component A_{j}{jg}^s, "
-                                   f"parallel to the slot.",
-                                   (TrialLine(f"trial A_{j}{jg}^s", Role.TRIAL, Diagram.ACCELERATION, tip, g,
-                                              "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
-                slide_tip = tip
-        aj = self._close(step, trials)
+            tips[centre], line = self._normal(j, j, centre, link.number, eq)
+            trials.append(line)
+        aj, slide_tip = self.close_dyad(step, trials, eq)
         self.acc[j] = aj
         values: dict[str, Value] = {}
         measured: list[Arrow] = []
@@ -308,7 +232,7 @@ class _Polygon(PolygonDrawing):
     def two_lines(self, step: TwoLines) -> None:
         """J carried along two lines: for each, A_J = A_JG + A_J,JG^c + A_J,JG^s (the Coriolis component
         2 omega x V_J,JG of a slot in a turning link; on a fixed guide A_J itself lies along it)."""
-        m, pos, vel = self.m, self.pose.positions, self.va
+        m, pos = self.m, self.pose.positions
         j = step.joint
         trials, tips = [], []
         eq_terms = []
@@ -324,26 +248,12 @@ class _Polygon(PolygonDrawing):
         for sl, jg in ((step.slide_a, step.coincident_a), (step.slide_b, step.coincident_b)):
             g = slide_line(m, sl, pos).direction
             if sl.on is None:
-                trials.append(Line(ORIGIN, g))
+                trials.append(self.guide_trial(j, g, eq, f"trial A_{j} guide"))
                 tips.append(None)
-                self.steps.append((f"Draw the direction of A_{j} through O_a, parallel to the guide.",
-                                   (TrialLine(f"trial A_{j} guide", Role.TRIAL, Diagram.ACCELERATION, ORIGIN, g,
-                                              "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
                 continue
-            a_jg = self._acceleration_on(sl.on, jg)
-            self.acc[jg] = a_jg
-            self.steps.append((f"Mark {_img(jg)}, the acceleration image of the point {jg} of link {sl.on} "
-                               f"under {j} (A_{jg} = $a).",
-                               (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a_jg, _img(jg)),),
-                               eq, {"a": _a(a_jg.norm())}, StepKind.CONSTRUCTION))
-            v_rel = vel.velocities[j] - vel.velocities[jg]
-            tip = self._coriolis(sl.on, v_rel, a_jg, f"A_{j}{jg}^c", f"{j}{jg}", jg, eq)
-            trials.append(Line(tip, g))
+            line, tip = self.slot_trial(j, jg, sl.on, g, eq)
+            trials.append(line)
             tips.append((jg, tip))
-            self.steps.append((f"Through its tip draw the direction of the sliding component A_{j}{jg}^s, "
-                               f"parallel to the slot.",
-                               (TrialLine(f"trial A_{j}{jg}^s", Role.TRIAL, Diagram.ACCELERATION, tip, g,
-                                          "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
         aj = self._close(step, trials)
         self.acc[j] = aj
         measured = [Arrow(f"result A_{j}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, aj, f"A_{j}")]
@@ -374,31 +284,17 @@ class _Polygon(PolygonDrawing):
         r = pos[j] - pos[c]
         g = self.pose.lines[j].direction
         w = vel.angular[k.number]
-        eq = self._slot_equation(j, jg, c)
+        eq = acceleration_slot_equation(m, self.crank.tip, j, jg, c)
         n_name, t_name = component_name(jg, c, "n", m), component_name(jg, c, "t", m)
         self.equations.append((
             f"Relative acceleration equation at the sliding joint {j} ({jg} the point of link {k.number} under "
             f"{j}): {eq.text(marks=False)}, with {n_name} \u2225 {c}{j} towards {c}, {t_name} \u22a5 {c}{j}, "
             f"A_{jg}{j}^s \u2225 slot and the Coriolis component A_{jg}{j}^c = 2 \u03c9_{k.number} \u00d7 "
             f"V_{jg}{j}; two unknown magnitudes.", eq))
-        an = r * (-w * w)
-        start = self.acc[c]
-        tip_n = start + an
-        self.normal[(jg, c)] = an
-        at = "O_a" if c in m.ground else _img(c)
-        self.steps.append((
-            f"From {at} draw {n_name} = \u03c9_{k.number}\u00b2 \u00b7 {c}{j} ($an), parallel to {c}{j} towards "
-            f"{c}; through its tip draw the direction of {t_name}, perpendicular to {c}{j}.",
-            (Arrow(n_name, Role.KNOWN, Diagram.ACCELERATION, start, tip_n, n_name),
-             TrialLine(f"trial {t_name}", Role.TRIAL, Diagram.ACCELERATION, tip_n, r.perp(), f"\u22a5 {c}{j}")),
-            eq, {"an": _a(an.norm())}, StepKind.CONSTRUCTION))
+        tip_n, square = self._normal(jg, j, c, k.number, eq)
         v_rel = vel.velocities[jg] - vel.velocities[j]
         tip_c = self._coriolis(k.number, v_rel, self.acc[j], f"A_{jg}{j}^c", f"{jg}{j}", j, eq)
-        self.steps.append((f"Through its tip draw the direction of the sliding component A_{jg}{j}^s, parallel "
-                           f"to the slot.",
-                           (TrialLine(f"trial A_{jg}{j}^s", Role.TRIAL, Diagram.ACCELERATION, tip_c, g,
-                                      "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
-        a = self._close(step, [Line(tip_n, r.perp()), Line(tip_c, g)])
+        a = self._close(step, [square, self._sliding_trial(f"A_{jg}{j}^s", tip_c, g, eq)])
         self.acc[jg] = a
         a_t = a - tip_n
         self.tangential[(jg, c)] = a_t
@@ -434,79 +330,14 @@ class _Polygon(PolygonDrawing):
         self._alpha_of(link.number)
         ip, iq, idd = (("O_a" if x in self.m.ground else _img(x)) for x in (p, q, d))
         self.acc[d] = ad
-        self.steps.append((
+        self.image_answer(
             f"Acceleration image of link {link.number}: on {joined(ip, iq)} draw the triangle {joined(ip, iq, idd)} "
             f"similar to {p}{q}{d}, in the same order of letters (it is {p}{q}{d} turned and scaled as "
             f"{joined(ip, iq)} is {p}{q}). "
-            f"Join O_a to {idd}: A_{d} = $a.",
-            (Polygon(f"acceleration image {p}{q}{d}", Role.IMAGE, Diagram.ACCELERATION, (ap, aq, ad)),
-             Point(f"acceleration image {d}", Role.LABEL, Diagram.ACCELERATION, ad, idd),
-             Arrow(f"result A_{d}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, ad, f"A_{d}")),
-            None, {"a": _a(ad.norm())}, StepKind.ANSWER))
-
-    def _slot_equation(self, j: str, jg: str, c: str) -> VectorEquation:
-        right = (Term("A", j, True, True), Term("A", f"{jg}{j}", True, True, "c"),
-                 Term("A", f"{jg}{j}", False, True, "s"))
-        if c in self.m.ground:
-            left = (Term("A", jg, True, True, "n"), Term("A", jg, False, True, "t"))
-        else:
-            left = self._terms_of(c) + (Term("A", f"{jg}{c}", True, True, "n"), Term("A", f"{jg}{c}", False, True, "t"))
-        return VectorEquation(left, right)
-
-    def _equation(self, arms, j: str, guided: bool, coincident: str = "") -> VectorEquation:
-        """The notes' acceleration equations with their marks:
-        slider:   A_J(x✓) = A_P + A_JP^n(✓✓) + A_JP^t(x✓)
-        rocker:   A_J^n(✓✓) + A_J^t(x✓) = A_P + A_JP^n(✓✓) + A_JP^t(x✓)
-        two moving centres: A_P + A_JP^n + A_JP^t = A_Q + A_JQ^n + A_JQ^t."""
-        m = self.m
-
-        def side(centre: str) -> tuple[Term, ...]:
-            if centre in m.ground:
-                return (Term("A", j, True, True, "n"), Term("A", j, False, True, "t"))
-            return self._terms_of(centre) + (Term("A", f"{j}{centre}", True, True, "n"),
-                                             Term("A", f"{j}{centre}", False, True, "t"))
-        if guided and coincident:
-            (_, c), = arms
-            slot = (Term("A", coincident, True, True), Term("A", f"{j}{coincident}", True, True, "c"),
-                    Term("A", f"{j}{coincident}", False, True, "s"))
-            if c in m.ground:
-                return VectorEquation(side(c), slot)
-            return VectorEquation(side(c), slot)
-        if guided:
-            (_, c), = arms
-            return VectorEquation((Term("A", j, False, True),), side(c))
-        (_, p), (_, q) = arms
-        if p in m.ground:
-            p, q = q, p
-        return VectorEquation(side(q), side(p)) if q in m.ground else VectorEquation(side(p), side(q))
-
-    def _equation_words(self, eq: VectorEquation, arms, j: str, guided: bool, step=None) -> str:
-        m = self.m
-        links = " and ".join(f"link {l.number} ({l.label})" for l, _ in arms)
-        dirs = []
-        for link, c in arms:
-            n, t = component_name(j, c, "n", m), component_name(j, c, "t", m)
-            dirs.append(f"{n} \u2225 {c}{j} towards {c}, {t} \u22a5 {c}{j}")
-        if guided and step is not None and step.slide.on is not None:
-            jg = step.coincident
-            dirs.append(f"A_{j}{jg}^s \u2225 slot, the Coriolis component A_{j}{jg}^c = 2 \u03c9_{step.slide.on} "
-                        f"\u00d7 V_{j}{jg}")
-        elif guided:
-            dirs.append(f"A_{j} \u2225 guide")
-        return (f"Relative acceleration equation on {links}: {eq.text(marks=False)}, with {'; '.join(dirs)}; "
-                f"two unknown magnitudes.")
+            f"Join O_a to {idd}: A_{d} = $a.", "acceleration image", p, q, d, (ap, aq, ad), idd, {"a": _a(ad.norm())})
 
     def analysis(self, scale: float | None) -> AccelerationAnalysis:
         """The record in the notes' order: equations, pole, scale, then the drawing steps."""
-        rec = Construction("Acceleration polygon")
-        for words, eq in self.equations:
-            rec = rec.then(words, equation=eq, kind=StepKind.GIVEN)
-        rec = rec.then("Choose the pole O_a.", Point("pole O_a", Role.LABEL, Diagram.ACCELERATION, ORIGIN, "O_a"))
-        rec = rec.then(f"Choose the acceleration scale: 1 mm = $s; A_{self.crank.tip} is $len.",
-                       ScaleBar("acceleration scale", Role.SCALE_BAR, Diagram.ACCELERATION, "acceleration", scale),
-                       values={"s": Value("scale", scale, "acceleration"),
-                               "len": Value("paper length", self.known, "acceleration")})
-        for words, entities, eq, values, kind in self.steps:
-            rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
+        rec = self.record("acceleration", scale, self.known)
         return AccelerationAnalysis(rec, self.va, self.acc, self.normal, self.tangential, self.ang, self.cond,
                                     scale, tuple(self.warnings), self.alpha, self.coriolis, self.sliding)

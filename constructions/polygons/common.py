@@ -1,6 +1,7 @@
-"""What every vector polygon shares: the pole and image labels, the thresholds that name a singular
-position, the words for a sense of rotation, and the naming of singular
-positions (toggle, change point, limit position, dead centre) from the mechanism and its pose.
+"""What every vector polygon shares: the pole and image labels, the names of acceleration components, the
+words for a sense of rotation, the naming of singular positions (toggle, change point, limit position,
+dead centre) from the mechanism and its pose, and the drawing of trial lines and their crossing.  The
+thresholds that name a singular position are in :mod:`constructions.tolerance`.
 """
 
 from __future__ import annotations
@@ -8,34 +9,29 @@ from __future__ import annotations
 import math
 
 from ..errors import IndeterminatePosition
-from ..geometry import Contact, Line, Vec, intersect_lines
-from ..mechanisms.assembly import CrankTip, FixedToLink, TwoCircles, TwoLines
+from ..geometry import ORIGIN, Contact, Line, Vec, intersect_lines
+from ..mechanisms.assembly import CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines
 from ..mechanisms.model import Mechanism, describe_angle
 from ..mechanisms.pose import Pose
+from ..entities import Arrow, Point, Polygon, Role, ScaleBar, TrialLine
+from ..record import Construction, StepKind, Value
+from ..tolerance import CHANGE_POINT_REL, CONDITION_FLOOR, DEAD_CENTRE_SINE, ROUNDING, WARN_SINE
 
-SINGULAR_SINE = 1e-4
-"""Trial lines crossing at a sine below this mark a singular position (toggle, limit, change point).
-The closest crossing a float figure can tell from a tangency (gap 1e-9 L) has a sine near 4.5e-5; the
-conditioning of the measured values grows like 1/sine^2, so above 1e-4 they keep at least 7 digits."""
-
-WARN_SINE = 1e-2
-"""Below this the values are returned with a warning and an error estimate."""
-
-DEAD_CENTRE_SINE = 1e-9
-"""Crank and driven link closer to a line than this (sine of the angle between them) are at dead centre."""
-
-ROUNDING = 4.0 * 2.2e-16
-"""Relative rounding of one crossing of well-conditioned trial lines; it grows as 1/sine^2."""
 
 def rounding_estimate(condition: float) -> float:
     """Rough relative error of values read off a crossing at sine ``condition``."""
-    return ROUNDING / max(condition, 1e-300) ** 2
+    return ROUNDING / max(condition, CONDITION_FLOOR) ** 2
 
 
 def image_name(joint: str, prime: str = "") -> str:
     """The notes' lower-case label of a joint's image point: B -> b (velocity), b' (acceleration with
     ``prime="'"``); O2 -> o2."""
     return joint[0].lower() + joint[1:] + prime
+
+
+def component_name(j: str, p: str, sup: str, m: Mechanism) -> str:
+    """A_CB^t; about a fixed pivot the notes drop the pivot: A_C^t."""
+    return f"A_{j}^{sup}" if p in m.ground else f"A_{j}{p}^{sup}"
 
 
 def joined(*names: str) -> str:
@@ -132,7 +128,16 @@ def change_point(m: Mechanism, pose: Pose) -> bool:
     if far == pts[0]:
         return True
     axis = Line.through(pts[0], far)
-    return all(abs(axis.signed_distance(p)) <= 1e-6 * m.size for p in pts)
+    return all(abs(axis.signed_distance(p)) <= CHANGE_POINT_REL * m.size for p in pts)
+
+
+def dyad_arms(step) -> tuple[bool, int | None, list]:
+    """A dyad as (on a guide or slot, the slotted link or None, its arms (link, centre)): the link and its
+    centre on a guide or slot, else both links with their outer joints."""
+    guided = isinstance(step, CircleAndGuide)
+    on = step.slide.on if guided else None
+    arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
+    return guided, on, arms
 
 
 def image_point(P: Vec, Q: Vec, D: Vec, ip: Vec, iq: Vec) -> tuple[Vec, float, float]:
@@ -150,15 +155,25 @@ class PolygonDrawing:
     """What the velocity and acceleration polygons share while they are drawn: the walk over the
     assembly plan (each dyad gives one vector equation, each point placed by its link an image) and the
     crossing of two trial lines, named as a singular position when they do not cross and warned about
-    near one.  A subclass sets ``what`` ("velocity polygon") and has ``m``, ``pose``, ``tol``, ``cond``
-    and ``warnings``, and draws ``dyad(step)`` and ``image(step)``."""
+    near one.  A subclass sets ``what`` ("velocity polygon"), the ``symbol`` of its vectors ("V"), its
+    ``pole`` ("O_v") and ``diagram``, has ``m``, ``pose``, ``tol``, ``cond``, ``warnings`` and ``steps``, and
+    draws ``dyad(step)`` and ``image(step)``."""
 
     what = "polygon"
+    symbol = ""
+    pole = ""
+    diagram = None
 
     def draw_plan(self, plan) -> None:
+        """Each step after the crank: an image, a slotted link through a joint, a joint on two lines, or a
+        dyad of two links (or a link and a guide or slot)."""
         for step in plan[1:]:
             if isinstance(step, FixedToLink):
                 self.image(step)
+            elif isinstance(step, SlotThrough):
+                self.slot_through(step)
+            elif isinstance(step, TwoLines):
+                self.two_lines(step)
             elif not isinstance(step, CrankTip):
                 self.dyad(step)
 
@@ -171,3 +186,59 @@ class PolygonDrawing:
         if hit.condition < WARN_SINE:
             self.warnings.append(near_singular_warning(self.m, step, self.pose, hit.condition, self.what))
         return hit.points[0]
+
+    def image_answer(self, words: str, prefix: str, p: str, q: str, d: str, corners: tuple[Vec, Vec, Vec],
+                     label: str, values) -> None:
+        """The step ``words`` that places the image of D, a point of link PQ: the image triangle ``corners``
+        (p, q, d), d's ``label``, and D's absolute vector from the pole."""
+        sym, tip = self.symbol, corners[2]
+        self.steps.append((words, (Polygon(f"{prefix} {p}{q}{d}", Role.IMAGE, self.diagram, corners),
+                                   Point(f"{prefix} {d}", Role.LABEL, self.diagram, tip, label),
+                                   Arrow(f"result {sym}_{d}", Role.RESULT, self.diagram, ORIGIN, tip, f"{sym}_{d}")),
+                           None, values, StepKind.ANSWER))
+
+    def record(self, kind: str, scale: float | None, known: float) -> Construction:
+        """The record in the notes' order: the equations, the pole, the ``kind`` scale (``known`` the length
+        of the crank tip's vector), then the drawing steps."""
+        rec = Construction(f"{kind.capitalize()} polygon")
+        for words, eq in self.equations:
+            rec = rec.then(words, equation=eq, kind=StepKind.GIVEN)
+        rec = rec.then(f"Choose the pole {self.pole}.",
+                       Point(f"pole {self.pole}", Role.LABEL, self.diagram, ORIGIN, self.pole))
+        rec = rec.then(f"Choose the {kind} scale: 1 mm = $s; {self.symbol}_{self.crank.tip} is $len.",
+                       ScaleBar(f"{kind} scale", Role.SCALE_BAR, self.diagram, kind, scale),
+                       values={"s": Value("scale", scale, kind), "len": Value("paper length", known, kind)})
+        for words, entities, eq, values, kind_ in self.steps:
+            rec = rec.then(words, *entities, equation=eq, values=values, kind=kind_)
+        return rec
+
+    def parallel_trial(self, words: str, name: str, through: Vec, g: Vec, eq, slot: bool, *marks,
+                       values=None) -> Line:
+        """The step ``words``: the points ``marks``, then the trial line ``name`` through ``through``, parallel
+        to a slot (``slot``) or a fixed guide of direction ``g``.  Returns that line."""
+        label = "\u2225 slot" if slot else "\u2225 guide"
+        self.steps.append((words, (*marks, TrialLine(name, Role.TRIAL, self.diagram, through, g, label)), eq,
+                           values or {}, StepKind.CONSTRUCTION))
+        return Line(through, g)
+
+    def close_dyad(self, step, trials: list[Line], eq) -> tuple[Vec, Vec | None]:
+        """The crossing of a dyad's trial lines: its arms' ``trials`` and, for a joint on a fixed guide, the
+        line through the pole along it, or in the slot of a moving link the line ``slot_trial`` draws.
+        Returns the crossing and where the sliding vector along the slot starts (None without a slot)."""
+        start = None
+        if isinstance(step, CircleAndGuide):
+            j = step.joint
+            g = self.pose.lines[j].direction
+            if step.slide.on is None:
+                trials = trials + [self.guide_trial(j, g, eq)]
+            else:
+                line, start = self.slot_trial(j, step.coincident, step.slide.on, g, eq)
+                trials = trials + [line]
+        return self._close(step, trials), start
+
+    def guide_trial(self, j: str, g: Vec, eq, name: str = "") -> Line:
+        """The direction of the absolute velocity (acceleration) of a joint on a fixed guide: through the
+        pole, parallel to the guide."""
+        q = self.symbol
+        return self.parallel_trial(f"Draw the direction of {q}_{j} through {self.pole}, parallel to the guide.",
+                                   name or f"trial {q}_{j}", ORIGIN, g, eq, False)

@@ -13,78 +13,18 @@ value is filled in by the drawing, unless the caller fixes ``scale``.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import Mapping
 
-from ..entities import Arrow, Diagram, Point, Polygon, Role, ScaleBar, TrialLine
+from ..entities import Arrow, Diagram, Point, Role, TrialLine
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..mechanisms.assembly import CircleAndGuide, CrankTip, Dyad, FixedToLink, SlotThrough, TwoLines, assembly_plan
+from ..mechanisms.assembly import CrankTip, Dyad, FixedToLink, SlotThrough, TwoLines, assembly_plan
 from ..mechanisms.model import Mechanism, slide_line
 from ..mechanisms.pose import Pose
-from ..quantities import Measured
 from ..record import Construction, StepKind, Term, Value, VectorEquation
-from .common import (SINGULAR_SINE, WARN_SINE, PolygonDrawing, dead_centre, image_name, image_point, joined,
-                     rounding_estimate, sense)
-
-
-@dataclass(frozen=True)
-class VelocityAnalysis:
-    """The velocity polygon at one position and the values measured off it (SI, CCW positive).
-
-    ``velocities`` maps every joint and point to its absolute velocity (fixed pivots: zero);
-    ``relative[(J, P)]`` is V_JP, the side p->j of the polygon; ``angular`` maps link numbers to their
-    angular velocity (slider blocks translate: 0); ``conditions`` maps each joint found by trial lines
-    to the sine of the angle at which they crossed; ``warnings`` says what the reader must know;
-    ``scale`` is the scale fixed by the caller (SI units per paper mm) or None (the drawing chooses).
-    """
-
-    construction: Construction
-    pose: Pose
-    velocities: Mapping[str, Vec]
-    relative: Mapping[tuple[str, str], Vec]
-    angular: Mapping[int, float]
-    conditions: Mapping[str, float]
-    scale: float | None
-    warnings: tuple[str, ...]
-    omega: float = 0.0
-
-    @property
-    def at_rest(self) -> bool:
-        """omega = 0: nothing moves, nothing is drawn and nothing is measured."""
-        return self.omega == 0.0
-
-    @property
-    def worst_condition(self) -> float:
-        return min(self.conditions.values(), default=1.0)
-
-    @property
-    def relative_error_estimate(self) -> float:
-        """Rough relative error of the measured values from rounding, growing as 1/sine^2 near
-        singular positions."""
-        return rounding_estimate(self.worst_condition)
-
-    def scales(self) -> dict[str, float]:
-        """The input's scale of each kind, against which small values are judged: |V_B| and |omega_1|."""
-        if self.at_rest:
-            return {}
-        return {"velocity": max(v.norm() for v in self.velocities.values()),
-                "angular velocity": abs(self.omega)}
-
-    def measured(self, m: Mechanism) -> list[Measured]:
-        """Absolute velocities of the moving joints and points, relative velocities between moving
-        joints, and the angular velocities of the links that are neither the crank nor a slider block (none
-        at rest: every one is zero by the scene's own data, not by construction)."""
-        if self.at_rest:
-            return []
-        c = self.worst_condition
-        out = [Measured(f"V_{n}", "velocity", v, c) for n, v in self.velocities.items() if n not in m.ground]
-        out += [Measured(f"V_{j}{p}", "velocity", v, c) for (j, p), v in self.relative.items()
-                if p not in m.ground]
-        skip = {m.crank} | {s.number for s in m.slides}
-        out += [Measured(f"omega_{n}", "angular velocity", w, c) for n, w in sorted(self.angular.items())
-                if n not in skip]
-        return out
+from ..tolerance import SINGULAR_SINE, WARN_SINE
+from .analyses import VelocityAnalysis
+from .common import PolygonDrawing, dyad_arms, dead_centre, image_name, image_point, joined, sense
+from .equations import velocity_caption, velocity_equation, velocity_slot_equation
 
 
 def velocity_polygon(m: Mechanism, pose: Pose, omega: float, *, scale: float | None = None) -> VelocityAnalysis:
@@ -127,7 +67,7 @@ def _w(value: float) -> Value:
 class _Polygon(PolygonDrawing):
     """The polygon while it is drawn: image points found so far, measured values, pending steps."""
 
-    what = "velocity polygon"
+    what, symbol, pole, diagram = "velocity polygon", "V", "O_v", Diagram.VELOCITY
 
     def __init__(self, m: Mechanism, pose: Pose, crank: CrankTip, omega: float) -> None:
         self.m, self.pose, self.crank, self.omega = m, pose, crank, omega
@@ -172,49 +112,38 @@ class _Polygon(PolygonDrawing):
         x = next(x for x in self.m.points_of(number) if x in self.vel)
         return self.vel[x] + (pos[point] - pos[x]).perp() * self._omega_of(number)
 
+    def _square_trial(self, what: str, centre: str, j: str, r: Vec, eq) -> Line:
+        """The direction of ``what``, the velocity of J about ``centre`` (``r`` from it to J): through the image
+        of the centre, square to the link."""
+        at = "O_v" if centre in self.m.ground else image_name(centre)
+        self.steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
+                           (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, self.vel[centre],
+                                      r.perp(), f"\u22a5 {centre}{j}"),), eq, {}, StepKind.CONSTRUCTION))
+        return Line(self.vel[centre], r.perp())
+
+    def slot_trial(self, j: str, jg: str, on: int, g: Vec, eq) -> tuple[Line, Vec]:
+        """J in the slot of link ``on``: the image of the link's point JG under J, and through it the direction
+        of V_J,JG along the slot.  Returns that line and V_JG."""
+        v_jg = self._velocity_on(on, jg)
+        self.vel[jg] = v_jg
+        line = self.parallel_trial(
+            f"Mark {image_name(jg)}, the image of the point {jg} of link {on} under {j} "
+            f"(V_{jg} = $vg); through it draw the direction of V_{j}{jg}, parallel to the slot.",
+            f"trial V_{j}{jg}", v_jg, g, eq, True,
+            Point(f"image {jg}", Role.LABEL, Diagram.VELOCITY, v_jg, image_name(jg)),
+            values={"vg": _v(v_jg.norm())})
+        return line, v_jg
+
     def dyad(self, step: Dyad) -> None:
         """One vector equation, V_C = V_B + V_CB: two trial lines and their crossing c."""
-        if isinstance(step, SlotThrough):
-            return self.slot_through(step)
-        if isinstance(step, TwoLines):
-            return self.two_lines(step)
         m, pos = self.m, self.pose.positions
         j = step.joint
-        guided = isinstance(step, CircleAndGuide)
-        on = step.slide.on if guided else None
-        arms = [(step.link, step.centre)] if guided else [(step.link_a, step.first), (step.link_b, step.second)]
-        eq = _equation(arms, j, m, guided, step.coincident if on is not None else "")
-        self.equations.append((_equation_caption(eq, arms, j, m, step), eq))
-        trials: list[Line] = []
-        for link, centre in arms:
-            pj = pos[j] - pos[centre]
-            trials.append(Line(self.vel[centre], pj.perp()))
-            at = "O_v" if centre in m.ground else image_name(centre)
-            what = self._what(j, centre)
-            self.steps.append((f"Draw the direction of {what} through {at}, perpendicular to {centre}{j}.",
-                               (TrialLine(f"trial {what}", Role.TRIAL, Diagram.VELOCITY, self.vel[centre],
-                                          pj.perp(), f"\u22a5 {centre}{j}"),), eq, {}, StepKind.CONSTRUCTION))
-        slide_v = None
-        if guided:
-            g = self.pose.lines[j].direction
-            if on is None:
-                trials.append(Line(ORIGIN, g))
-                self.steps.append((f"Draw the direction of V_{j} through O_v, parallel to the guide.",
-                                   (TrialLine(f"trial V_{j}", Role.TRIAL, Diagram.VELOCITY, ORIGIN, g,
-                                              "\u2225 guide"),), eq, {}, StepKind.CONSTRUCTION))
-            else:
-                jg = step.coincident
-                v_jg = self._velocity_on(on, jg)
-                self.vel[jg] = v_jg
-                trials.append(Line(v_jg, g))
-                self.steps.append((
-                    f"Mark {image_name(jg)}, the image of the point {jg} of link {on} under {j} "
-                    f"(V_{jg} = $vg); through it draw the direction of V_{j}{jg}, parallel to the slot.",
-                    (Point(f"image {jg}", Role.LABEL, Diagram.VELOCITY, v_jg, image_name(jg)),
-                     TrialLine(f"trial V_{j}{jg}", Role.TRIAL, Diagram.VELOCITY, v_jg, g, "\u2225 slot")),
-                    eq, {"vg": _v(v_jg.norm())}, StepKind.CONSTRUCTION))
-                slide_v = v_jg
-        vj = self._close(step, trials)
+        guided, on, arms = dyad_arms(step)
+        eq = velocity_equation(arms, j, m, guided, step.coincident if on is not None else "")
+        self.equations.append((velocity_caption(eq, arms, j, m, step), eq))
+        trials = [self._square_trial(self._what(j, centre), centre, j, pos[j] - pos[centre], eq)
+                  for _, centre in arms]
+        vj, slide_v = self.close_dyad(step, trials, eq)
         self.vel[j] = vj
         dead = dead_centre(pos, self.crank, arms, j)
         if dead:
@@ -301,19 +230,15 @@ class _Polygon(PolygonDrawing):
         j, jg, c, k = step.joint, step.coincident, step.centre, step.link
         r = pos[j] - pos[c]
         g = self.pose.lines[j].direction
-        eq = _slot_equation(j, jg, c, m)
+        eq = velocity_slot_equation(j, jg, c, m)
         self.equations.append((
             f"Relative velocity equation at the sliding joint {j} (the point {jg} of link {k.number} under "
             f"{j}): {eq.text(marks=False)}, with {self._what(jg, c)} \u22a5 {c}{j} and V_{jg}{j} \u2225 slot; "
             f"two unknown magnitudes.", eq))
-        at = "O_v" if c in m.ground else image_name(c)
-        self.steps.append((f"Draw the direction of {self._what(jg, c)} through {at}, perpendicular to {c}{j}.",
-                           (TrialLine(f"trial {self._what(jg, c)}", Role.TRIAL, Diagram.VELOCITY, self.vel[c],
-                                      r.perp(), f"\u22a5 {c}{j}"),), eq, {}, StepKind.CONSTRUCTION))
-        self.steps.append((f"Draw the direction of V_{jg}{j} through {image_name(j)}, parallel to the slot.",
-                           (TrialLine(f"trial V_{jg}{j}", Role.TRIAL, Diagram.VELOCITY, self.vel[j], g,
-                                      "\u2225 slot"),), eq, {}, StepKind.CONSTRUCTION))
-        v = self._close(step, [Line(self.vel[c], r.perp()), Line(self.vel[j], g)])
+        square = self._square_trial(self._what(jg, c), c, j, r, eq)
+        slot = self.parallel_trial(f"Draw the direction of V_{jg}{j} through {image_name(j)}, parallel to the "
+                                   f"slot.", f"trial V_{jg}{j}", self.vel[j], g, eq, True)
+        v = self._close(step, [square, slot])
         self.vel[jg] = v
         self.rel[(jg, c)] = v - self.vel[c]
         self.rel[(jg, j)] = v - self.vel[j]
@@ -370,65 +295,11 @@ class _Polygon(PolygonDrawing):
                 None, {}, StepKind.CONSTRUCTION))
         vel[d] = vd
         self.rel[(d, p)] = vd - vp
-        self.steps.append((
-            f"The shaded triangle {joined(ip, iq, idd)} is the velocity image of {p}{q}{d}. Join O_v to {idd}: "
-            f"V_{d} = $v.",
-            (Polygon(f"image {p}{q}{d}", Role.IMAGE, Diagram.VELOCITY, (vp, vq, vd)),
-             Point(f"image {d}", Role.LABEL, Diagram.VELOCITY, vd, idd),
-             Arrow(f"result V_{d}", Role.RESULT, Diagram.VELOCITY, ORIGIN, vd, f"V_{d}")),
-            None, {"v": _v(vd.norm())}, StepKind.ANSWER))
+        self.image_answer(f"The shaded triangle {joined(ip, iq, idd)} is the velocity image of {p}{q}{d}. Join O_v "
+                          f"to {idd}: V_{d} = $v.", "image", p, q, d, (vp, vq, vd), idd, {"v": _v(vd.norm())})
 
     def analysis(self, scale: float | None) -> VelocityAnalysis:
         """The record in the notes' order: equations, pole, scale, then the drawing steps."""
-        known = self.v_known.norm()
-        rec = Construction("Velocity polygon")
-        for words, eq in self.equations:
-            rec = rec.then(words, equation=eq, kind=StepKind.GIVEN)
-        rec = rec.then("Choose the pole O_v.", Point("pole O_v", Role.LABEL, Diagram.VELOCITY, ORIGIN, "O_v"))
-        rec = rec.then(f"Choose the velocity scale: 1 mm = $s; V_{self.crank.tip} is $len.",
-                       ScaleBar("velocity scale", Role.SCALE_BAR, Diagram.VELOCITY, "velocity", scale),
-                       values={"s": Value("scale", scale, "velocity"),
-                               "len": Value("paper length", known, "velocity")})
-        for words, entities, eq, values, kind in self.steps:
-            rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
+        rec = self.record("velocity", scale, self.v_known.norm())
         return VelocityAnalysis(rec, self.pose, self.vel, self.rel, self.ang, self.cond, scale,
                                 tuple(self.warnings), self.omega)
-
-
-def _equation(arms, j: str, m: Mechanism, guided: bool, coincident: str = "") -> VectorEquation:
-    """V_J = V_P + V_JP with the notes' marks; both centres moving: V_P + V_JP = V_Q + V_JQ; on a moving
-    slot: V_P + V_JP = V_JG + V_J,JG (JG the slotted link's point under J)."""
-    if coincident:
-        (_, c), = arms
-        left = (Term("V", coincident, True, True), Term("V", f"{j}{coincident}", False, True))
-        if c in m.ground:
-            return VectorEquation((Term("V", j, False, True),), left)
-        return VectorEquation((Term("V", c, True, True), Term("V", f"{j}{c}", False, True)), left)
-    moving = [(l, c) for l, c in arms if c not in m.ground]
-    fixed = [(l, c) for l, c in arms if c in m.ground]
-    if guided or fixed:
-        left = (Term("V", j, False, True),)
-        (_, c), = moving if moving else fixed[:1]
-        if c in m.ground:
-            return VectorEquation(left, (Term("V", f"{j}{c}", False, True),))
-        return VectorEquation(left, (Term("V", c, True, True), Term("V", f"{j}{c}", False, True)))
-    (_, p), (_, q) = moving
-    return VectorEquation((Term("V", p, True, True), Term("V", f"{j}{p}", False, True)),
-                          (Term("V", q, True, True), Term("V", f"{j}{q}", False, True)))
-
-
-def _slot_equation(j: str, jg: str, c: str, m: Mechanism) -> VectorEquation:
-    """V_JG = V_J + V_JG,J about a fixed centre; V_C + V_JG,C = V_J + V_JG,J about a moving one."""
-    right = (Term("V", j, True, True), Term("V", f"{jg}{j}", False, True))
-    if c in m.ground:
-        return VectorEquation((Term("V", jg, False, True),), right)
-    return VectorEquation((Term("V", c, True, True), Term("V", f"{jg}{c}", False, True)), right)
-
-
-def _equation_caption(eq: VectorEquation, arms, j: str, m: Mechanism, step) -> str:
-    links = " and ".join(f"link {l.number} ({l.label})" for l, _ in arms)
-    dirs = [f"V_{j}{c} \u22a5 {c}{j}" if c not in m.ground else f"V_{j} \u22a5 {c}{j}" for _, c in arms]
-    if isinstance(step, CircleAndGuide):
-        dirs.append(f"V_{j} \u2225 guide" if step.slide.on is None else f"V_{j}{step.coincident} \u2225 slot")
-    return (f"Relative velocity equation on {links}: {eq.text(marks=False)}, with {', '.join(dirs)}; "
-            f"two unknown magnitudes.")

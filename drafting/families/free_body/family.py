@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from constructions.forces.free_body import MEMBER, PIN, ROLLER, free_body_analysis
+from constructions.forces.free_body import free_body_analysis
+from constructions.forces.rigid_body import MEMBER, PIN, ROLLER
 from constructions.forces.free_body_check import equilibrium_solution
 from constructions.record import Construction
 

@@ -15,7 +15,7 @@
 ``[[load]]`` and ``[[couple]]`` are written as in a linkage scene (:mod:`drafting.scene.effects`), without
 the link: a free-body scene has one body.  Read with the shared reader, so every error is one sentence
 naming the file and the key; the supports are checked for static determinacy and proper constraint
-(:func:`constructions.forces.free_body.check_supports`) before anything is drawn.
+(:func:`constructions.forces.rigid_body.check_supports`) before anything is drawn.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ from typing import Any
 
 from constructions.errors import ConstructionError, DegenerateInput
 from constructions.forces.effects import Couple, Load
-from constructions.forces.free_body import GUIDE, MEMBER, PIN, ROLLER, RigidBody, Support, check_supports
+from constructions.forces.rigid_body import GUIDE, MEMBER, PIN, ROLLER, RigidBody, Support, check_supports
 from constructions.geometry import Vec
 
 from ...scene import limits

@@ -306,7 +306,7 @@ def _json(study) -> dict[str, Any]:
                                    for n, w in sorted(v.angular.items())}
     a = study.computed("acceleration")
     if a is not None:
-        from constructions.polygons.acceleration import component_name
+        from constructions.polygons.common import component_name
         out["acceleration"] = {f"A_{n}": u.vector_json(p, "acceleration") for n, p in a.accelerations.items()
                                if n not in m.ground}
         out["acceleration_components"] = {
