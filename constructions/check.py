@@ -13,13 +13,13 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from .analytic import chain_solution
 from .closed_forms import closed_form_parts, closed_form_state
 from .constraint_kinematics import solve_constraints
 from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
 from .linkage import Mechanism, SlotThrough, TwoLines, assembly_plan
 from .quantities import Measured
-from .vector_loops import chain_solution
 
 AGREEMENT = 1e-9
 """Graphical and analytic agree when they differ by less than this, relative to the reference value

@@ -2,7 +2,7 @@
 every mechanism the model accepts.
 
 Checked (1) against the closed forms of constructions.analytic (four-bar, slider-crank, coupler points)
-and against the dyad chains of constructions.vector_loops (toggle linkage, six-bars of binary links) on
+and against the dyad chains of constructions.analytic.vector_loops (toggle linkage, six-bars of binary links) on
 random cases; (2) on the mechanisms neither of those models -- slotted-lever quick-return with a block
 and with a pin in a slot, offset slots, a block meeting a moving slot, a Watt six-bar with ternary
 links, a ternary link found through its third point, and an Assur triad that cannot be drawn dyad by
@@ -24,12 +24,12 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from constructions import analytic
+from constructions.analytic import chain_solution
 from constructions.constraint_kinematics import (SINGULAR, TOLERANCE, ConstraintState, constraint_count,
                                                  solve_constraints, solve_positions)
 from constructions.errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Branch, Link, Mechanism, Slide, assembly_plan, locate
-from constructions.vector_loops import chain_solution
 from mechanisms import (quick_return, rocker_with_slot, six_bar, slanted_slot, ternary_posed_by_other_points,
                         toggle_linkage, watt_chain, watt_six_bar)
 
