@@ -76,10 +76,12 @@ def _snap(f: np.ndarray, tol: float, ok: np.ndarray, tangent: np.ndarray) -> np.
 #: Crank angles solved per chunk, so the chain's many temporaries stay in cache (measured on the
 
 
-def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
+def chain_solution(m: Mechanism, theta, omega, alpha=0.0, *, chunk: int | None = None) -> ChainState:
     """Solve the mechanism ``m`` (a crank followed by dyads) at crank angle(s) ``theta`` (rad, direction
     pivot -> tip, CCW from +x) turning at ``omega`` (rad/s, CCW positive) with angular acceleration
-    ``alpha`` (rad/s^2, CCW positive; default 0, constant speed).
+    ``alpha`` (rad/s^2, CCW positive; default 0, constant speed).  ``chunk``, if given, is how many
+    angles go through the loop at a time (the sweep's choice, to keep the temporaries in cache; the
+    numbers are the same); None: all at once.
 
     Raises DegenerateInput when the mechanism is not a crank followed by RRR and RRP dyads (it says
     which joint cannot be solved).
@@ -92,13 +94,24 @@ def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
     far = max((max(abs(p.x), abs(p.y)) for p in list(m.ground.values()) + [s.through for s in m.slides]),
               default=0.0)
     tol = snap_tolerance(m.size, far)     # the one scene size, plus the rounding of far coordinates
-    res = _solve(m, crank, dyads, points, th, w1, a1, tol)
 
-    def own(v) -> np.ndarray:             # a fresh array of its own (a fixed pivot's float, the input omega)
-        return np.array(np.broadcast_to(v, (n,)), dtype=np.float64)
-    out = {kind: {name: ((own(v[0]), own(v[1])) if kind in VECTORS else own(v)) for name, v in res[kind].items()}
-           for kind in KINDS}
-    ok = res["ok"]
+    out: dict[str, dict] = {}
+    ok = np.empty(n, dtype=bool)
+    step = chunk or max(n, 1)
+    for i in range(0, max(n, 1), step):
+        j = min(i + step, n)
+        res = _solve(m, crank, dyads, points, th[i:j], w1[i:j], a1[i:j], tol)
+        if not out:   # the names are known after the first piece: the outputs, arrays of their own
+            out = {kind: {name: ((np.empty(n), np.empty(n)) if kind in VECTORS else np.empty(n))
+                          for name in res[kind]} for kind in KINDS}
+        for kind in KINDS:
+            for name, v in res[kind].items():
+                if kind in VECTORS:
+                    out[kind][name][0][i:j] = v[0]
+                    out[kind][name][1][i:j] = v[1]
+                else:
+                    out[kind][name][i:j] = v
+        ok[i:j] = res["ok"]
 
     # where any dyad fails the mechanism has no configuration: NaN for everything that moves
     if not ok.all():
@@ -121,7 +134,7 @@ def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
 
 def _solve(m: Mechanism, crank: CrankStep, dyads, points, th: np.ndarray, w1: np.ndarray, a1: np.ndarray,
            tol: float) -> dict:
-    """One chunk of :func:`chain_solution` (1-D arrays); fixed pivots as plain floats."""
+    """:func:`chain_solution` at the angles ``th`` (1-D arrays); fixed pivots as plain floats."""
     k = th.size
     pos: dict[str, tuple] = {}
     vel: dict[str, tuple] = {}
