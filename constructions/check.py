@@ -13,6 +13,7 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from .analytic import chain_solution
 from .closed_forms import closed_form_parts, closed_form_state
 from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
@@ -21,7 +22,6 @@ from .mechanisms.constraint_kinematics import solve_constraints
 from .mechanisms.model import Mechanism
 from .quantities import Measured
 from .tolerance import AGREEMENT, CONDITION_FLOOR, EPSILON, OTHER_ASSEMBLY, SAFETY
-from .vector_loops import chain_solution
 
 _ORDER = {"velocity": 2, "angular velocity": 2, "acceleration": 3, "angular acceleration": 3, "force": 3,
           "torque": 3}

@@ -1,44 +1,35 @@
 """The closed forms applied to a mechanism: which mechanisms they model (a plain four-bar or slider-crank,
 with points fixed to its links) and their state over an array of crank angles -- one piece that the
 analytic check (:mod:`constructions.check`, one angle) and the sweep (:mod:`constructions.sweep`, many)
-both call.  Topology is read from the assembly plan; every number comes from :mod:`constructions.analytic`.
+both call.  Topology is read from the assembly plan; every number comes from the closed forms given: the
+oracle's (:mod:`constructions.analytic`) or the sweep's kernels of the same formulas
+(:mod:`constructions.sweep_kernels`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Mapping
 
 import numpy as np
 
-from . import analytic
-from .mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines,
-                                  assembly_plan)
+from . import sweep_kernels
+from .mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines, assembly_plan)
 from .mechanisms.model import Mechanism
+from .motion_arrays import XY, MotionArrays
 
-XY = tuple[np.ndarray, np.ndarray]
 
+@dataclass(frozen=True, eq=False)
+class ClosedFormState(MotionArrays):
+    """The motion over the crank angles (:class:`~constructions.motion_arrays.MotionArrays`) and the links
+    whose rates are inputs or zero (the crank, a slider block on a fixed guide)."""
 
-@dataclass(frozen=True)
-class ClosedFormState:
-    """Arrays over the crank angles: positions, velocities, accelerations (name -> (x, y)), angular
-    velocities and accelerations (link -> array), where the loop closes, and the links whose rates are
-    inputs or zero (the crank, a slider block on a fixed guide)."""
-
-    model: str
-    positions: Mapping[str, XY]
-    velocities: Mapping[str, XY]
-    accelerations: Mapping[str, XY]
-    angular: Mapping[int, np.ndarray]
-    angular_acceleration: Mapping[int, np.ndarray]
-    assembles: np.ndarray
-    fixed_links: frozenset[int]
+    fixed_links: frozenset[int] = frozenset()
 
 
 def closed_form_parts(m: Mechanism):
     """(crank step, dyad, points fixed to its links) when ``m`` is a plain four-bar or slider-crank -- one
     dyad hung from the crank tip and the frame, no other slider, points only on those links -- so the
-    closed forms of :mod:`constructions.analytic` apply; else None.  Topology only."""
+    closed forms apply; else None.  Topology only."""
     plan = assembly_plan(m)
     crank = plan[0]
     assert isinstance(crank, CrankTip)
@@ -64,10 +55,12 @@ def closed_form_parts(m: Mechanism):
     return crank, d, fixed
 
 
-def closed_form_state(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts) -> ClosedFormState:
-    """The closed forms of :mod:`constructions.analytic` over the crank angles ``th`` (a 1-d array) for the
-    plain four-bar or slider-crank that :func:`closed_form_parts` recognised: every joint and point of it
-    (points fixed to its links by :func:`analytic.coupler_point`), every link's rates."""
+def closed_form_state(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts,
+                      forms=sweep_kernels) -> ClosedFormState:
+    """The closed forms over the crank angles ``th`` (a 1-d array) for the plain four-bar or slider-crank
+    that :func:`closed_form_parts` recognised: every joint and point of it (points fixed to its links by
+    ``coupler_point``), every link's rates.  ``forms`` holds ``four_bar``, ``slider_crank`` and
+    ``coupler_point``: :mod:`constructions.analytic` or :mod:`constructions.sweep_kernels`."""
     crank, d, fixed = parts
     n = th.size
     O1 = m.ground[crank.pivot]
@@ -87,16 +80,16 @@ def closed_form_state(m: Mechanism, th: np.ndarray, omega: float, alpha: float, 
         o2 = next(c for c in arms if c in m.ground)
         coupler, rocker = arms[b], arms[o2]
         sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
-        s = analytic.four_bar(th, omega, alpha, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
-                              crank=crank.link.length, coupler=coupler.length, rocker=rocker.length, branch=sign)
+        s = forms.four_bar(th, omega, alpha, crank_pivot=O1.as_tuple(), rocker_pivot=m.ground[o2].as_tuple(),
+                           crank=crank.link.length, coupler=coupler.length, rocker=rocker.length, branch=sign)
         model = "four-bar"
         ang[rocker.number], alp[rocker.number] = s.omega3, s.alpha3
         theta[rocker.number] = (o2, s.theta3)
     else:
         coupler = d.link
-        s = analytic.slider_crank(th, omega, alpha, crank_pivot=O1.as_tuple(), crank=crank.link.length,
-                                  coupler=coupler.length, guide_point=d.slide.through.as_tuple(),
-                                  guide_angle=d.slide.angle, branch=d.branch.sign)
+        s = forms.slider_crank(th, omega, alpha, crank_pivot=O1.as_tuple(), crank=crank.link.length,
+                               coupler=coupler.length, guide_point=d.slide.through.as_tuple(),
+                               guide_angle=d.slide.angle, branch=d.branch.sign)
         model = "slider-crank"
         ang[d.slide.number], alp[d.slide.number] = zeros, zeros
     pos[b], pos[j] = (s.Bx, s.By), (s.Cx, s.Cy)
@@ -109,10 +102,10 @@ def closed_form_state(m: Mechanism, th: np.ndarray, omega: float, alpha: float, 
         start, t = theta[a.link]
         direction = t if a.base == start else t + np.pi
         bx, by = pos[a.base]
-        p = analytic.coupler_point(bx, by, vel[a.base][0], vel[a.base][1], direction, ang[a.link],
-                                   distance=a.distance, angle=a.angle, ABx=acc[a.base][0], ABy=acc[a.base][1],
-                                   alpha2=alp[a.link])
+        p = forms.coupler_point(bx, by, vel[a.base][0], vel[a.base][1], direction, ang[a.link],
+                                distance=a.distance, angle=a.angle, ABx=acc[a.base][0], ABy=acc[a.base][1],
+                                alpha2=alp[a.link])
         pos[a.name], vel[a.name], acc[a.name] = (p.Dx, p.Dy), (p.VDx, p.VDy), (p.ADx, p.ADy)
     ok = np.asarray(s.assembles, dtype=bool).reshape(n)
     fixed_links = {crank.link.number} | ({d.slide.number} if isinstance(d, CircleAndGuide) else set())
-    return ClosedFormState(model, pos, vel, acc, ang, alp, ok, frozenset(fixed_links))
+    return ClosedFormState(th, pos, vel, acc, ang, alp, ok, model, frozenset(fixed_links))

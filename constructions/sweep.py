@@ -4,8 +4,10 @@ angular velocities and accelerations of every link (SI, CCW positive).
 The solver is chosen as :func:`constructions.check.analytic_solution` chooses it, but over arrays:
 
 - a plain four-bar or slider-crank (one dyad hung from the crank tip and the frame, points fixed to its
-  links): the vectorised closed forms of :mod:`constructions.analytic`;
-- any other crank followed by RRR/RRP dyads: :func:`constructions.vector_loops.chain_solution`;
+  links): the closed forms of :mod:`constructions.analytic` as the fast kernels of
+  :mod:`constructions.sweep_kernels` run them;
+- any other crank followed by RRR/RRP dyads: :func:`constructions.analytic.chain_solution`, in chunks
+  (:func:`constructions.sweep_kernels.chain_sweep`);
 - anything else (a slot in a moving link, a ternary link joined at its third point): the constraint
   equations (:func:`constructions.constraint_kinematics.solve_constraints`) angle by angle, each pose
   started from the previous one (continuation keeps the assembly branch).  The first pose, and the first
@@ -21,23 +23,22 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import Mapping
 
 import numpy as np
 
+from . import sweep_kernels
 from .closed_forms import closed_form_parts, closed_form_state
 from .errors import CannotAssemble, ConstructionError, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
 from .mechanisms.constraint_kinematics import solve_constraints
 from .mechanisms.model import Mechanism, place_rigid
 from .mechanisms.pose import locate
-from .vector_loops import chain_solution
-
-XY = tuple[np.ndarray, np.ndarray]
+from .motion_arrays import MotionArrays
+from .sweep_kernels import chain_sweep
 
 
 @dataclass(frozen=True, eq=False)
-class Sweep:
+class Sweep(MotionArrays):
     """A mechanism over crank angles ``thetas`` (rad).
 
     positions, velocities, accelerations : name -> (x array, y array), m, m/s, m/s^2
@@ -46,14 +47,6 @@ class Sweep:
     model : "four-bar", "slider-crank", "dyad chain" or "constraint equations"
     """
 
-    thetas: np.ndarray
-    positions: Mapping[str, XY]
-    velocities: Mapping[str, XY]
-    accelerations: Mapping[str, XY]
-    angular: Mapping[int, np.ndarray]
-    angular_acceleration: Mapping[int, np.ndarray]
-    assembles: np.ndarray
-    model: str
     change_points: tuple[float, ...] = ()
     """Crank angles (rad) where the linkage passed a change point (all links in line, the two assemblies
     meeting) and stayed on its branch: the continuation whose velocities run on smoothly."""
@@ -76,7 +69,7 @@ class Sweep:
 
 
 def _closed_form(m: Mechanism, th: np.ndarray, omega: float, alpha: float, parts) -> Sweep:
-    c = closed_form_state(m, th, omega, alpha, parts)
+    c = closed_form_state(m, th, omega, alpha, parts, sweep_kernels)
     return _finish(th, dict(c.positions), dict(c.velocities), dict(c.accelerations), dict(c.angular),
                    dict(c.angular_acceleration), c.assembles, c.model, set(c.positions) - set(m.ground),
                    set(c.fixed_links))
@@ -148,7 +141,7 @@ def sweep_at(m: Mechanism, theta: float, omega: float, alpha: float):
     """The joint velocities of the plain four-bar ``m`` at one crank angle (None where it does not
     assemble)."""
     from .geometry import Vec
-    st = closed_form_state(m, np.array([theta]), omega, alpha, closed_form_parts(m))
+    st = closed_form_state(m, np.array([theta]), omega, alpha, closed_form_parts(m), sweep_kernels)
     if not bool(np.asarray(st.assembles).reshape(-1)[0]):
         return None
     return {n: Vec(float(np.asarray(x).reshape(-1)[0]), float(np.asarray(y).reshape(-1)[0]))
@@ -266,7 +259,7 @@ def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0, *, progress=No
     if parts is not None:
         return _through_change_points(m, th, omega, alpha, parts, _closed_form(m, th, omega, alpha, parts))
     try:
-        st = chain_solution(m, th, omega, alpha)
+        st = chain_sweep(m, th, omega, alpha)
     except DegenerateInput:
         return _constraints(m, th, omega, alpha, progress)
     ok = np.asarray(st.assembles, dtype=bool).reshape(-1)

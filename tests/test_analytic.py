@@ -688,68 +688,6 @@ def test_shapes_dtypes_and_immutability():
     assert four_bar(np.array([]), 1.0, **FB).Cx.shape == (0,)
 
 
-def test_chunking_is_invisible(monkeypatch):
-    m = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(1.0, 0.0), crank=0.8, coupler=0.5, rocker=0.6,
-             branch=-1)
-    th = np.linspace(-7.0, 7.0, 1001)           # mixed assembly, angles beyond 2 pi
-    whole = four_bar(th, 2.0, **m)
-    sc = slider_crank(th, 2.0, crank_pivot=(0, 0), crank=0.8, coupler=0.5, guide_point=(0, 1),
-                      guide_angle=0.1, branch=1)
-    monkeypatch.setattr(an, "CHUNK", 7)
-    pieces = four_bar(th, 2.0, **m)
-    sc2 = slider_crank(th, 2.0, crank_pivot=(0, 0), crank=0.8, coupler=0.5, guide_point=(0, 1),
-                       guide_angle=0.1, branch=1)
-    for a, b in ((whole, pieces), (sc, sc2)):
-        for f in dataclasses.fields(a):
-            np.testing.assert_array_equal(getattr(a, f.name), getattr(b, f.name), err_msg=f.name)
-    # one angle at a time gives the same numbers
-    for k in (0, 250, 500, 1000):
-        one = four_bar(th[k], 2.0, **m)
-        for f in dataclasses.fields(one):
-            np.testing.assert_array_equal(getattr(one, f.name), getattr(whole, f.name)[k])
-
-
-def test_large_angles_and_crank_trig():
-    th = np.array([0.3, 0.3 + 2 * np.pi * 1000, 0.3 - 2 * np.pi * 123456, 2e6 + 0.3, -np.pi, np.pi])
-    r = four_bar(th, 1.0, **FB)
-    np.testing.assert_allclose(r.Bx, 0.03 * np.cos(th), rtol=0, atol=1e-17)
-    np.testing.assert_allclose(r.By, 0.03 * np.sin(th), rtol=0, atol=1e-17)
-    rng = np.random.default_rng(5)
-    for lo, hi in ((-2 * np.pi, 2 * np.pi), (-1e5, 1e5)):
-        t = rng.uniform(lo, hi, 20000)
-        r = four_bar(t, 1.0, **{**FB, "crank": 1.0, "rocker_pivot": (3.0, 0.0), "coupler": 2.5,
-                                "rocker": 2.0})
-        assert np.abs(r.Bx - np.cos(t)).max() <= 2e-15
-        assert np.abs(r.By - np.sin(t)).max() <= 2e-15
-
-
-def test_link_angles_atan2_within_2_ulp_of_numpy():
-    """The kernels' own atan2 (a rational approximation, cheaper than libm's scalar loop) against
-    np.arctan2 over random directions and lengths spanning 1e-300 .. 1e300, the axes, the diagonals,
-    signed zeros and NaN (all finite: no overflow on the way)."""
-    rng = np.random.default_rng(7)
-    n = 200_000
-    x = rng.standard_normal(n) * 10.0 ** rng.uniform(-290, 290, n)
-    y = x * np.tan(rng.uniform(-np.pi, np.pi, n)) * 10.0 ** rng.uniform(-4, 4, n)
-    y[:1000] = rng.standard_normal(1000) * 10.0 ** rng.uniform(-290, 290, 1000)
-    edge = np.array([[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0], [-1.0, -0.0], [1.0, -0.0],
-                     [1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0], [1.0, -1.0], [1.0, 0.66], [1.0, 0.66 + 1e-16],
-                     [0.66, 1.0], [3.0, 1e-300], [1e-300, 3.0], [np.nan, 1.0], [1.0, np.nan]])
-    x = np.concatenate([x, edge[:, 0]])
-    y = np.concatenate([y, edge[:, 1]])
-    out, a, b, c, d, e = (np.empty(x.size) for _ in range(6))
-    an._atan2(y, x, out, a, b, c, d, e, np.empty(x.size, dtype=bool))
-    ref = np.arctan2(y, x)
-    assert np.array_equal(np.isnan(out), np.isnan(ref))
-    fin = ~np.isnan(ref)
-    ulp = np.abs(out - ref)[fin] / np.spacing(np.abs(ref[fin]))
-    assert ulp.max() <= 2.0, ulp.max()
-    # exact on the axes, with the sign of zero kept as np.arctan2 keeps it (theta in (-pi, pi])
-    k = x.size - edge.shape[0]
-    np.testing.assert_array_equal(out[k:k + 6], ref[k:k + 6])
-    assert out[k + 4] == -np.pi and out[k + 1] == np.pi
-
-
 @pytest.mark.parametrize("bad", [dict(branch=0), dict(branch=2), dict(crank=-1.0), dict(coupler=0.0),
                                  dict(rocker=float("nan")), dict(crank_pivot=(0.0,)),
                                  dict(rocker_pivot=(0.0, float("inf")))])
@@ -760,15 +698,19 @@ def test_invalid_mechanisms_are_rejected(bad):
 
 def test_module_is_independent_of_the_constructions():
     """Only the tolerance policy (one scene size, one snapping tolerance) is shared with the engine;
-    nothing of the construction path it checks."""
+    nothing of the construction path it checks, nor the sweep's own trigonometry: the closed forms
+    import numpy and each other."""
     import ast
-    import inspect
+    from pathlib import Path
 
-    tree = ast.parse(inspect.getsource(an))
-    imported = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import)
-                for alias in node.names}
-    imported |= {node.module or "" for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
-    assert imported <= {"__future__", "math", "dataclasses", "numpy", "tolerance"}, imported
+    package = Path(an.__file__).parent
+    for name in ("four_bar_loop", "slider_loop", "point_on_link", "inputs", "parts", "states"):
+        tree = ast.parse((package / f"{name}.py").read_text())
+        imported = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import)
+                    for alias in node.names}
+        imported |= {node.module or "" for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)}
+        assert imported <= {"__future__", "math", "dataclasses", "numpy", "tolerance", "inputs", "parts",
+                            "states"}, (name, imported)
 
 
 @pytest.mark.parametrize("shift", [(0.0, 0.0), (1e3, -2e3), (-5e4, 3e4)])
@@ -789,23 +731,3 @@ def test_decisions_do_not_move_with_the_origin(shift):
     # the same size, up to the rounding the far coordinates carry
     assert scene_size((r1, r2, r3), ((0.0, 0.0), o2)) == pytest.approx(
         scene_size((r1, r2, r3), (shift, (o2[0] + shift[0], o2[1] + shift[1]))), rel=1e-9)
-
-
-def test_four_bar_into_the_callers_buffers():
-    """out=: the same values, bit for bit, written into the caller's buffers (views of them), gaps
-    included; buffers of the wrong shape, type or layout refused."""
-    kw = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(0.1, 0.02), crank=0.08, coupler=0.09, rocker=0.07, branch=1)
-    th = np.linspace(0.0, 2 * np.pi, 5001)              # this crank is long enough to leave gaps
-    fresh = four_bar(th, 10.0, 20.0, **kw)
-    block, asm = an.four_bar_buffers(th.size)
-    block.fill(123.0)
-    got = four_bar(th, 10.0, 20.0, out=(block, asm), **kw)
-    assert 0 < fresh.assembles.sum() < th.size
-    for f in dataclasses.fields(fresh):
-        a, b = getattr(fresh, f.name), getattr(got, f.name)
-        assert np.array_equal(a, b, equal_nan=True), f.name
-    assert np.shares_memory(got.Cx, block) and np.shares_memory(got.assembles, asm)
-    for bad in ((np.empty((len(an.FOURBAR_FIELDS), 10)), asm), (block.astype(np.float32), asm),
-                (np.asfortranarray(block), asm), (block, asm.astype(int)), block):
-        with pytest.raises(ValueError, match="out"):
-            four_bar(th, 10.0, 20.0, out=bad, **kw)

@@ -2,7 +2,7 @@
 analytic check of every mechanism the model accepts.
 
 Checked (1) against the closed forms of constructions.analytic (four-bar, slider-crank, coupler points)
-and against the dyad chains of constructions.vector_loops (toggle linkage, six-bars of binary links) on
+and against the dyad chains of constructions.analytic.vector_loops (toggle linkage, six-bars of binary links) on
 random cases; (2) on the mechanisms neither of those models -- slotted-lever quick-return with a block
 and with a pin in a slot, offset slots, a block meeting a moving slot, a Watt six-bar with ternary
 links, a ternary link found through its third point, and an Assur triad that cannot be drawn dyad by
@@ -24,15 +24,14 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from constructions import analytic
+from constructions.analytic import chain_solution
+from constructions.mechanisms.constraint_kinematics import (SINGULAR, TOLERANCE, ConstraintState, solve_constraints, solve_positions)
+from constructions.mechanisms.constraint_model import constraint_count
 from constructions.errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from constructions.geometry import Vec
 from constructions.mechanisms.assembly import assembly_plan
-from constructions.mechanisms.constraint_kinematics import (SINGULAR, TOLERANCE, ConstraintState,
-                                                            solve_constraints, solve_positions)
-from constructions.mechanisms.constraint_model import constraint_count
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 from constructions.mechanisms.pose import locate
-from constructions.vector_loops import chain_solution
 from mechanisms import (quick_return, rocker_with_slot, six_bar, slanted_slot, ternary_posed_by_other_points,
                         toggle_linkage, watt_chain, watt_six_bar)
 

@@ -1,4 +1,4 @@
-"""The dyad-chain vector loops (constructions.vector_loops): the analytic check of compound mechanisms.
+"""The dyad-chain vector loops (constructions.analytic.vector_loops): the analytic check of compound mechanisms.
 
 Checked (1) against the closed forms of constructions.analytic on random four-bars and slider-cranks,
 (2) against central differences of its own positions and the loop-closure equations on the notes'
@@ -19,6 +19,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from constructions import analytic
+from constructions.analytic import chain_solution, solving_order
 from constructions.check import analytic_solution, analytic_values, compare
 from constructions.errors import CannotAssemble, DegenerateInput
 from constructions.geometry import Vec
@@ -26,9 +27,8 @@ from constructions.tolerance import AGREEMENT
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 from constructions.mechanisms.pose import locate
 from constructions.polygons.velocity import velocity_polygon
-from constructions.vector_loops import chain_solution, solving_order
-from drafting.app.cli import main
 from mechanisms import six_bar, toggle_linkage, watt_chain
+from drafting.app.cli import main
 
 MM = 1e-3
 
@@ -584,14 +584,15 @@ def test_slots_in_moving_links_are_not_modelled_and_pins_in_fixed_slots_are():
 
 
 def test_independent_of_the_graphical_code_path():
-    """vector_loops must not reach the geometry kernel, the assembly plan or the velocity polygon."""
-    src = Path(__file__).resolve().parents[1] / "constructions" / "vector_loops.py"
+    """The dyad chain must not reach the geometry kernel, the assembly plan or the velocity polygon."""
+    package = Path(__file__).resolve().parents[1] / "constructions" / "analytic"
     imported: set[str] = set()
-    for node in ast.walk(ast.parse(src.read_text())):
-        if isinstance(node, ast.ImportFrom):
-            imported |= {f"{node.module}.{a.name}" for a in node.names}
-            imported.add(str(node.module))
-        elif isinstance(node, ast.Import):
-            imported |= {a.name for a in node.names}
+    for name in ("vector_loops", "chain_order", "chain_state"):
+        for node in ast.walk(ast.parse((package / f"{name}.py").read_text())):
+            if isinstance(node, ast.ImportFrom):
+                imported |= {f"{node.module}.{a.name}" for a in node.names}
+                imported.add(str(node.module))
+            elif isinstance(node, ast.Import):
+                imported |= {a.name for a in node.names}
     assert not any("geometry" in i or "velocity" in i or "locate" in i or "assembly_plan" in i
                    or "intersect" in i for i in imported), imported

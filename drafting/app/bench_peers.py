@@ -21,7 +21,7 @@ import time
 
 import numpy as np
 
-from constructions.analytic import four_bar
+from constructions.sweep_kernels import four_bar
 
 #: The benchmarked crank-rocker (SI): the same as :data:`drafting.app.bench_sweep.MECHANISMS` "four-bar".
 O1, O2 = (0.0, 0.0), (0.1, 0.02)

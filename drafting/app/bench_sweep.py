@@ -29,10 +29,9 @@ import time
 
 import numpy as np
 
-from constructions.analytic import four_bar, four_bar_buffers, slider_crank
 from constructions.geometry import Vec
 from constructions.mechanisms.model import Branch, Link, Mechanism, Slide
-from constructions.vector_loops import chain_solution
+from constructions.sweep_kernels import chain_sweep, four_bar, four_bar_buffers, slider_crank
 
 __all__ = ["ALPHA", "CHAIN_MAX", "MECHANISMS", "OMEGA", "format_detail", "format_table", "sweep_rows",
            "toggle_linkage"]
@@ -76,7 +75,7 @@ def _into_buffers(fn, make, **mech):
 
 
 def _chain(m):
-    return lambda theta: chain_solution(m, theta, OMEGA, ALPHA)
+    return lambda theta: chain_sweep(m, theta, OMEGA, ALPHA)
 
 
 #: The benchmarked mechanisms (SI units): name -> (solver of theta, largest n it is given).  A Grashof

@@ -1,8 +1,8 @@
 """Vector-loop solution of any linkage that is a crank followed by dyads, vectorised over crank angles.
 
 This is the analytic check for compound mechanisms (a four-bar driving a slider through a second
-coupler, Watt and Stephenson six-bars, ...) that :mod:`constructions.analytic` has no single closed
-form for.  It is an independent code path from the graphical construction: it reads only the data of
+coupler, Watt and Stephenson six-bars, ...) that :mod:`constructions.analytic`'s four-bar and slider-crank have no
+single closed form for.  It is an independent code path from the graphical construction: it reads only the data of
 the :class:`~constructions.linkage.Mechanism` (pivots, link lengths, guides, branches) and never calls
 the geometry kernel, the construction's assembly plan, or the velocity polygon.  It orders the joints
 itself, and solves each dyad in a different form from the kernel's circle intersections:
@@ -49,224 +49,20 @@ Conventions
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-from types import MappingProxyType
-from typing import Mapping
 
 import numpy as np
 
-from .errors import DegenerateInput
-from .mechanisms.model import Attached, Branch, Link, Mechanism, Slide
-from .tolerance import ASSEMBLY_RTOL, snap_tolerance
+from ..mechanisms.model import Mechanism
+from ..tolerance import snap_tolerance
+from .chain_order import CrankStep, RRRDyad, chain_plan
+from .chain_state import KINDS, VECTORS, ChainState, chain_state
 
-__all__ = ["ASSEMBLY_RTOL", "SINGULAR", "ChainPoint", "ChainState", "chain_solution", "solving_order"]
-
-#: Gap factors of a dyad within +-ASSEMBLY_RTOL * L of zero are a tangency (snapped to zero).
+__all__ = ["SINGULAR", "chain_solution"]
 
 #: Relative determinant (sine of the angle between the velocity trial lines) below which the velocity
 #: system of a joint is singular and its velocity NaN.
 SINGULAR = 1e-12
 
-
-# -- the order of solution -------------------------------------------------------------------------
-
-@dataclass(frozen=True, slots=True)
-class _Crank:
-    joint: str          # the crank tip
-    pivot: str
-    link: Link
-
-
-@dataclass(frozen=True, slots=True)
-class _RRR:
-    """J = the joint left (sign +1) or right of P -> Q, |PJ| = link_p.length, |QJ| = link_q.length."""
-
-    joint: str
-    p: str
-    q: str
-    link_p: Link
-    link_q: Link
-    sign: int
-
-
-@dataclass(frozen=True, slots=True)
-class _RRP:
-    """J on the guide of ``slide``, |PJ| = link.length, ahead (sign +1) of or behind the foot of P."""
-
-    joint: str
-    p: str
-    link: Link
-    slide: Slide
-    sign: int
-
-
-@dataclass(frozen=True, slots=True)
-class _Point:
-    point: Attached
-    link: Link
-
-
-def _links_between(m: Mechanism, a: str, b: str) -> list[Link]:
-    return [k for k in m.links if set(k.joints) == {a, b}]
-
-
-def _order(m: Mechanism) -> tuple[_Crank, tuple[_RRR | _RRP, ...], tuple[_Point, ...]]:
-    """Which joint is solvable from which known ones.
-
-    Known at the start: the fixed pivots and the crank tip.  A joint becomes solvable when it is carried
-    by a slider block and the joint its branch refers to is known and linked to it (an RRP dyad), or
-    when both joints its branch refers to are known and each is linked to it (an RRR dyad).  The
-    branch names the two (or one) known joints, so the dyad found does not depend on the order in
-    which joints are visited.
-    """
-    crank = next((k for k in m.links if k.number == m.crank), None)
-    if crank is None:
-        raise DegenerateInput(f"the crank, link {m.crank}, is not a binary link of the mechanism")
-    pivots = [j for j in crank.joints if j in m.ground]
-    if len(pivots) != 1:
-        raise DegenerateInput(f"the crank, link {crank.number}, must join one fixed pivot to one moving joint")
-    tip = crank.other(pivots[0])
-    slides: dict[str, Slide] = {}
-    for s in m.slides:
-        if getattr(s, "on", None) is not None:
-            raise DegenerateInput(f"joint {s.joint} slides in a slot of the moving link {s.on}; the dyad "
-                                  f"chain models straight guides fixed to the frame only")
-        if s.joint in m.ground:
-            raise DegenerateInput(f"slider joint {s.joint} is also a fixed pivot")
-        if s.joint in slides:
-            raise DegenerateInput(f"joint {s.joint} is carried by two slider blocks")
-        if s.joint == tip:
-            raise DegenerateInput(f"the crank tip {tip} cannot also run on a guide")
-        slides[s.joint] = s
-    joints = {j for k in m.links for j in k.joints} | set(slides)
-    known = set(m.ground) | {tip}
-    dyads: list[_RRR | _RRP] = []
-    progress = True
-    while progress:
-        progress = False
-        for j in sorted(joints - known):
-            b: Branch | None = m.branches.get(j)
-            if b is None or not all(r in known for r in b.reference):
-                continue
-            if j in slides:
-                if len(b.reference) != 1:
-                    raise DegenerateInput(f"the branch of slider joint {j} must be \"ahead of\" or "
-                                          f"\"behind\" the joint it hangs from")
-                (p,) = b.reference
-                ks = _links_between(m, p, j)
-                if not ks:
-                    raise DegenerateInput(f"the branch of {j} refers to {p}, which has no link to {j}")
-                dyads.append(_RRP(j, p, ks[0], slides[j], 1 if b.sign > 0 else -1))
-            else:
-                if len(b.reference) != 2:
-                    raise DegenerateInput(f"the branch of {j} must be \"left of\" or \"right of\" a line "
-                                          f"between the two joints it is found from")
-                p, q = b.reference
-                kp, kq = _links_between(m, p, j), _links_between(m, q, j)
-                if not kp or not kq:
-                    raise DegenerateInput(f"the branch of {j} refers to {p} and {q}, but {j} is not linked "
-                                          f"to both")
-                dyads.append(_RRR(j, p, q, kp[0], kq[0], 1 if b.sign > 0 else -1))
-            known.add(j)
-            progress = True
-    missing = sorted(joints - known)
-    if missing:
-        j = missing[0]
-        why = ("it has no assembly branch" if j not in m.branches else
-               "it needs two links to known joints, or one link to a known joint and a slider guide")
-        raise DegenerateInput(f"joint {j} cannot be solved: {why}")
-    points: list[_Point] = []
-    for a in m.attached:
-        link = next((k for k in m.links if k.number == a.link), None)
-        if link is None:
-            raise DegenerateInput(f"point {a.name} is on link {a.link}, which is not a binary link")
-        if a.base not in link.joints:
-            raise DegenerateInput(f"point {a.name} is measured from {a.base}, which is not a joint of "
-                                  f"link {link.number}")
-        points.append(_Point(a, link))
-    return _Crank(tip, pivots[0], crank), tuple(dyads), tuple(points)
-
-
-def solving_order(m: Mechanism) -> tuple[str, ...]:
-    """The joints in the order the chain is solved (crank tip first), then the points fixed to links."""
-    crank, dyads, points = _order(m)
-    return (crank.joint,) + tuple(d.joint for d in dyads) + tuple(p.point.name for p in points)
-
-
-# -- results ----------------------------------------------------------------------------------------
-
-def _readonly(a: np.ndarray) -> np.ndarray:
-    a.flags.writeable = False
-    return a
-
-
-@dataclass(frozen=True)
-class ChainPoint:
-    """One crank angle of a :class:`ChainState`, as plain floats (no arrays, no Vec)."""
-
-    positions: Mapping[str, tuple[float, float]]
-    velocities: Mapping[str, tuple[float, float]]
-    angular: Mapping[int, float]
-    conditions: Mapping[str, float]
-    assembles: bool
-    accelerations: Mapping[str, tuple[float, float]] = field(default_factory=lambda: MappingProxyType({}))
-    angular_acceleration: Mapping[int, float] = field(default_factory=lambda: MappingProxyType({}))
-
-
-@dataclass(frozen=True, eq=False)
-class ChainState:
-    """Positions, velocities, accelerations and link angular velocities and accelerations of a dyad
-    chain over a set of crank angles.
-
-    Attributes
-    ----------
-    positions, velocities, accelerations : mapping of name -> (x array, y array)
-        Every fixed pivot, joint and point fixed to a link (m, m/s, m/s^2).
-    angular : mapping of link number -> array
-        Every link's angular velocity (rad/s, CCW positive); the crank's is the input omega, slider
-        blocks translate (0).
-    angular_acceleration : mapping of link number -> array
-        Every link's angular acceleration (rad/s^2, CCW positive); the crank's is the input alpha,
-        slider blocks 0.
-    conditions : mapping of joint -> array
-        Sine of the angle between the velocity trial lines of each joint found by a dyad (0 at a
-        toggle or lock, where its velocity is NaN).
-    assembles : bool array
-        True where every dyad closes.
-    order : tuple of str
-        The joints in the order they were solved, then the points fixed to links.
-    """
-
-    positions: Mapping[str, tuple[np.ndarray, np.ndarray]]
-    velocities: Mapping[str, tuple[np.ndarray, np.ndarray]]
-    angular: Mapping[int, np.ndarray]
-    conditions: Mapping[str, np.ndarray]
-    assembles: np.ndarray
-    order: tuple[str, ...] = field(default=())
-    accelerations: Mapping[str, tuple[np.ndarray, np.ndarray]] = field(
-        default_factory=lambda: MappingProxyType({}))
-    angular_acceleration: Mapping[int, np.ndarray] = field(default_factory=lambda: MappingProxyType({}))
-
-    @property
-    def shape(self) -> tuple[int, ...]:
-        return self.assembles.shape
-
-    def at(self, index=()) -> ChainPoint:
-        """Element ``index`` (an int or a tuple; ``()`` for a scalar crank angle) as plain floats."""
-        def xy(p):
-            return float(p[0][index]), float(p[1][index])
-        return ChainPoint(
-            positions=MappingProxyType({n: xy(p) for n, p in self.positions.items()}),
-            velocities=MappingProxyType({n: xy(v) for n, v in self.velocities.items()}),
-            angular=MappingProxyType({n: float(w[index]) for n, w in self.angular.items()}),
-            conditions=MappingProxyType({n: float(c[index]) for n, c in self.conditions.items()}),
-            assembles=bool(self.assembles[index]),
-            accelerations=MappingProxyType({n: xy(a) for n, a in self.accelerations.items()}),
-            angular_acceleration=MappingProxyType(
-                {n: float(a[index]) for n, a in self.angular_acceleration.items()}))
-
-
-# -- the solution -----------------------------------------------------------------------------------
 
 def _snap(f: np.ndarray, tol: float, ok: np.ndarray, tangent: np.ndarray) -> np.ndarray:
     """Three-way decision on a gap factor f (which must be >= 0 for the dyad to close): f < -tol apart
@@ -278,20 +74,19 @@ def _snap(f: np.ndarray, tol: float, ok: np.ndarray, tangent: np.ndarray) -> np.
 
 
 #: Crank angles solved per chunk, so the chain's many temporaries stay in cache (measured on the
-#: toggle linkage: 2**12 .. 2**14 within ~20 % of each other; unchunked 1e6-angle arrays about twice
-#: as slow).
-CHUNK = 2**13
 
 
-def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
+def chain_solution(m: Mechanism, theta, omega, alpha=0.0, *, chunk: int | None = None) -> ChainState:
     """Solve the mechanism ``m`` (a crank followed by dyads) at crank angle(s) ``theta`` (rad, direction
     pivot -> tip, CCW from +x) turning at ``omega`` (rad/s, CCW positive) with angular acceleration
-    ``alpha`` (rad/s^2, CCW positive; default 0, constant speed).
+    ``alpha`` (rad/s^2, CCW positive; default 0, constant speed).  ``chunk``, if given, is how many
+    angles go through the loop at a time (the sweep's choice, to keep the temporaries in cache; the
+    numbers are the same); None: all at once.
 
     Raises DegenerateInput when the mechanism is not a crank followed by RRR and RRP dyads (it says
     which joint cannot be solved).
     """
-    crank, dyads, points = _order(m)
+    crank, dyads, points = chain_plan(m)
     th, w1, a1 = np.broadcast_arrays(*(np.asarray(v, dtype=np.float64) for v in (theta, omega, alpha)))
     shape = th.shape
     th, w1, a1 = (np.ascontiguousarray(v).reshape(-1) for v in (th, w1, a1))
@@ -300,27 +95,28 @@ def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
               default=0.0)
     tol = snap_tolerance(m.size, far)     # the one scene size, plus the rounding of far coordinates
 
-    out: dict[str, dict] | None = None
-    ok_all = np.empty(n, dtype=bool)
-    for i in range(0, max(n, 1), CHUNK):
-        j = min(i + CHUNK, n)
+    out: dict[str, dict] = {}
+    ok = np.empty(n, dtype=bool)
+    step = chunk or max(n, 1)
+    for i in range(0, max(n, 1), step):
+        j = min(i + step, n)
         res = _solve(m, crank, dyads, points, th[i:j], w1[i:j], a1[i:j], tol)
-        if out is None:   # the names are known after the first chunk: allocate the outputs
-            out = {kind: {name: ((np.empty(n), np.empty(n)) if kind in _VECTORS else np.empty(n))
-                          for name in res[kind]} for kind in _KINDS}
-        for kind in _KINDS:
+        if not out:   # the names are known after the first piece: the outputs, arrays of their own
+            out = {kind: {name: ((np.empty(n), np.empty(n)) if kind in VECTORS else np.empty(n))
+                          for name in res[kind]} for kind in KINDS}
+        for kind in KINDS:
             for name, v in res[kind].items():
-                if kind in _VECTORS:
+                if kind in VECTORS:
                     out[kind][name][0][i:j] = v[0]
                     out[kind][name][1][i:j] = v[1]
                 else:
                     out[kind][name][i:j] = v
-        ok_all[i:j] = res["ok"]
+        ok[i:j] = res["ok"]
 
     # where any dyad fails the mechanism has no configuration: NaN for everything that moves
-    if not ok_all.all():
-        bad = ~ok_all
-        for kind in _VECTORS:
+    if not ok.all():
+        bad = ~ok
+        for kind in VECTORS:
             for name, (x, y) in out[kind].items():
                 if name not in m.ground:
                     x[bad] = np.nan
@@ -332,35 +128,13 @@ def chain_solution(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
             for number, w in out[kind].items():
                 if number not in fixed:
                     w[bad] = np.nan
-
-    def freeze(a: np.ndarray) -> np.ndarray:
-        return _readonly(a.reshape(shape))
-
-    def vectors(kind):
-        return MappingProxyType({name: (freeze(x), freeze(y)) for name, (x, y) in out[kind].items()})
-
-    def scalars(kind, key=None):
-        items = out[kind].items() if key is None else sorted(out[kind].items(), key=key)
-        return MappingProxyType({name: freeze(v) for name, v in items})
-
-    return ChainState(
-        positions=vectors("positions"),
-        velocities=vectors("velocities"),
-        angular=scalars("angular", key=lambda kv: kv[0]),
-        conditions=scalars("conditions"),
-        assembles=_readonly(ok_all.reshape(shape)),
-        order=(crank.joint,) + tuple(d.joint for d in dyads) + tuple(p.point.name for p in points),
-        accelerations=vectors("accelerations"),
-        angular_acceleration=scalars("angular_acceleration", key=lambda kv: kv[0]))
+    order = (crank.joint,) + tuple(d.joint for d in dyads) + tuple(p.point.name for p in points)
+    return chain_state(out, ok, order, shape)
 
 
-_VECTORS = ("positions", "velocities", "accelerations")
-_KINDS = _VECTORS + ("angular", "angular_acceleration", "conditions")
-
-
-def _solve(m: Mechanism, crank: _Crank, dyads, points, th: np.ndarray, w1: np.ndarray, a1: np.ndarray,
+def _solve(m: Mechanism, crank: CrankStep, dyads, points, th: np.ndarray, w1: np.ndarray, a1: np.ndarray,
            tol: float) -> dict:
-    """One chunk of :func:`chain_solution` (1-D arrays); fixed pivots as plain floats."""
+    """:func:`chain_solution` at the angles ``th`` (1-D arrays); fixed pivots as plain floats."""
     k = th.size
     pos: dict[str, tuple] = {}
     vel: dict[str, tuple] = {}
@@ -386,7 +160,7 @@ def _solve(m: Mechanism, crank: _Crank, dyads, points, th: np.ndarray, w1: np.nd
 
         for d in dyads:
             tangent = np.zeros(k, dtype=bool)
-            if isinstance(d, _RRR):
+            if isinstance(d, RRRDyad):
                 (Px, Py), (Qx, Qy) = pos[d.p], pos[d.q]
                 a, b = d.link_p.length, d.link_q.length
                 # Position, angle form.  In the triangle P Q J with sides a = |PJ|, b = |QJ|,
