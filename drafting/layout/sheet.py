@@ -7,7 +7,9 @@ sets the vector equations, the numbered steps (their values written in the scene
 paper lengths from the scales the drawing chose), the results table and the notes, packs all of it onto
 as few pages as hold it legibly (:mod:`drafting.layout.pages`) and fills in every page's title block (sheet
 n/m).  Each page is a :class:`Sheet`: the paper, a tuple of drawing commands in paper mm (y down) and
-named regions, so tests can check what is drawn without rendering.  :mod:`drafting.backends.svg` renders it.
+named regions, so tests can check what is drawn without rendering.  A Sheet is a plain value: it
+neither renders nor saves itself -- :mod:`drafting.backends.svg` writes it as SVG, :mod:`drafting.backends.files`
+saves it, and :class:`drafting.backends.public_sheet.Sheet` is the one users hold, which does both.
 
 ``compose_sheet`` is the one-page form: it returns the single sheet, and raises :class:`LayoutError`
 naming the number of sheets when the content needs more than one.
@@ -120,7 +122,7 @@ def _units_from_text(text: str) -> Units:
 
 @dataclass(frozen=True)
 class Sheet:
-    """A composed page: paper, drawing commands (paper mm, y down) and named regions."""
+    """A composed page: paper, drawing commands (paper mm, y down) and named regions (a plain value)."""
 
     paper: Paper
     commands: tuple[Command, ...]
@@ -144,35 +146,6 @@ class Sheet:
 
     def texts(self) -> tuple[Text, ...]:
         return tuple(c for c in self.commands if isinstance(c, Text))
-
-    def svg(self) -> str:
-        """The page as an SVG document (true size in mm)."""
-        from ..backends.svg import sheet_to_svg
-        return sheet_to_svg(self)
-
-    def svg_inline(self, width: str = "100%") -> str:
-        """The page as an SVG element that scales to ``width`` (for HTML and notebooks)."""
-        text = self.svg()
-        head, rest = text.split("<svg", 1)
-        tag, body = rest.split(">", 1)
-        tag = tag.replace(f'width="{self.paper.width:g}mm"', f'width="{width}"')
-        tag = tag.replace(f'height="{self.paper.height:g}mm"', 'height="auto"')
-        return f"<svg{tag}>{body}"
-
-    def save(self, path, *, dpi: float | None = None):
-        """Write this page as SVG, PDF or PNG (the suffix decides), atomically; returns the Path."""
-        from pathlib import Path as _Path
-        from ..backends.files import PNG_DPI, ExportError, write_sheets
-        path = _Path(path)
-        fmt = path.suffix.lower().lstrip(".")
-        if fmt not in ("svg", "pdf", "png"):
-            raise ExportError(f"Cannot write {path}: the suffix must be .svg, .pdf or .png")
-        (written,) = write_sheets([self], path.parent if str(path.parent) else _Path("."), path.stem, [fmt],
-                                  dpi=dpi or PNG_DPI)
-        return written
-
-    def _repr_svg_(self) -> str:
-        return self.svg_inline()
 
     def named(self, prefix: str) -> tuple[Command, ...]:
         return tuple(c for c in self.commands if c.name.startswith(prefix))
