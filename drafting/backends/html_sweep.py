@@ -44,7 +44,7 @@ from ..layout.formats import per_si, symbol_of
 from .html_page import markup_html
 from ..layout.text import text_at, viewport_header
 from ..render.paper import Circle, Command, Line, Paper, Polygon, Polyline, Rect, Rectangle
-from ..layout.scales import ISO_5455, ratio_factor, ratio_text
+from ..render.scales import ISO_5455, ratio_factor, ratio_text
 from ..layout.sheet import Sheet
 from ..render.style import LABEL, measure, rich
 from .svg import sheet_to_svg

@@ -16,7 +16,7 @@ from constructions.record import Chart
 
 from ..render.drawing import panel_drawer
 from ..render.paper import Command, Line, Polyline, Rect, Rectangle, Text
-from .scales import nice_step, number_text
+from ..render.scales import nice_step, number_text
 from ..render.style import MIN_TEXT, measure, plain, rich
 
 SERIES_STYLES = ("series 1", "series 2", "series 3", "series 4")

@@ -16,7 +16,7 @@ from typing import Callable, Mapping
 
 from constructions.record import Value
 
-from .scales import number_text
+from ..render.scales import number_text
 
 SI_UNITS: dict[str, str] = {
     "length": "m", "velocity": "m/s", "acceleration": "m/s^2", "angular velocity": "rad/s",

@@ -34,7 +34,7 @@ from typing import Callable, Sequence
 from . import text as L
 from ..render.errors import LayoutError
 from ..render.paper import Paper, Rect
-from .scales import ratio_factor
+from ..render.scales import ratio_factor
 from .panels import Panel, SpacePanel, VectorPanel
 
 TEXT_COL_MIN = 120.0

@@ -30,7 +30,7 @@ from ..render.errors import LayoutError
 from .formats import DiagramScale, per_si, symbol_of
 from .labels import place_labels
 from ..render.paper import Command, Rect, Rectangle
-from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
+from ..render.scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
 from ..render.style import LABEL
 from ..render.transform import Transform
 

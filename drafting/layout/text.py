@@ -21,7 +21,7 @@ from constructions.record import Term, VectorEquation
 
 from ..render.errors import LayoutError  # re-exported: its old home
 from ..render.paper import Command, Line, Rect, Rectangle, Span, Text, translated
-from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text  # noqa: F401 (re-exported)
+from ..render.scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text  # noqa: F401 (re-exported)
 from ..render.style import (HEADING, LABEL, MIN_TEXT, SUB_SHIFT, TITLE, Extent, font_metrics, measure, plain,
                     rich, sub_size, text_width)
 from ..render.transform import Transform  # noqa: F401 (re-exported: its old home)
