@@ -31,7 +31,8 @@ import itertools
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
-from . import text as L
+from .flow import flow, flow_shrinking, FlowText, page_slot, slot_page, TEXT_SIZES
+from .items import Section
 from ..render.errors import LayoutError
 from ..render.paper import Paper, Rect
 from ..render.scales import ratio_factor
@@ -484,23 +485,23 @@ class Document:
 
     def empty_columns(self) -> int:
         """Pages whose text slots the text never reached (room left blank)."""
-        used = {L.slot_page(slot) for slot in self.text}
+        used = {slot_page(slot) for slot in self.text}
         return sum(1 for i, pg in enumerate(self.pages) if pg.text_slots and str(i) not in used)
 
 
 def slots_of(pages: Sequence[PagePlan]) -> list[tuple[str, Rect]]:
-    return [(L.page_slot(i, name), r) for i, pg in enumerate(pages) for name, r in pg.text_slots
+    return [(page_slot(i, name), r) for i, pg in enumerate(pages) for name, r in pg.text_slots
             if r.w > 20 and r.h > 10]
 
 
 def _flow(sections, pages, cache) -> tuple[list, float] | None:
     """The text set into the pages' slots (remembered by the slots' geometry: many plans share it)."""
     if not sections:
-        return [], L.TEXT_SIZES[0]
+        return [], TEXT_SIZES[0]
     slots = slots_of(pages)
     key = ("flow", tuple((n, round(r.x, 6), round(r.y, 6), round(r.w, 6), round(r.h, 6)) for n, r in slots))
     if key not in cache:
-        cache[key] = L.flow_shrinking(sections, slots, cache=cache, plan=True)
+        cache[key] = flow_shrinking(sections, slots, cache=cache, plan=True)
     return cache[key]
 
 
@@ -563,7 +564,7 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     reference.)"""
     panels = list(panels)
     cache = {} if cache is None else cache
-    sections = L.FlowText(sections)             # flowed once per plan tried: made ready once
+    sections = FlowText(sections)             # flowed once per plan tried: made ready once
     plans = _GroupPlans(paper, tb_height)
     # one page
     def one_page(plan: PagePlan) -> Document | None:
@@ -660,7 +661,7 @@ def _best_possible(plans: _GroupPlans, groups, mode: str, has_text: bool) -> tup
     best_quality = (round(min(space, 1.0), 9), round(min(free), 6) if free else 0.0, round(space, 9),
                     round(sum(free), 6))
     pages = m + (1 if has_text and mode == "none" else 0)
-    return (-pages, -m, True) + best_quality + (L.TEXT_SIZES[0], 0, -m)
+    return (-pages, -m, True) + best_quality + (TEXT_SIZES[0], 0, -m)
 
 
 def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | None:
@@ -679,7 +680,7 @@ def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | N
         choices.append(opts)
     if not sections:
         pages = [max(c, key=lambda p: p.quality()) for c in choices]
-        return Document(pages, [], L.TEXT_SIZES[0])
+        return Document(pages, [], TEXT_SIZES[0])
     pages = [c[0] for c in choices]
     extra = 0
     while True:
@@ -703,7 +704,7 @@ def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | N
                 pages, got = cand, g2
                 break
     # a diagram page whose text slots stayed empty draws its diagrams over the whole page instead
-    used = {L.slot_page(slot) for slot in got[0]}
+    used = {slot_page(slot) for slot in got[0]}
     for i, g in enumerate(groups):
         if str(i) not in used and pages[i].text_slots:
             alt = plans.diagrams(g)
@@ -733,6 +734,6 @@ def _check_blocks(paper, panels, sections, tb_height, cache) -> None:
         slots = [(n, r) for n, r in tp.text_slots if r.w > 20 and r.h > 10]
         for sec in sections:
             for item in sec.items:
-                if L.flow([L.Section("", (item,))], slots[:1], L.TEXT_SIZES[-1], cache, plan=True) is None:
+                if flow([Section("", (item,))], slots[:1], TEXT_SIZES[-1], cache, plan=True) is None:
                     raise LayoutError(f"a text block ({type(item).__name__}) does not fit an empty "
                                       f"{paper.name} {paper.orientation} sheet even with 2.5 mm lettering")

@@ -23,7 +23,7 @@ from typing import Sequence
 
 from constructions.record import Arrow, Chart, Entity, Point, Role, ScaleBar
 
-from . import text as L
+from .header import Header, header_height, viewport_header
 from .chart import CHART_MIN, AxisUnits, draw_chart
 from .diagram import Drawing, TextFn, draw_entities, model_points
 from ..render.errors import LayoutError
@@ -57,7 +57,7 @@ class PanelCache:
         got = self.headers.get(key)
         if got is None:
             try:
-                got = L.header_height(width, heading, ppu, unit)
+                got = header_height(width, heading, ppu, unit)
             except LayoutError:
                 got = math.inf
             self.headers[key] = got
@@ -173,7 +173,7 @@ class Panel:
         """The extent of the diagram's own figure (model points) on paper at ``rung``, mm."""
         return (0.0, 0.0)
 
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
+    def header(self, rung: int, rect: Rect, region: str) -> Header:
         """The panel's heading (with its scale and scale bar where it has one) at the top of ``rect``."""
         raise NotImplementedError
 
@@ -183,11 +183,11 @@ class Panel:
             return _empty_frame(self.key, header, rect), None
         return self.draw(rung, rect, region, header)
 
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header) -> tuple[list[Command], Transform | None]:
+    def draw(self, rung: int, rect: Rect, region: str, header: Header) -> tuple[list[Command], Transform | None]:
         raise NotImplementedError
 
 
-def _empty_frame(key: str, header: L.Header, rect: Rect) -> list[Command]:
+def _empty_frame(key: str, header: Header, rect: Rect) -> list[Command]:
     """The header over an empty framed drawing area (where a student draws)."""
     plot = Rect.from_edges(rect.x + 2.0, rect.y + header.height + 1.0, rect.right - 2.0, rect.bottom - 2.0)
     cmds = list(header.commands)
@@ -202,7 +202,7 @@ def _fit_drawing(bb: Rect | None) -> Size:
     return w, h
 
 
-def _render_drawing(fig: Figure, k: float, header: L.Header, rect: Rect, region: str,
+def _render_drawing(fig: Figure, k: float, header: Header, rect: Rect, region: str,
                     heading: str) -> tuple[list[Command], Transform]:
     plot = Rect.from_edges(rect.x + 1.0, rect.y + header.height, rect.right - 1.0, rect.bottom - 1.0)
     d, bb = fig.drawing(k), fig.bbox(k)               # (the extent the packer measured at this scale)
@@ -288,10 +288,10 @@ class SpacePanel(Panel):
         k = self.k(rung)
         return self.figure.extent[0] * k, self.figure.extent[1] * k
 
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
-        return L.viewport_header(rect, self.heading(rung), self.ppu(rung), self.unit, region=region, name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> Header:
+        return viewport_header(rect, self.heading(rung), self.ppu(rung), self.unit, region=region, name=self.key)
 
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
+    def draw(self, rung: int, rect: Rect, region: str, header: Header):
         return _render_drawing(self.figure, self.k(rung), header, rect, region,
                                self.heading(rung))
 
@@ -373,10 +373,10 @@ class VectorPanel(Panel):
     def known_mm(self, rung: int) -> float:
         return self.known * self.k(rung)
 
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
-        return L.viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region, name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> Header:
+        return viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region, name=self.key)
 
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
+    def draw(self, rung: int, rect: Rect, region: str, header: Header):
         return _render_drawing(self.figure, self.k(rung), header, rect, region, self.title)
 
 
@@ -405,10 +405,10 @@ class ChartPanel(Panel):
     def min_width(self) -> float:
         return CHART_MIN[0]
 
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
-        return L.viewport_header(rect, self.title, None, "", region=region, name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> Header:
+        return viewport_header(rect, self.title, None, "", region=region, name=self.key)
 
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
+    def draw(self, rung: int, rect: Rect, region: str, header: Header):
         cmds: list[Command] = list(header.commands)
         area = Rect.from_edges(rect.x + 2.0, rect.y + header.height, rect.right - 2.0, rect.bottom - 2.0)
         n = len(self.charts)

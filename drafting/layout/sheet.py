@@ -30,7 +30,9 @@ from typing import Mapping, Sequence
 
 from constructions.record import Construction, Entity, ScaleBar, Step
 
-from . import text as L
+from .flow import flow_shrinking, slot_page, slot_region, TEXT_SIZES
+from .items import EquationItem, Item, MARK_NO, MARK_YES, Paragraph, Section, TableItem
+from .title_block import title_block, title_block_height
 from ..render.errors import LayoutError
 from .formats import DiagramScale, SheetFormatter, ValueHook
 from .pages import Document, PagePlan, plan_document
@@ -171,22 +173,22 @@ def step_text(step: Step, fmt: SheetFormatter) -> str:
 
 
 def _sections(construction: Construction, results: Sequence[ResultRow], notes: Sequence[str],
-              fmt: SheetFormatter, given: Sequence[str] = ()) -> list[L.Section]:
-    secs: list[L.Section] = []
+              fmt: SheetFormatter, given: Sequence[str] = ()) -> list[Section]:
+    secs: list[Section] = []
     if given:
-        secs.append(L.Section("Given", tuple(
-            L.Paragraph(t, label="\u2013", label_chars="\u2013", name=f"given {i + 1}") for i, t in enumerate(given))))
+        secs.append(Section("Given", tuple(
+            Paragraph(t, label="\u2013", label_chars="\u2013", name=f"given {i + 1}") for i, t in enumerate(given))))
     eqs = construction.equations
     if eqs:
-        items: list[L.Item] = [L.EquationItem(eq, name=f"equation {i + 1}") for i, eq in enumerate(eqs)]
-        items.append(L.Paragraph(f"Marks over each vector: magnitude, then direction; "
-                                 f"{L.MARK_YES} known, {L.MARK_NO} unknown.", name="equation legend"))
-        secs.append(L.Section("Vector equations", tuple(items)))
+        items: list[Item] = [EquationItem(eq, name=f"equation {i + 1}") for i, eq in enumerate(eqs)]
+        items.append(Paragraph(f"Marks over each vector: magnitude, then direction; "
+                                 f"{MARK_YES} known, {MARK_NO} unknown.", name="equation legend"))
+        secs.append(Section("Vector equations", tuple(items)))
     texts = [t for t in (step_text(s, fmt).strip() for s in construction.steps) if t]
     if texts:
         n = len(texts)
-        secs.append(L.Section("Construction", tuple(
-            L.Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}")
+        secs.append(Section("Construction", tuple(
+            Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}")
             for i, t in enumerate(texts))))
     if results:
         has_note = any(r.note for r in results)
@@ -195,12 +197,12 @@ def _sections(construction: Construction, results: Sequence[ResultRow], notes: S
         align = ("l", "r", "r", "r", "l")
         # a column with nothing in it is not printed (a problem sheet leaves only the answer's column)
         keep = [i for i in range(5) if i == 0 or any(row[i] for row in rows)]
-        secs.append(L.Section("Results", (L.TableItem(
+        secs.append(Section("Results", (TableItem(
             tuple(header[i] for i in keep), tuple(tuple(row[i] for i in keep) for row in rows),
             tuple(align[i] for i in keep), wrap_last=has_note),)))
     if notes:
-        secs.append(L.Section("Notes", tuple(
-            L.Paragraph(t, label="\u2013", label_chars="\u2013", name=f"note {i + 1}") for i, t in enumerate(notes))))
+        secs.append(Section("Notes", tuple(
+            Paragraph(t, label="\u2013", label_chars="\u2013", name=f"note {i + 1}") for i, t in enumerate(notes))))
     return secs
 
 
@@ -295,7 +297,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
         probe_text = "; ".join(t for t in (_probe_scale(p) for p in on_page) if t) or "\u2014 (no drawing on this sheet)"
         key = (round(width, 6), probe_text)
         if key not in tb_memo:
-            tb_memo[key] = L.title_block_height(width, info.title, tb_fields(probe_text, 10, 10))
+            tb_memo[key] = title_block_height(width, info.title, tb_fields(probe_text, 10, 10))
         return tb_memo[key]
 
     text_cache: dict = {}
@@ -324,8 +326,8 @@ def _reflow(sections, doc: Document, cache) -> tuple[list, float]:
     if not sections:
         return [], doc.size
     slots = slots_of(doc.pages)
-    sizes = [s for s in L.TEXT_SIZES if s <= doc.size + 1e-9]
-    got = L.flow_shrinking(sections, slots, sizes=sizes, cache=cache, tagged=True)
+    sizes = [s for s in TEXT_SIZES if s <= doc.size + 1e-9]
+    got = flow_shrinking(sections, slots, sizes=sizes, cache=cache, tagged=True)
     if got is None:
         raise LayoutError("the construction's text with its values does not fit the slots planned for it")
     return got
@@ -338,14 +340,14 @@ def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, t
     mine = []
     used = set()
     for slot, c in text_cmds:
-        if L.slot_page(slot) == page:
-            used.add(L.slot_region(slot))
+        if slot_page(slot) == page:
+            used.add(slot_region(slot))
             mine.append(c)                       # (its region is the slot's, without the page)
     n_of_m = number or (index + 1, m)
     in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
     scale_list = [(p.key, p.scale_text(r)) for p, r, _ in in_order if p.scale_text(r)]
     scale_text = "; ".join(t for _, t in scale_list) or "\u2014 (no drawing on this sheet)"
-    tb = L.title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
+    tb = title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
     regions: dict[str, Rect] = {"page": pp.page, "frame": frame, "title_block": tb.rect}
     cmds: list[Command] = [Rectangle(frame.x, frame.y, frame.w, frame.h, "frame", "frame")]
     rects = {p.key: rc for p, _, rc in pg.panels}
