@@ -35,7 +35,8 @@ from .items import EquationItem, Item, MARK_NO, MARK_YES, Paragraph, Section, Ta
 from .title_block import title_block, title_block_height
 from ..render.errors import LayoutError
 from .formats import DiagramScale, SheetFormatter, ValueHook
-from .pages import Document, PagePlan, plan_document
+from .pages import Document, plan_document, slots_of
+from .page_plans import PagePlan
 from ..render.paper import Command, Line, Paper, Rect, Rectangle, Text, paper as make_paper
 from ..render.style import LABEL
 from ..render.transform import Transform
@@ -322,7 +323,6 @@ def _probe_scale(p: Panel) -> str:
 
 def _reflow(sections, doc: Document, cache) -> tuple[list, float]:
     """The text with its real values, set into the document's slots at the planned size (or smaller)."""
-    from .pages import slots_of
     if not sections:
         return [], doc.size
     slots = slots_of(doc.pages)
