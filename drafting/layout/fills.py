@@ -13,7 +13,8 @@ from dataclasses import dataclass
 from typing import Sequence
 
 from ..render.scales import ratio_factor
-from .panels import Panel, SpacePanel, VectorPanel
+from .panel import Panel
+from .panels import SpacePanel, VectorPanel
 
 
 @dataclass

@@ -15,7 +15,8 @@ from typing import Callable, Sequence
 
 from ..render.paper import Paper, Rect
 from .fills import Fill, arrangements, fill, min_width, quality
-from .panels import Panel, SpacePanel
+from .panel import Panel
+from .panels import SpacePanel
 
 TEXT_COL_MIN = 120.0
 SPACE_MIN_H = 40.0

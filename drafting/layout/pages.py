@@ -30,7 +30,8 @@ from .flow import FlowText, TEXT_SIZES, flow, flow_shrinking, page_slot, slot_pa
 from .fills import quality, smallest_fill
 from .items import Section
 from .page_plans import PagePlan, TbHeight, diagram_page, text_page, text_page_options
-from .panels import Panel, SpacePanel, VectorPanel
+from .panel import Panel
+from .panels import SpacePanel, VectorPanel
 
 COMFORTABLE_LETTERING = 3.0
 """Lettering below this is taken only when nothing else fits."""

@@ -41,7 +41,8 @@ from ..render.paper import Command, Line, Paper, Rect, Rectangle, Text, paper as
 from ..render.style import LABEL
 from ..render.transform import Transform
 from ..scene.unitset import Units
-from .panels import Panel, PanelCache, VectorPanel, panels_for
+from .panel import Panel, PanelCache
+from .panels import VectorPanel, panels_for
 
 __all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheets", "compose_sheet", "LayoutError"]
 
