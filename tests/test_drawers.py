@@ -18,7 +18,8 @@ from constructions.geometry import Vec
 from constructions.record import (AngleMark, Chart, Circle, Construction, Curve, Diagram, Dimension, Entity,
                                   Note, Point, Role, Segment, Series, Step, Value)
 from drafting.render import drawing as D
-from drafting.layout.diagram import draw_entities, drawer, drawer_for, model_points
+from drafting.layout.diagram import draw_entities, model_points
+from drafting.render.drawing import drawer, drawer_for
 from drafting.render.errors import DrawingError, StyleError
 from drafting.render.paper import Circle as CircleCmd, Line, Polygon, Polyline, Rectangle, Text
 from drafting.layout.sheet import SheetInfo, compose_sheets

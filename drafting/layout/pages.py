@@ -26,7 +26,7 @@ from typing import Callable, Sequence
 from ..render.errors import LayoutError
 from ..render.paper import Paper, Rect
 from ..render.scales import ratio_factor
-from .flow import FlowText, TEXT_SIZES, flow, flow_shrinking, page_slot, slot_page
+from .flow import TEXT_SIZES, FlowText, flow, flow_shrinking, page_slot, slot_page
 from .fills import quality, smallest_fill
 from .items import Section
 from .page_plans import PagePlan, TbHeight, diagram_page, text_page, text_page_options

@@ -15,7 +15,8 @@ from constructions.record import Entity, Point
 from ..render.errors import LayoutError
 from ..render.paper import Command, Rect, Rectangle
 from ..render.transform import Transform
-from .diagram import Drawing, TextFn, draw_entities, model_points
+from ..render.drawing import Drawing, TextFn
+from .diagram import draw_entities, model_points
 from .formats import DiagramScale
 from .header import Header, header_height
 from .labels import place_labels

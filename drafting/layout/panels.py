@@ -23,12 +23,12 @@ from typing import Sequence
 
 from constructions.record import Arrow, Chart, Entity, Role, ScaleBar
 
+from ..render.drawing import TextFn, is_panel_entity
 from ..render.paper import Command, Rect
 from ..render.scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
 from ..render.style import LABEL
 from ..scene.unitset import Units
 from .chart import CHART_MIN, AxisUnits, draw_chart
-from .diagram import TextFn
 from .formats import DiagramScale, per_si, symbol_of
 from .header import Header, viewport_header
 from .panel import Figure, Panel, PanelCache, Size, render_drawing
@@ -253,7 +253,6 @@ def _label(kind: str, name: str) -> str:
 def panels_for(construction, units, cache: PanelCache, text: TextFn | None = None) -> list[Panel]:
     """One panel per diagram of ``construction`` (in the order space, velocity, acceleration, force,
     the others as they first appear), and one chart panel per diagram holding charts."""
-    from .diagram import is_panel_entity
     by_diagram: dict = {}
     for e in construction.entities():
         by_diagram.setdefault(e.diagram, []).append(e)

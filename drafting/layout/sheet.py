@@ -30,19 +30,20 @@ from typing import Mapping, Sequence
 
 from constructions.record import Construction, Entity, ScaleBar, Step
 
-from .flow import flow_shrinking, slot_page, slot_region, TEXT_SIZES
-from .items import EquationItem, Item, MARK_NO, MARK_YES, Paragraph, Section, TableItem
-from .title_block import title_block, title_block_height
 from ..render.errors import LayoutError
-from .formats import DiagramScale, SheetFormatter, ValueHook
-from .pages import Document, plan_document, slots_of
-from .page_plans import PagePlan
 from ..render.paper import Command, Line, Paper, Rect, Rectangle, Text, paper as make_paper
 from ..render.style import LABEL
 from ..render.transform import Transform
-from ..scene.unitset import Units
+from ..scene.units import check_unit
+from ..scene.unitset import KEYS, Units
+from .flow import TEXT_SIZES, flow_shrinking, slot_page, slot_region
+from .formats import DiagramScale, SheetFormatter, ValueHook
+from .items import MARK_NO, MARK_YES, EquationItem, Item, Paragraph, Section, TableItem
+from .page_plans import PagePlan
+from .pages import Document, plan_document, slots_of
 from .panel import Panel, PanelCache
 from .panels import VectorPanel, panels_for
+from .title_block import title_block, title_block_height
 
 __all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheets", "compose_sheet", "LayoutError"]
 
@@ -105,8 +106,6 @@ class SheetInfo:
 
 def _units_from_text(text: str) -> Units:
     """Transitional: "m, m/s, rad/s" -> Units (each unit given to the first kind it measures)."""
-    from ..scene.unitset import KEYS
-    from ..scene.units import check_unit
     got: dict[str, str] = {}
     for token in (t.strip() for t in text.replace(";", ",").split(",")):
         if not token:
