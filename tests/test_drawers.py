@@ -19,7 +19,8 @@ from constructions.entities import (AngleMark, Chart, Circle, Curve, Diagram, Di
 from constructions.geometry import Vec
 from constructions.record import Construction, Step, Value
 from drafting.render import drawing as D
-from drafting.layout.diagram import draw_entities, drawer, drawer_for, model_points
+from drafting.layout.diagram import draw_entities, model_points
+from drafting.render.drawing import drawer, drawer_for
 from drafting.render.errors import DrawingError, StyleError
 from drafting.render.paper import Circle as CircleCmd, Line, Polygon, Polyline, Rectangle, Text
 from drafting.layout.sheet import SheetInfo, compose_sheets

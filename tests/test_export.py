@@ -21,7 +21,7 @@ from constructions.entities import Arrow, Diagram, Point, Role, ScaleBar
 from constructions.geometry import Vec
 from constructions.record import Construction
 from drafting.backends import files as export_mod
-from drafting.layout import text as L
+from drafting.layout.scale_bar import scale_bar
 from drafting.backends.files import ExportError, write_sheet
 from drafting.render.paper import Text, paper
 from drafting.layout.sheet import ResultRow, Sheet, SheetInfo, compose_sheet
@@ -42,7 +42,7 @@ def small_sheet(p: str = "A4", orientation: str = "landscape") -> Sheet:
 
 def bar_sheet(length: float = 100.0) -> Sheet:
     """A blank A4 sheet with a single scale bar of ``length`` mm (no lettering, only paths)."""
-    cmds, _ = L.scale_bar(50.0, 50.0, length, length, "mm", name="bar")
+    cmds, _ = scale_bar(50.0, 50.0, length, length, "mm", name="bar")
     return Sheet(paper("A4"), tuple(c for c in cmds if not isinstance(c, Text)))
 
 

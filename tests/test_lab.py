@@ -13,6 +13,7 @@ import pytest
 
 from drafting.app.cli import main
 from drafting.app.lab import BLANK, dimensioned, lab_for, problem_construction
+from drafting.backends.svg import sheet_to_svg
 from drafting.scene.reader import load_scene
 from drafting.study.study import Study
 
@@ -42,15 +43,15 @@ def lab(request):
 
 def test_the_problem_sheet_holds_no_value_of_the_key(lab):
     assert lab.items
-    problem = [t for s in lab.problem for t in svg_texts(s.svg())]
-    worked = [t for s in lab.worked for t in svg_texts(s.svg())]
+    problem = [t for s in lab.problem for t in svg_texts(sheet_to_svg(s))]
+    worked = [t for s in lab.worked for t in svg_texts(sheet_to_svg(s))]
     for item in lab.items:
         assert found(item, worked), f"the search cannot see {item.text} even on the worked sheet"
         assert found(item, problem) == [], (item.name, item.text, found(item, problem))
 
 
 def test_the_problem_sheet_writes_blanks_where_answers_go(lab):
-    texts = [t for s in lab.problem for t in svg_texts(s.svg())]
+    texts = [t for s in lab.problem for t in svg_texts(sheet_to_svg(s))]
     assert any(BLANK in t for t in texts)
     assert any(t.startswith("Find:") or "Find:" in t for t in texts)
 
@@ -90,7 +91,7 @@ def test_polygon_panels_are_empty_and_framed_at_the_worked_scales(lab):
 def test_the_space_diagram_is_dimensioned_and_keeps_only_the_given():
     study = Study(dimensioned(load_scene(ROOT / "gallery" / "notes-velocity-example-1.toml"))).run()
     lab = lab_for(study)
-    texts = [t for s in lab.problem for t in svg_texts(s.svg())]
+    texts = [t for s in lab.problem for t in svg_texts(sheet_to_svg(s))]
     assert "94.00 mm" in texts and "50.00 mm" in texts                  # the links' dimensions
     def space_roles(c):
         return {e.role.value for st in c.steps for e in st.entities if e.diagram.kind == "space"}
@@ -105,7 +106,7 @@ def test_the_key_is_one_page_and_a_csv_with_units(lab):
     assert rows[0][:4] == ["quantity", "kind", "unit", "answer"]
     assert [r[0] for r in rows[1:]] == [i.name for i in lab.items]
     assert all(r[2] or r[1] == "ratio" for r in rows[1:])              # every answer has its unit (a ratio none)
-    key_texts = [t for t in svg_texts(lab.key[0].svg())]
+    key_texts = [t for t in svg_texts(sheet_to_svg(lab.key[0]))]
     for item in lab.items:
         assert any(item.text in t for t in key_texts), item.text
 
@@ -129,7 +130,7 @@ def test_a_scene_that_says_dimensions_false_keeps_its_problem_sheet_undimensione
     assert unsaid.dimensions is None and dimensioned(unsaid).dimensions is True
     scene = load_scene(said)
     assert scene.dimensions is False and dimensioned(scene).dimensions is False
-    texts = [t for s in lab_for(Study(dimensioned(scene)).run()).problem for t in svg_texts(s.svg())]
+    texts = [t for s in lab_for(Study(dimensioned(scene)).run()).problem for t in svg_texts(sheet_to_svg(s))]
     assert "94.00 mm" not in texts and "50.00 mm" not in texts
     with pytest.raises(Exception, match="drawing.dimensions"):
         bad = tmp_path / "bad.toml"

@@ -346,7 +346,7 @@ def test_a_drawing_covers_its_model_points_so_the_packer_may_skip_a_scale_undraw
     held for every drawing of every gallery scene."""
     from pathlib import Path
 
-    from drafting.layout import panels as viewport
+    from drafting.layout import panel as viewport
     from drafting.scene.reader import load_scene
     from drafting.study.study import Study
     from drafting.study.worked import sheets_for
@@ -356,7 +356,7 @@ def test_a_drawing_covers_its_model_points_so_the_packer_may_skip_a_scale_undraw
     def checked(self, k):
         got = bbox(self, k)
         seen.append(k)
-        assert viewport._fit_drawing(got)[0] >= self.least_width(k) + 1e-3 - 1e-9
+        assert viewport.fit_drawing(got)[0] >= self.least_width(k) + 1e-3 - 1e-9
         return got
     monkeypatch.setattr(viewport.Figure, "bbox", checked)
     gallery = Path(__file__).resolve().parent.parent / "gallery"

@@ -19,8 +19,7 @@ from constructions.entities import (Arc, Arrow, Bar, Block, Diagram, Guide, Pivo
                                     Polygon as PolygonEntity, Role, ScaleBar, TrialLine)
 from constructions.geometry import Vec
 from constructions.record import Construction, Term, VectorEquation
-from drafting.layout import text as L
-from drafting.layout.text import LayoutError
+from drafting.render.errors import LayoutError
 from drafting.render.paper import Line, Polygon, Rectangle
 from drafting.layout.sheet import ResultRow, SheetInfo, compose_sheet, compose_sheets
 from drafting.render.style import MIN_TEXT, dashed, long_dash_dot, style
@@ -212,7 +211,7 @@ def test_every_text_is_at_least_2_5_mm(a4, a3):
         for el in root.iter():
             if el.get("font-size") is not None:
                 assert float(el.get("font-size")) >= MIN_TEXT - 1e-9
-    assert L.MIN_TEXT == 2.5
+    assert MIN_TEXT == 2.5
 
 
 def test_no_text_overlaps_and_none_leaves_its_region(a4, a3):

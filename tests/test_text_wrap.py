@@ -16,7 +16,7 @@ words = st.lists(st.sampled_from(["V_CB", "the", "polygon", "ω_2", "=", "197.4"
 def test_the_two_greedy_wraps_agree(ws, width, size):
     """wrap_words takes its breaks from the word table and falls back to splitting a word only when one is
     longer than the line; the splitting wrap, on text where nothing needs splitting, breaks the same."""
-    from drafting.layout.text import _breaks, _word_columns, _words, _wrap_splitting, wrap_words
+    from drafting.layout.wrap import _breaks, _word_columns, _words, _wrap_splitting, wrap_words
     from drafting.render.style import text_width
     text = " ".join(ws)
     split = _breaks(_word_columns(text, size)[0], width, text_width(" ", size)) is None
@@ -27,7 +27,7 @@ def test_the_two_greedy_wraps_agree(ws, width, size):
 def assert_height_is_laid_out_height(item, width: float, size: float) -> None:
     """The height planning reads without commands is the laid-out height bit for bit, and an item too
     wide to lay out is too wide to measure."""
-    from drafting.layout.text import TooWide
+    from drafting.layout.items import TooWide
     try:
         placed = item.layout(width, size)
     except TooWide:
@@ -41,7 +41,7 @@ def assert_height_is_laid_out_height(item, width: float, size: float) -> None:
 @given(words, st.floats(20.0, 160.0), st.sampled_from([2.5, 3.0, 3.25, 3.5]), st.sampled_from(["", "3.", "12."]))
 def test_a_paragraph_s_height_without_commands_is_its_laid_out_height(ws, width, size, label):
     """Planning asks only how tall an item is: the word-table path gives the laid-out height exactly."""
-    from drafting.layout.text import Paragraph
+    from drafting.layout.items import Paragraph
     assert_height_is_laid_out_height(Paragraph(" ".join(ws), label=label, label_chars=label), width, size)
 
 
@@ -57,7 +57,7 @@ cell = st.lists(st.sampled_from(["V_CB", "197.4", "mm/s", "0.0%", "ω_2", "perpe
 def test_a_table_s_height_without_commands_is_its_laid_out_height(table, width, size):
     """The results table's height row by row from the word table is its laid-out height exactly, wrapped
     last column included."""
-    from drafting.layout.text import TableItem
+    from drafting.layout.items import TableItem
     header, rows, wrap_last = table
     assert_height_is_laid_out_height(
         TableItem(tuple(header), tuple(tuple(r) for r in rows), ("l",) + ("r",) * (len(header) - 1), wrap_last),
@@ -71,5 +71,5 @@ def test_a_table_s_height_without_commands_is_its_laid_out_height(table, width, 
 def test_a_scale_bar_s_bottom_without_its_plan_is_its_laid_out_bottom(x, top, length, value, unit):
     """A viewport header is planned with the bar's bottom alone (the same for every length and value):
     it is the bottom of the bar's full plan, bit for bit."""
-    from drafting.layout.text import _bar_bottom, _bar_plan
-    assert _bar_bottom(top, unit) == _bar_plan(x, top, length, value, unit).box.bottom
+    from drafting.layout.scale_bar import _bar_plan, bar_bottom
+    assert bar_bottom(top, unit) == _bar_plan(x, top, length, value, unit).box.bottom

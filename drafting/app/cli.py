@@ -118,7 +118,7 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
     (its results and the files written).  ``lab``: the problem sheet and the answer key beside the worked
     solution (drafting.app.lab), all written together."""
     from ..backends.files import ExportError, write_sheets
-    from ..layout.text import LayoutError
+    from ..render.errors import LayoutError
     try:
         study = _study(path, paper)
         if lab:

@@ -34,7 +34,7 @@ from constructions.record import Construction, Step, StepKind
 
 from .answers import KeyItem, key_items
 from ..render.errors import LayoutError
-from ..layout.scales import ratio_factor
+from ..render.scales import ratio_factor
 from ..layout.sheet import ResultRow, Sheet, SheetInfo, compose_sheets, sheet_date
 from ..study.study import Study
 from ..layout.panels import SpacePanel, VectorPanel

@@ -2,7 +2,8 @@
 
 :func:`write_sheets` writes the pages of one scene: one sheet gives ``stem.svg``, ``stem.pdf`` and
 ``stem.png``; n > 1 sheets give ``stem-1.svg`` .. ``stem-n.svg``, one ``stem.pdf`` of n pages and
-``stem-1.png`` .. ``stem-n.png``.  :func:`write_sheet` is the one-sheet case.
+``stem-1.png`` .. ``stem-n.png``.  :func:`write_sheet` is the one-sheet case, :func:`save_sheet` one
+sheet to one file whose suffix names the format (``sheet.save(path)`` of the API).
 
 How the files are kept whole, whatever happens:
 
@@ -318,3 +319,14 @@ def write_sheet(sheet: Sheet, out_dir: Path | str, stem: str, formats: Sequence[
                 dpi: float = PNG_DPI) -> list[Path]:
     """Write one sheet as ``out_dir/stem.<format>`` for each format (see :func:`write_sheets`)."""
     return write_sheets([sheet], out_dir, stem, formats, dpi=dpi)
+
+
+def save_sheet(sheet: Sheet, path: Path | str, *, dpi: float | None = None) -> Path:
+    """Write ``sheet`` as SVG, PDF or PNG (the suffix decides), atomically; returns the Path."""
+    path = Path(path)
+    fmt = path.suffix.lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise ExportError(f"Cannot write {path}: the suffix must be .svg, .pdf or .png")
+    (written,) = write_sheets([sheet], path.parent if str(path.parent) else Path("."), path.stem, [fmt],
+                              dpi=dpi or PNG_DPI)
+    return written

@@ -43,9 +43,10 @@ from ..render.errors import LayoutError
 from ..render.drawers import BLOCK_H, BLOCK_L, ground_symbol, hatching
 from ..layout.formats import per_si, symbol_of
 from .html_page import markup_html
-from ..layout.text import text_at, viewport_header
+from ..layout.header import viewport_header
+from ..layout.wrap import text_at
 from ..render.paper import Circle, Command, Line, Paper, Polygon, Polyline, Rect, Rectangle
-from ..layout.scales import ISO_5455, ratio_factor, ratio_text
+from ..render.scales import ISO_5455, ratio_factor, ratio_text
 from ..layout.sheet import Sheet
 from ..render.style import LABEL, measure, rich
 from .svg import sheet_to_svg

@@ -140,6 +140,16 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
     return _document(dwg)
 
 
+def svg_inline(sheet: Sheet, width: str = "100%") -> str:
+    """The sheet as an SVG element that scales to ``width`` (for HTML and notebooks)."""
+    text = sheet_to_svg(sheet)
+    head, rest = text.split("<svg", 1)
+    tag, body = rest.split(">", 1)
+    tag = tag.replace(f'width="{sheet.paper.width:g}mm"', f'width="{width}"')
+    tag = tag.replace(f'height="{sheet.paper.height:g}mm"', 'height="auto"')
+    return f"<svg{tag}>{body}"
+
+
 # ---- the writer: svgwrite's tree as svgwrite (through ElementTree) writes it ------------------------
 
 def _escaped(v: str, *, attribute: bool) -> str:

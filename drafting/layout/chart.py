@@ -15,8 +15,9 @@ from typing import Callable, Sequence
 from constructions.entities import Chart
 
 from ..render.drawing import panel_drawer
+from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Polyline, Rect, Rectangle, Text
-from .scales import nice_step, number_text
+from ..render.scales import nice_step, number_text
 from ..render.style import MIN_TEXT, measure, plain, rich
 
 SERIES_STYLES = ("series 1", "series 2", "series 3", "series 4")
@@ -160,7 +161,6 @@ def chart_with_axes(e: Chart, rect: Rect, units: AxisUnits = SI_AXES,
     x0, x1, xs_step = ticks(x_lo, x_hi, max(plot_right - plot_left, 1.0), 14.0,
                             DEGREE_STEPS if x_unit == "deg" else None)
     if plot_right - plot_left < 20 or plot_bottom - plot_top < 15:
-        from ..render.errors import LayoutError
         raise LayoutError(f"the chart {name!r} needs at least {CHART_MIN[0]:.0f} x {CHART_MIN[1]:.0f} mm")
 
     def px(v: float) -> float:

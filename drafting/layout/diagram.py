@@ -12,8 +12,7 @@ from constructions.geometry import Vec
 
 from . import chart  # noqa: F401  (registers the chart drawer)
 from ..render.drawers import diagram_facts, draw_pins, trial_crossings
-from ..render.drawing import (Drawing, DrawContext, LabelReq, Pt, TextFn, _plain_text, drawable, drawer,  # noqa: F401
-                      drawer_for, is_panel_entity, panel_drawer)
+from ..render.drawing import Drawing, DrawContext, TextFn, _plain_text, drawer_for
 from ..render.errors import DrawingError
 from ..render.transform import Transform
 

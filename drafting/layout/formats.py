@@ -16,7 +16,8 @@ from typing import Callable, Mapping
 
 from constructions.record import Value
 
-from .scales import number_text
+from ..render.scales import number_text
+from ..scene.units import registry
 
 SI_UNITS: dict[str, str] = {
     "length": "m", "velocity": "m/s", "acceleration": "m/s^2", "angular velocity": "rad/s",
@@ -70,7 +71,6 @@ def _per_si(si: str, unit: str) -> float:
         return _KNOWN[key]
     if not unit:
         return 1.0
-    from ..scene.units import registry
     try:
         return float(registry().Quantity(1.0, si).to(unit.replace("\u00b2", "^2")).magnitude)
     except Exception as e:   # pint raises assorted errors for units of another dimension

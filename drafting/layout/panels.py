@@ -11,214 +11,34 @@ every panel while they fit, then :meth:`Panel.render` draws the chosen rung into
   the panel.
 - :class:`ChartPanel`: charts, filling whatever room they get.
 
-A diagram is drawn only at the scales actually tried, once each (the drawings are kept by scale), and
-its size at a scale is read off that drawing.
+A diagram is drawn only at the scales actually tried, once each (the drawings are kept by scale:
+:class:`~drafting.layout.panel.Figure`), and its size at a scale is read off that drawing.  The Panel
+every kind is, and the placing of a drawing in its rectangle, are in :mod:`drafting.layout.panel`.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 from typing import Sequence
 
-from constructions.entities import Arrow, Chart, Entity, Point, Role, ScaleBar
+from constructions.entities import Arrow, Chart, Entity, Role, ScaleBar
 
-from . import text as L
-from .chart import CHART_MIN, AxisUnits, draw_chart
-from .diagram import Drawing, TextFn, draw_entities, model_points
-from ..render.errors import LayoutError
-from .formats import DiagramScale, per_si, symbol_of
-from .labels import place_labels
-from ..render.paper import Command, Rect, Rectangle
-from .scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
+from ..render.drawing import TextFn, is_panel_entity
+from ..render.paper import Command, Rect
+from ..render.scales import ISO_5455, nice_values, number_text, ratio_factor, ratio_text
 from ..render.style import LABEL
-from ..render.transform import Transform
+from ..scene.unitset import Units
+from .chart import CHART_MIN, AxisUnits, draw_chart
+from .formats import DiagramScale, per_si, symbol_of
+from .header import Header, viewport_header
+from .panel import Figure, Panel, PanelCache, Size, render_drawing
 
-VIEW_PAD = 7.0          # room around a drawing for its labels
 VECTOR_MIN_W = 90.0     # a vector panel is at least this wide (heading and scale bar side by side)
 SPACE_MIN_MM = 25.0     # the space diagram's larger side is at least this long at a legible scale
 LABEL_GAP_MM = LABEL    # ... and its labelled points a letter height apart on paper (a label each),
 LABEL_ROOM_MAX_MM = 150.0   # as long as that keeps its larger side within this
 POLYGON_MIN_MM = 40.0   # a polygon drawn at a scale the sheet chooses is at least this large
 POLYGON_AIM_MM = 50.0   # ... and aims at a known vector at least this long
-
-Size = tuple[float, float]
-
-
-@dataclass
-class PanelCache:
-    """What a compose run remembers: drawings by scale, header heights by width."""
-
-    headers: dict[tuple, float] = field(default_factory=dict)
-    fills: dict[tuple, object] = field(default_factory=dict)
-
-    def header_height(self, width: float, heading: str, ppu: float | None, unit: str) -> float | None:
-        key = (round(width, 6), heading, ppu, unit)
-        got = self.headers.get(key)
-        if got is None:
-            try:
-                got = L.header_height(width, heading, ppu, unit)
-            except LayoutError:
-                got = math.inf
-            self.headers[key] = got
-        return None if got == math.inf else got
-
-
-class Figure:
-    """A diagram's entities and their drawings, one per scale tried (``k`` paper mm per model unit)."""
-
-    def __init__(self, entities: Sequence[Entity], text: TextFn | None = None) -> None:
-        self.entities = tuple(entities)
-        self.text = text
-        self._draws: dict[float, Drawing] = {}
-        self._boxes: dict[float, Rect | None] = {}
-        pts = model_points(self.entities)
-        if pts:
-            self.extent = (max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
-        else:
-            self.extent = (0.0, 0.0)
-        self.draws = 0
-
-    @property
-    def size(self) -> float:
-        """The larger side of the model points' bounding box (model units)."""
-        return max(self.extent)
-
-    @property
-    def label_gap(self) -> float:
-        """The least distance between two labelled points at different places (model units; inf when
-        fewer than two)."""
-        pts = {(e.at.x, e.at.y) for e in self.entities if isinstance(e, Point) and e.label}
-        if len(pts) < 2:
-            return math.inf
-        tiny = 1e-9 * max(self.size, 1e-300)
-        best = math.inf
-        pts = sorted(pts)
-        for i, (x, y) in enumerate(pts):
-            for u, v in pts[i + 1:]:
-                d = math.hypot(u - x, v - y)
-                if tiny < d < best:
-                    best = d
-        return best
-
-    def drawing(self, k: float) -> Drawing:
-        d = self._draws.get(k)
-        if d is None:
-            d = draw_entities(self.entities, k, text=self.text)
-            self._draws[k] = d
-            self.draws += 1
-        return d
-
-    def least_width(self, k: float) -> float:
-        """The least width :func:`_fit_drawing` can give the drawing at ``k``, known without drawing it:
-        the drawing covers its model points (every drawer draws at the points it names), so its extent
-        is at least theirs at ``k`` (less a micrometre, so a rounding in the last bit cannot turn a fit
-        into a skip)."""
-        return self.extent[0] * k + 2 * VIEW_PAD + 2 - 1e-3
-
-    def fit(self, k: float, width: float, least: float = 0.0) -> Size | None:
-        """The room (width, height) the drawing at ``k`` needs in a panel, at least ``least`` wide; None
-        when that is wider than ``width``.  A scale whose model points alone are too wide is rejected
-        without drawing it (:meth:`least_width`)."""
-        if max(self.least_width(k), least) > width + 1e-9:
-            return None
-        w, h = _fit_drawing(self.bbox(k))
-        w = max(w, least)
-        return None if w > width + 1e-9 else (w, h)
-
-    def bbox(self, k: float) -> Rect | None:
-        """The drawing's extent at ``k`` (measured once per scale: the packer asks many times)."""
-        if k not in self._boxes:
-            self._boxes[k] = self.drawing(k).bbox()
-        return self._boxes[k]
-
-
-class Panel:
-    """One diagram block: a ladder of scales (rungs, smallest drawing first) and what each needs."""
-
-    key: str
-    kind: str                    # "space", "vector", "chart"
-    priority: int = 1
-    blank: bool = False          # framed empty: heading, scale and scale bar, nothing drawn (a problem sheet)
-
-    def rungs(self) -> int:
-        raise NotImplementedError
-
-    _first: int | None = None
-
-    def min_rung(self) -> int:
-        """The first rung at which the diagram is legible (found once: the packer asks many times)."""
-        if self._first is None:
-            self._first = self.first_legible_rung()
-        return self._first
-
-    def first_legible_rung(self) -> int:
-        return 0
-
-    def need(self, rung: int, width: float) -> Size | None:
-        """(width, height) of the panel the diagram needs at ``rung`` in a panel ``width`` wide, or None
-        when it does not fit that width."""
-        raise NotImplementedError
-
-    def min_width(self) -> float:
-        return 0.0
-
-    def scale_text(self, rung: int) -> str | None:
-        return None
-
-    def scale(self, rung: int) -> DiagramScale | None:
-        return None
-
-    def drawn_size(self, rung: int) -> Size:
-        """The extent of the diagram's own figure (model points) on paper at ``rung``, mm."""
-        return (0.0, 0.0)
-
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
-        """The panel's heading (with its scale and scale bar where it has one) at the top of ``rect``."""
-        raise NotImplementedError
-
-    def render(self, rung: int, rect: Rect, region: str) -> tuple[list[Command], Transform | None]:
-        header = self.header(rung, rect, region)
-        if self.blank:
-            return _empty_frame(self.key, header, rect), None
-        return self.draw(rung, rect, region, header)
-
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header) -> tuple[list[Command], Transform | None]:
-        raise NotImplementedError
-
-
-def _empty_frame(key: str, header: L.Header, rect: Rect) -> list[Command]:
-    """The header over an empty framed drawing area (where a student draws)."""
-    plot = Rect.from_edges(rect.x + 2.0, rect.y + header.height + 1.0, rect.right - 2.0, rect.bottom - 2.0)
-    cmds = list(header.commands)
-    if plot.w > 0 and plot.h > 0:
-        cmds.append(Rectangle(plot.x, plot.y, plot.w, plot.h, "path", f"{key} drawing area"))
-    return cmds
-
-
-def _fit_drawing(bb: Rect | None) -> Size:
-    w = (bb.w if bb else 0.0) + 2 * VIEW_PAD + 2
-    h = (bb.h if bb else 0.0) + 2 * VIEW_PAD + 2
-    return w, h
-
-
-def _render_drawing(fig: Figure, k: float, header: L.Header, rect: Rect, region: str,
-                    heading: str) -> tuple[list[Command], Transform]:
-    plot = Rect.from_edges(rect.x + 1.0, rect.y + header.height, rect.right - 1.0, rect.bottom - 1.0)
-    d, bb = fig.drawing(k), fig.bbox(k)               # (the extent the packer measured at this scale)
-    cmds: list[Command] = list(header.commands)
-    if bb is None:
-        return cmds, Transform(k, plot.center[0], plot.center[1])
-    if bb.w + 2 * VIEW_PAD > plot.w + 1e-6 or bb.h + 2 * VIEW_PAD > plot.h + 1e-6:
-        raise LayoutError(f"the {heading.lower()} needs {bb.w + 2 * VIEW_PAD:.0f} x "
-                          f"{bb.h + 2 * VIEW_PAD:.0f} mm and its viewport has {plot.w:.0f} x {plot.h:.0f} mm; "
-                          f"use A3")
-    dx = plot.center[0] - (bb.x + bb.w / 2)
-    dy = plot.center[1] - (bb.y + bb.h / 2)
-    moved = d.moved(dx, dy, region)
-    cmds.extend(moved.commands)
-    cmds.extend(place_labels(moved, plot, region))
-    return cmds, Transform(k, dx, dy)
 
 
 class SpacePanel(Panel):
@@ -288,11 +108,11 @@ class SpacePanel(Panel):
         k = self.k(rung)
         return self.figure.extent[0] * k, self.figure.extent[1] * k
 
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
-        return L.viewport_header(rect, self.heading(rung), self.ppu(rung), self.unit, region=region, name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> Header:
+        return viewport_header(rect, self.heading(rung), self.ppu(rung), self.unit, region=region, name=self.key)
 
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
-        return _render_drawing(self.figure, self.k(rung), header, rect, region,
+    def draw(self, rung: int, rect: Rect, region: str, header: Header):
+        return render_drawing(self.figure, self.k(rung), header, rect, region,
                                self.heading(rung))
 
 
@@ -373,11 +193,11 @@ class VectorPanel(Panel):
     def known_mm(self, rung: int) -> float:
         return self.known * self.k(rung)
 
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
-        return L.viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region, name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> Header:
+        return viewport_header(rect, self.title, self.k(rung) / self.f, self.unit, region=region, name=self.key)
 
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
-        return _render_drawing(self.figure, self.k(rung), header, rect, region, self.title)
+    def draw(self, rung: int, rect: Rect, region: str, header: Header):
+        return render_drawing(self.figure, self.k(rung), header, rect, region, self.title)
 
 
 class ChartPanel(Panel):
@@ -405,10 +225,10 @@ class ChartPanel(Panel):
     def min_width(self) -> float:
         return CHART_MIN[0]
 
-    def header(self, rung: int, rect: Rect, region: str) -> L.Header:
-        return L.viewport_header(rect, self.title, None, "", region=region, name=self.key)
+    def header(self, rung: int, rect: Rect, region: str) -> Header:
+        return viewport_header(rect, self.title, None, "", region=region, name=self.key)
 
-    def draw(self, rung: int, rect: Rect, region: str, header: L.Header):
+    def draw(self, rung: int, rect: Rect, region: str, header: Header):
         cmds: list[Command] = list(header.commands)
         area = Rect.from_edges(rect.x + 2.0, rect.y + header.height, rect.right - 2.0, rect.bottom - 2.0)
         n = len(self.charts)
@@ -433,7 +253,6 @@ def _label(kind: str, name: str) -> str:
 def panels_for(construction, units, cache: PanelCache, text: TextFn | None = None) -> list[Panel]:
     """One panel per diagram of ``construction`` (in the order space, velocity, acceleration, force,
     the others as they first appear), and one chart panel per diagram holding charts."""
-    from .diagram import is_panel_entity
     by_diagram: dict = {}
     for e in construction.entities():
         by_diagram.setdefault(e.diagram, []).append(e)
@@ -467,14 +286,12 @@ def panels_for(construction, units, cache: PanelCache, text: TextFn | None = Non
     return out
 
 
-__all__ = ["Panel", "SpacePanel", "VectorPanel", "ChartPanel", "PanelCache", "Figure", "panels_for", "VIEW_PAD",
-           "POLYGON_MIN_MM", "POLYGON_AIM_MM"]
+__all__ = ["SpacePanel", "VectorPanel", "ChartPanel", "panels_for", "POLYGON_MIN_MM", "POLYGON_AIM_MM"]
 
 
 def fit_space(entities: tuple[Entity, ...], w: float, h: float, units=None):
     """The largest ISO 5455 scale at which a space diagram fits a ``w`` x ``h`` viewport, and the
     height it needs: ``(ratio, height)`` or None."""
-    from ..scene.unitset import Units
     p = SpacePanel("space", "Space diagram", entities, units or Units(), PanelCache())
     for r in range(p.rungs() - 1, -1, -1):
         got = p.need(r, w)

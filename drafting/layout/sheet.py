@@ -7,7 +7,9 @@ sets the vector equations, the numbered steps (their values written in the scene
 paper lengths from the scales the drawing chose), the results table and the notes, packs all of it onto
 as few pages as hold it legibly (:mod:`drafting.layout.pages`) and fills in every page's title block (sheet
 n/m).  Each page is a :class:`Sheet`: the paper, a tuple of drawing commands in paper mm (y down) and
-named regions, so tests can check what is drawn without rendering.  :mod:`drafting.backends.svg` renders it.
+named regions, so tests can check what is drawn without rendering.  A Sheet is a plain value: it
+neither renders nor saves itself -- :mod:`drafting.backends.svg` writes it as SVG, :mod:`drafting.backends.files`
+saves it, and :class:`drafting.backends.public_sheet.Sheet` is the one users hold, which does both.
 
 ``compose_sheet`` is the one-page form: it returns the single sheet, and raises :class:`LayoutError`
 naming the number of sheets when the content needs more than one.
@@ -29,15 +31,20 @@ from typing import Mapping, Sequence
 from constructions.entities import Entity, ScaleBar
 from constructions.record import Construction, Step
 
-from . import text as L
 from ..render.errors import LayoutError
-from .formats import DiagramScale, SheetFormatter, ValueHook
-from .pages import Document, PagePlan, plan_document
 from ..render.paper import Command, Line, Paper, Rect, Rectangle, Text, paper as make_paper
 from ..render.style import LABEL
 from ..render.transform import Transform
-from ..scene.unitset import Units
-from .panels import Panel, PanelCache, VectorPanel, panels_for
+from ..scene.units import check_unit
+from ..scene.unitset import KEYS, Units
+from .flow import TEXT_SIZES, flow_shrinking, slot_page, slot_region
+from .formats import DiagramScale, SheetFormatter, ValueHook
+from .items import MARK_NO, MARK_YES, EquationItem, Item, Paragraph, Section, TableItem
+from .page_plans import PagePlan
+from .pages import Document, plan_document, slots_of
+from .panel import Panel, PanelCache
+from .panels import VectorPanel, panels_for
+from .title_block import title_block, title_block_height
 
 __all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheets", "compose_sheet", "LayoutError"]
 
@@ -100,8 +107,6 @@ class SheetInfo:
 
 def _units_from_text(text: str) -> Units:
     """Transitional: "m, m/s, rad/s" -> Units (each unit given to the first kind it measures)."""
-    from ..scene.unitset import KEYS
-    from ..scene.units import check_unit
     got: dict[str, str] = {}
     for token in (t.strip() for t in text.replace(";", ",").split(",")):
         if not token:
@@ -121,7 +126,7 @@ def _units_from_text(text: str) -> Units:
 
 @dataclass(frozen=True)
 class Sheet:
-    """A composed page: paper, drawing commands (paper mm, y down) and named regions."""
+    """A composed page: paper, drawing commands (paper mm, y down) and named regions (a plain value)."""
 
     paper: Paper
     commands: tuple[Command, ...]
@@ -145,35 +150,6 @@ class Sheet:
 
     def texts(self) -> tuple[Text, ...]:
         return tuple(c for c in self.commands if isinstance(c, Text))
-
-    def svg(self) -> str:
-        """The page as an SVG document (true size in mm)."""
-        from ..backends.svg import sheet_to_svg
-        return sheet_to_svg(self)
-
-    def svg_inline(self, width: str = "100%") -> str:
-        """The page as an SVG element that scales to ``width`` (for HTML and notebooks)."""
-        text = self.svg()
-        head, rest = text.split("<svg", 1)
-        tag, body = rest.split(">", 1)
-        tag = tag.replace(f'width="{self.paper.width:g}mm"', f'width="{width}"')
-        tag = tag.replace(f'height="{self.paper.height:g}mm"', 'height="auto"')
-        return f"<svg{tag}>{body}"
-
-    def save(self, path, *, dpi: float | None = None):
-        """Write this page as SVG, PDF or PNG (the suffix decides), atomically; returns the Path."""
-        from pathlib import Path as _Path
-        from ..backends.files import PNG_DPI, ExportError, write_sheets
-        path = _Path(path)
-        fmt = path.suffix.lower().lstrip(".")
-        if fmt not in ("svg", "pdf", "png"):
-            raise ExportError(f"Cannot write {path}: the suffix must be .svg, .pdf or .png")
-        (written,) = write_sheets([self], path.parent if str(path.parent) else _Path("."), path.stem, [fmt],
-                                  dpi=dpi or PNG_DPI)
-        return written
-
-    def _repr_svg_(self) -> str:
-        return self.svg_inline()
 
     def named(self, prefix: str) -> tuple[Command, ...]:
         return tuple(c for c in self.commands if c.name.startswith(prefix))
@@ -199,22 +175,22 @@ def step_text(step: Step, fmt: SheetFormatter) -> str:
 
 
 def _sections(construction: Construction, results: Sequence[ResultRow], notes: Sequence[str],
-              fmt: SheetFormatter, given: Sequence[str] = ()) -> list[L.Section]:
-    secs: list[L.Section] = []
+              fmt: SheetFormatter, given: Sequence[str] = ()) -> list[Section]:
+    secs: list[Section] = []
     if given:
-        secs.append(L.Section("Given", tuple(
-            L.Paragraph(t, label="\u2013", label_chars="\u2013", name=f"given {i + 1}") for i, t in enumerate(given))))
+        secs.append(Section("Given", tuple(
+            Paragraph(t, label="\u2013", label_chars="\u2013", name=f"given {i + 1}") for i, t in enumerate(given))))
     eqs = construction.equations
     if eqs:
-        items: list[L.Item] = [L.EquationItem(eq, name=f"equation {i + 1}") for i, eq in enumerate(eqs)]
-        items.append(L.Paragraph(f"Marks over each vector: magnitude, then direction; "
-                                 f"{L.MARK_YES} known, {L.MARK_NO} unknown.", name="equation legend"))
-        secs.append(L.Section("Vector equations", tuple(items)))
+        items: list[Item] = [EquationItem(eq, name=f"equation {i + 1}") for i, eq in enumerate(eqs)]
+        items.append(Paragraph(f"Marks over each vector: magnitude, then direction; "
+                                 f"{MARK_YES} known, {MARK_NO} unknown.", name="equation legend"))
+        secs.append(Section("Vector equations", tuple(items)))
     texts = [t for t in (step_text(s, fmt).strip() for s in construction.steps) if t]
     if texts:
         n = len(texts)
-        secs.append(L.Section("Construction", tuple(
-            L.Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}")
+        secs.append(Section("Construction", tuple(
+            Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}")
             for i, t in enumerate(texts))))
     if results:
         has_note = any(r.note for r in results)
@@ -223,12 +199,12 @@ def _sections(construction: Construction, results: Sequence[ResultRow], notes: S
         align = ("l", "r", "r", "r", "l")
         # a column with nothing in it is not printed (a problem sheet leaves only the answer's column)
         keep = [i for i in range(5) if i == 0 or any(row[i] for row in rows)]
-        secs.append(L.Section("Results", (L.TableItem(
+        secs.append(Section("Results", (TableItem(
             tuple(header[i] for i in keep), tuple(tuple(row[i] for i in keep) for row in rows),
             tuple(align[i] for i in keep), wrap_last=has_note),)))
     if notes:
-        secs.append(L.Section("Notes", tuple(
-            L.Paragraph(t, label="\u2013", label_chars="\u2013", name=f"note {i + 1}") for i, t in enumerate(notes))))
+        secs.append(Section("Notes", tuple(
+            Paragraph(t, label="\u2013", label_chars="\u2013", name=f"note {i + 1}") for i, t in enumerate(notes))))
     return secs
 
 
@@ -323,7 +299,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
         probe_text = "; ".join(t for t in (_probe_scale(p) for p in on_page) if t) or "\u2014 (no drawing on this sheet)"
         key = (round(width, 6), probe_text)
         if key not in tb_memo:
-            tb_memo[key] = L.title_block_height(width, info.title, tb_fields(probe_text, 10, 10))
+            tb_memo[key] = title_block_height(width, info.title, tb_fields(probe_text, 10, 10))
         return tb_memo[key]
 
     text_cache: dict = {}
@@ -348,12 +324,11 @@ def _probe_scale(p: Panel) -> str:
 
 def _reflow(sections, doc: Document, cache) -> tuple[list, float]:
     """The text with its real values, set into the document's slots at the planned size (or smaller)."""
-    from .pages import slots_of
     if not sections:
         return [], doc.size
     slots = slots_of(doc.pages)
-    sizes = [s for s in L.TEXT_SIZES if s <= doc.size + 1e-9]
-    got = L.flow_shrinking(sections, slots, sizes=sizes, cache=cache, tagged=True)
+    sizes = [s for s in TEXT_SIZES if s <= doc.size + 1e-9]
+    got = flow_shrinking(sections, slots, sizes=sizes, cache=cache, tagged=True)
     if got is None:
         raise LayoutError("the construction's text with its values does not fit the slots planned for it")
     return got
@@ -366,14 +341,14 @@ def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, t
     mine = []
     used = set()
     for slot, c in text_cmds:
-        if L.slot_page(slot) == page:
-            used.add(L.slot_region(slot))
+        if slot_page(slot) == page:
+            used.add(slot_region(slot))
             mine.append(c)                       # (its region is the slot's, without the page)
     n_of_m = number or (index + 1, m)
     in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
     scale_list = [(p.key, p.scale_text(r)) for p, r, _ in in_order if p.scale_text(r)]
     scale_text = "; ".join(t for _, t in scale_list) or "\u2014 (no drawing on this sheet)"
-    tb = L.title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
+    tb = title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
     regions: dict[str, Rect] = {"page": pp.page, "frame": frame, "title_block": tb.rect}
     cmds: list[Command] = [Rectangle(frame.x, frame.y, frame.w, frame.h, "frame", "frame")]
     rects = {p.key: rc for p, _, rc in pg.panels}

@@ -41,7 +41,7 @@ from decimal import Decimal
 from pathlib import Path
 from typing import Any
 
-from ..layout.scales import nice_floor
+from ..render.scales import nice_floor
 from .units import UnitError, from_si, split_value, to_si, unit_symbol
 
 INPUT_KEYS = {"crank_angle": ("angle", "angle"), "omega": ("omega", "angular velocity"),

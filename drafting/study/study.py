@@ -129,7 +129,7 @@ class Study:
         return {c.name: c for c in self.comparisons}
 
     def sheets(self) -> list:
-        """The worked sheets (:class:`~drafting.layout.sheet.Sheet`, one per page): ``sheet.save("x.pdf")``."""
+        """The worked sheets (:class:`~drafting.backends.public_sheet.Sheet`, one per page): ``sheet.save("x.pdf")``."""
         from .worked import sheets_for
         return list(sheets_for(self))
 

@@ -15,12 +15,13 @@ def builtin_example() -> Path:
 
 def sheets_for(study: Study):
     """The sheets of a solved study: one, or as many pages as its diagrams need to stay legible."""
+    from ..backends.public_sheet import Sheet
     from ..layout.sheet import ResultRow, SheetInfo, compose_sheets, sheet_date
     s = study.scene
     info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
                      date=sheet_date(), units=s.units, notes=study.notes + study.warnings)
     rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
-    return compose_sheets(study.construction, info, rows)
+    return tuple(Sheet.of(page) for page in compose_sheets(study.construction, info, rows))
 
 
 def sheet_for(study: Study):
