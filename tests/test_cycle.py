@@ -60,7 +60,7 @@ def test_a_linkage_that_cannot_turn_fully_has_gaps_and_a_warning():
     coupler curve is broken into pieces that never bridge the gap, and the sheet says where."""
     text = CYCLE.read_text().replace("length = 20\n", "length = 50\n", 1)
     s = Study(parse_scene(text, GALLERY / "part.toml")).run()
-    res, _ = s.computed("sweep")
+    res = s.computed("sweep").result
     assert 0 < res.assembles.sum() < res.thetas.size
     charts = {e.diagram.name: e for e in s.construction.entities() if isinstance(e, Chart)}
     mu = np.array(charts["Transmission angle"].series[0].y)
@@ -96,7 +96,7 @@ def test_limit_positions_drawn_are_the_ends_of_the_rockers_swing():
     from constructions.entities import AngleMark, Point
     s = Study(load_scene(CYCLE)).run()
     k = s.get("classification")
-    res, _ = s.computed("sweep")
+    res = s.computed("sweep").result
     at = sweep(s.scene.mechanism, np.array([lp.crank_angle for lp in k.limit_positions]), s.scene.omega)
     for i, lp in enumerate(k.limit_positions):
         cx, cy = (np.asarray(v)[i] for v in at.positions["C"])

@@ -12,7 +12,8 @@ import pytest
 
 import drafting
 from drafting.app.cli import main
-from drafting.backends.html_page import entity_of, markup_html, page_html
+from drafting.backends.html_markup import markup_html
+from drafting.backends.html_page import entity_of, page_html
 
 GALLERY = Path(__file__).resolve().parent.parent / "gallery"
 SCENE = GALLERY / "notes-acceleration-example-1.toml"
@@ -21,7 +22,7 @@ CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 
 def test_the_page_is_self_contained_and_tagged():
     study = drafting.load(SCENE)
-    page = page_html(study)
+    page = page_html(study, study.sheets())
     assert page.startswith("<!DOCTYPE html>") and page.count("<svg") == len(study.sheets())
     assert not re.search(r"<(link|img|iframe)\b|\bsrc=|url\((?!data:)", page)  # nothing fetched
     assert not re.search(r'href="(?!#)', page)

@@ -21,7 +21,8 @@ from constructions.check import analytic_solution
 from constructions.sweep import sweep
 from drafting.backends.html_page import page_html
 from constructions.sweep import crank_points
-from drafting.backends.html_sweep import MECH_W, WIDTH, HEIGHT, sweep_section
+from drafting.backends.html_sweep import sweep_section
+from drafting.backends.sweep_canvas import HEIGHT, MECH_W, WIDTH
 from drafting.render.paper import Polyline
 from drafting.scene.reader import parse_scene
 from test_sweep import PARALLELOGRAM            # the same parallelogram four-bar
@@ -41,7 +42,7 @@ def page_data(page: str) -> dict:
 @pytest.fixture(scope="module")
 def cycle():
     study = drafting.load(CYCLE)
-    page = page_html(study)
+    page = page_html(study, study.sheets())
     return study, page, page_data(page)
 
 
@@ -49,7 +50,7 @@ def cycle():
 def gap(tmp_path_factory):
     from drafting.study.study import Study
     study = Study(parse_scene(GAP_TEXT, tmp_path_factory.mktemp("gap") / "gap.toml")).run()
-    page = page_html(study)
+    page = page_html(study, study.sheets())
     return study, page, page_data(page)
 
 
@@ -136,7 +137,7 @@ def test_at_a_gap_only_the_crank_stands(gap):
 def test_change_points_are_named(tmp_path):
     from drafting.study.study import Study
     study = Study(parse_scene(PARALLELOGRAM, tmp_path / "p.toml")).run()
-    page = page_html(study)
+    page = page_html(study, study.sheets())
     d = page_data(page)
     assert "change point at 180.0 deg" in page and "change point at 0 deg" in page
     i = round((180 - 30) / 360 * d["count"])
@@ -147,7 +148,7 @@ def test_change_points_are_named(tmp_path):
 
 def test_a_page_without_a_sweep_has_no_slider():
     study = drafting.load(GALLERY / "notes-acceleration-example-1.toml")
-    page = page_html(study)
+    page = page_html(study, study.sheets())
     assert sweep_section(study) is None
     assert "sweep" not in page and page.count("<script") == 2
 

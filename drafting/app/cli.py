@@ -135,7 +135,7 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
                 written = write_sheets(sheets_for(study), out, path.stem, sheet_formats) if sheet_formats else []
             if PAGE in formats:
                 from ..backends.html_page import write_page
-                written.append(write_page(study, out, path.stem))
+                written.append(write_page(study, sheets_for(study), out, path.stem))
         except ExportError as e:                  # names the output file it could not write
             raise UserError(f"{path}: {e}") from None
         except LayoutError as e:                  # the sheet: the paper is what the user can change

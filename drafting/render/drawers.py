@@ -4,9 +4,9 @@ Mechanism entities: bars, plates, pivots (ground hatching turned away from their
 either side of a slider block, or a hatched line), blocks, path arcs.  Vector entities: arrows (thick
 shaft, filled arrowhead with its apex at the tip), trial lines (thin, run past every point of the diagram
 on them), images (light grey), points.  Drafting entities: circles (long-dash-dot centre lines and
-pitch/base circles, thin loci, thick outlines), curves, segments, ISO 129 dimensions (extension lines,
-dimension line with filled arrowheads, horizontal text), angle marks (arc with an arrowhead and text)
-and notes (text on a white ground).  A scale bar is drawn by its viewport's header, not here.
+pitch/base circles, thin loci, thick outlines), curves, segments; the drafting annotations (dimensions,
+angle marks, notes) in :mod:`drafting.render.annotations`.  A scale bar is drawn by its viewport's
+header, not here.  The symbols the mechanism is drawn with are :mod:`drafting.render.symbols`.
 """
 
 from __future__ import annotations
@@ -14,31 +14,23 @@ from __future__ import annotations
 import math
 from typing import Sequence
 
-from constructions.entities import (AngleMark, Arc, Arrow, Bar, Block, Circle as CircleEntity, Curve, Dimension,
-                                    Entity, Guide, Note, Pivot, Plate, Point, Polygon as PolygonEntity, Role,
-                                    ScaleBar, Segment, TrialLine)
-from constructions.geometry import Vec
+from constructions.geometry import Line as ModelLine, Vec, intersect_lines
+from constructions.tolerance import Tolerance
+from constructions.entities import (Arc, Arrow, Bar, Block, Circle as CircleEntity, Curve, Entity, Guide, Pivot, Plate, Point, Polygon as PolygonEntity, Role, ScaleBar, Segment, TrialLine)
 
-from .drawing import (ARROW_LEN, BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, NOTES, PATHS, PIN_R, PINS,
-                      SHAFTS, THICK_STYLES, TRIALS, DrawContext, Drawing, LabelReq, Pt, _dist, angle_gap,
-                      arrowhead, drawer, incident_directions, nonzero, shifted, unit_vector)
-from .paper import Circle, Command, Line, Polygon, Polyline, Rect, Rectangle, Strokes, Text
-from .style import LABEL, area_style_for, line_style_for, measure, rich
+from .drawing import (BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, PATHS, PIN_R, PINS,
+                      SHAFTS, THICK_STYLES, TRIALS, DrawContext, Drawing, LabelReq, Pt, _dist, arrowhead, drawer,
+                      incident_directions, nonzero, shifted, unit_vector)
+from .paper import Circle, Line, Polygon, Polyline, Rect
+from .style import area_style_for, line_style_for
+from .symbols import BLOCK_H, BLOCK_L, ground_side, ground_symbol, hatching
 from .transform import Transform
+from . import annotations  # noqa: F401  (registers the drawers of dimensions, angle marks and notes)
 
 TRIAL_EXT = 10.0        # trial lines run 10 mm past the furthest point of their diagram on them
 TRIAL_LONE = 20.0
-BLOCK_L = 10.0
-BLOCK_H = 6.0
 RAIL_EXT = 12.0
-HATCH_STEP = 1.6
-HATCH_LEN = 1.8
 ON_LINE = 1e-3          # mm: a point this close to a trial line lies on it
-NOTE_PAD = 0.4          # white margin around a note or dimension text
-DIM_EXT_GAP = 1.0       # ISO 129: a small gap between the feature and its extension line ...
-DIM_EXT_OVER = 2.0      # ... which runs this far past the dimension line
-DIM_TEXT = LABEL        # lettering of dimensions, angle marks and notes
-ANGLE_MIN_R = 6.0       # an angle mark's arc is at least this radius on paper
 
 
 # ---- what the whole diagram knows ---------------------------------------------------------------
@@ -49,27 +41,26 @@ the diagram's size around its points; lines of different dyads that happen to cr
 stretch each other across the sheet."""
 
 
-def trial_crossings(entities: Sequence[Entity], points: Sequence[Vec] | None = None) -> list[Vec]:
-    """The crossings of the diagram's trial lines near the diagram: points of the diagram on them."""
+def trial_crossings(entities: Sequence[Entity], points: Sequence[Vec]) -> list[Vec]:
+    """The crossings of the diagram's trial lines near the diagram (whose model points are ``points``):
+    points of the diagram on them.  Lines parallel within the engine's tolerance
+    (:class:`constructions.tolerance.Tolerance`, relative to the diagram's size) do not cross."""
     trials = [e for e in entities if isinstance(e, TrialLine) and nonzero(e.direction)]
-    if len(trials) < 2:
+    if len(trials) < 2 or not points:
         return []
-    pts = list(points) if points is not None else []
-    if pts:
-        x0, x1 = min(p.x for p in pts), max(p.x for p in pts)
-        y0, y1 = min(p.y for p in pts), max(p.y for p in pts)
-        m = CROSSING_REACH * max(x1 - x0, y1 - y0)
-        box = (x0 - m, y0 - m, x1 + m, y1 + m)
-    else:
-        box = None
+    x0, x1 = min(p.x for p in points), max(p.x for p in points)
+    y0, y1 = min(p.y for p in points), max(p.y for p in points)
+    size = max(x1 - x0, y1 - y0)
+    if not size > 0:                                  # every point one point: the lines cross there or not at all
+        return []
+    m = CROSSING_REACH * size
+    tol = Tolerance(size)
+    lines = [ModelLine(e.through, e.direction) for e in trials]
     out = []
-    for i, a in enumerate(trials):
-        for b in trials[i + 1:]:
-            s = a.direction.cross(b.direction)
-            if abs(s) > 1e-12 * a.direction.norm() * b.direction.norm():
-                t = (b.through - a.through).cross(b.direction) / s
-                p = a.through + a.direction * t
-                if box is None or (box[0] <= p.x <= box[2] and box[1] <= p.y <= box[3]):
+    for i, a in enumerate(lines):
+        for b in lines[i + 1:]:
+            for p in intersect_lines(a, b, tol).points:
+                if x0 - m <= p.x <= x1 + m and y0 - m <= p.y <= y1 + m:
                     out.append(p)
     return out
 
@@ -122,39 +113,10 @@ def draw_block(e: Block, ctx: DrawContext) -> None:
 def draw_pivot(e: Pivot, ctx: DrawContext) -> None:
     """A fixed pivot: pin, ground triangle, ground line and hatching, turned away from its links."""
     d, p, name = ctx.d, ctx.T(e.at), e.name
-    inc = incident_directions(p, ctx.bars)
-    best, best_gap = (0.0, 1.0), -1.0
-    for cand in ((0.0, 1.0), (-1.0, 0.0), (1.0, 0.0), (0.0, -1.0)):
-        a = math.atan2(cand[1], cand[0])
-        gap = min((angle_gap(a, b) for b in inc), default=math.pi)
-        if gap > best_gap + 1e-9:
-            best, best_gap = cand, gap
-    cmds, symbol = ground_symbol(p, best, name)
+    cmds, symbol = ground_symbol(p, ground_side(incident_directions(p, ctx.bars)), name)
     for c in cmds:
         d.add(PINS, c)
     d.hard.append(symbol)
-
-
-def ground_symbol(p: Pt, u: Pt, name: str) -> tuple[list[Command], Rect]:
-    """A fixed pivot at paper point ``p`` grounded on the side of unit ``u``: ground triangle, ground line,
-    hatching and pin, and the box of the ground (which labels must not cover).  The sweep page draws
-    its pivots with it too."""
-    n = (-u[1], u[0])
-    c = shifted(p, u, 4.0)
-    tri = (p, shifted(c, n, 3.0), shifted(c, n, -3.0))
-    a, b = shifted(c, n, -4.5), shifted(c, n, 4.5)
-    pts = list(tri) + [a, b]
-    strokes = []
-    s = -4.5 + HATCH_STEP / 2
-    while s <= 4.5:
-        q = shifted(c, n, s)
-        r = shifted(shifted(q, u, HATCH_LEN), n, -HATCH_LEN)
-        strokes.append((q, r))
-        pts.append(r)
-        s += HATCH_STEP
-    return ([Polygon(tri, "ground", f"{name}:ground"), Line(*a, *b, "link", f"{name}:ground line"),
-             Strokes(tuple(strokes), "hatch", f"{name}:hatch"), Circle(*p, PIN_R, "pin", f"{name}:pin")],
-            Rect.bounding(pts))
 
 
 @drawer(Pivot, phase=2)
@@ -162,21 +124,6 @@ def label_pivot(e: Pivot, ctx: DrawContext) -> None:
     if e.label:
         ctx.d.labels.append(LabelReq("point", e.label, ctx.T(e.at), True, e.name, r0=PIN_R + 0.25,
                                      pivot_digits=True))
-
-
-def hatching(a: Pt, u: Pt, length: float, side: Pt, name: str) -> Strokes | None:
-    """The hatching of a line ``length`` mm long from ``a`` along the unit vector ``u``: a stroke every
-    HATCH_STEP, leaning back from the line towards the unit vector ``side``; None when the line is too
-    short for one.  The sweep page hatches its rails with it too."""
-    s = HATCH_STEP / 2
-    ux, uy, sx, sy = u[0], u[1], side[0] * HATCH_LEN, side[1] * HATCH_LEN
-    back_x, back_y = ux * -HATCH_LEN, uy * -HATCH_LEN
-    strokes = []
-    while s < length:
-        qx, qy = a[0] + ux * s, a[1] + uy * s                    # shifted(a, u, s)
-        strokes.append(((qx, qy), (qx + sx + back_x, qy + sy + back_y)))
-        s += HATCH_STEP
-    return Strokes(tuple(strokes), "hatch", name) if strokes else None
 
 
 def _hatched_line(d: Drawing, a: Pt, b: Pt, side: Pt, name: str) -> None:
@@ -348,130 +295,4 @@ def draw_segment(e: Segment, ctx: DrawContext) -> None:
         ctx.d.labels.append(LabelReq("arrow", e.label, b, False, e.name, other=a))
 
 
-# ---- drafting annotations: dimensions, angle marks, notes -------------------------------------------
-
-def _boxed_text(ctx: DrawContext, centre: Pt, words: str, name: str) -> Rect:
-    """Horizontal lettering centred on ``centre`` over a white ground (it may cross lines)."""
-    spans = rich(words, DIM_TEXT)
-    ext = measure(spans)
-    x = centre[0] - ext.width / 2
-    y = centre[1] - (ext.top + ext.bottom) / 2
-    box = ext.box(x, y)
-    bg = Rect(box.x - NOTE_PAD, box.y - NOTE_PAD, box.w + 2 * NOTE_PAD, box.h + 2 * NOTE_PAD)
-    ctx.d.add(NOTES, Rectangle(bg.x, bg.y, bg.w, bg.h, "note_bg", f"{name}:text bg"))
-    ctx.d.add(NOTES, Text(x, y, spans, "label", box, "", f"{name}:text"))
-    ctx.d.hard.append(bg)
-    return bg
-
-
-def _text_half(words: str) -> tuple[float, float]:
-    ext = measure(rich(words, DIM_TEXT))
-    return ext.width / 2 + NOTE_PAD, ext.height / 2 + NOTE_PAD
-
-
-def _dimension_points(e: Dimension) -> tuple[Vec, ...]:
-    d = e.end - e.start
-    if not nonzero(d):
-        return (e.start, e.end)
-    off = d.perp().unit() * e.offset
-    return (e.start, e.end, e.start + off, e.end + off)
-
-
-@drawer(Dimension, points=_dimension_points)
-def draw_dimension(e: Dimension, ctx: DrawContext) -> None:
-    """ISO 129: extension lines from the feature (with a small gap) to just past the dimension line,
-    the dimension line with filled arrowheads touching the extension lines, the value horizontal
-    (unidirectional) on a white ground at the middle of the dimension line."""
-    T = ctx.T
-    a, b = T(e.start), T(e.end)
-    if _dist(a, b) < 1e-6:
-        return
-    u = unit_vector((b[0] - a[0], b[1] - a[1]))
-    n = (u[1], -u[0])                     # paper normal that is "left of start -> end" in the model (y up)
-    off = e.offset * T.k
-    side = 1.0 if off >= 0 else -1.0
-    da, db = shifted(a, n, off), shifted(b, n, off)
-    for p, q, tag in ((a, da, "a"), (b, db, "b")):
-        if abs(off) > DIM_EXT_GAP:
-            p0 = shifted(p, n, side * DIM_EXT_GAP)
-            p1 = shifted(q, n, side * DIM_EXT_OVER)
-            ctx.d.add(TRIALS, Line(*p0, *p1, "dimension", f"{e.name}:extension {tag}"))
-    length = _dist(da, db)
-    words = ctx.text(e, e.text)
-    if length >= 2 * ARROW_LEN + 1.0:
-        h1, _ = arrowhead(db, da, f"{e.name}:start")
-        h2, _ = arrowhead(da, db, f"{e.name}:end")
-        ctx.d.add(TRIALS, Line(*da, *db, "dimension", e.name))
-    else:                                  # too short: arrows outside, pointing in
-        h1, _ = arrowhead(shifted(da, u, -ARROW_LEN - 2.0), da, f"{e.name}:start")
-        h2, _ = arrowhead(shifted(db, u, ARROW_LEN + 2.0), db, f"{e.name}:end")
-        ctx.d.add(TRIALS, Line(*shifted(da, u, -ARROW_LEN - 2.0), *shifted(db, u, ARROW_LEN + 2.0),
-                               "dimension", e.name))
-    for h in (h1, h2):
-        ctx.d.layers.setdefault(HEADS, []).append(h)
-        ctx.d.hard.append(Rect.bounding(h.points))
-    if words:
-        mid = ((da[0] + db[0]) / 2, (da[1] + db[1]) / 2)
-        hw, hh = _text_half(words)
-        if length < 2 * hw + 2 * ARROW_LEN + 1.0 or abs(u[1]) < 0.5:
-            # beside the dimension line, away from the feature: the text box just clears the line
-            reach = abs(n[0]) * hw + abs(n[1]) * hh + 0.6
-            mid = shifted(mid, n, side * reach)
-        _boxed_text(ctx, mid, words, e.name)
-
-
-@drawer(AngleMark, points=lambda e: (e.vertex,))
-def draw_angle_mark(e: AngleMark, ctx: DrawContext) -> None:
-    """An arc about the vertex from the start direction CCW to the end direction, an arrowhead at its
-    end, and the text just outside the middle of the arc."""
-    T = ctx.T
-    span = e.end_angle - e.start_angle
-    if not math.isfinite(span) or abs(span) < 1e-9:
-        return
-    v = T(e.vertex)
-    r = max(abs(e.radius) * T.k, ANGLE_MIN_R)
-    segs = int(min(180, max(8, math.ceil(abs(span) * r / 0.8))))
-
-    def at(angle: float, rr: float = r) -> Pt:
-        return (v[0] + rr * math.cos(angle), v[1] - rr * math.sin(angle))
-    pts = tuple(at(e.start_angle + span * i / segs) for i in range(segs + 1))
-    # the arrowhead: its apex at the end of the arc, along the chord of the last ~ARROW_LEN of arc
-    back = min(abs(span), ARROW_LEN / r) * (1 if span > 0 else -1)
-    head, _ = arrowhead(at(e.end_angle - back), pts[-1], e.name)
-    clear = 0.8 * min(ARROW_LEN, 0.5 * _dist(at(e.end_angle - back), pts[-1]))     # of the arrowhead
-    keep = [p for p in pts if _dist(p, pts[-1]) >= clear]
-    if len(keep) >= 2:
-        ctx.d.add(TRIALS, Polyline(tuple(keep), "dimension", e.name))
-    ctx.d.layers.setdefault(HEADS, []).append(head)
-    ctx.d.hard.append(Rect.bounding(head.points))
-    words = ctx.text(e, e.text)
-    if words:
-        # the value is a label at the middle of the arc: the label placer keeps it off the lines around
-        # (a short crank, a lever crossing the arc) as it does every other label
-        mid = e.start_angle + span / 2
-        ctx.d.labels.append(LabelReq("point", words, at(mid), True, e.name, r0=0.6))
-
-
-NOTE_GAP = 0.3
-"""The least room between the grounds of two notes, mm."""
-
-
-@drawer(Note, points=lambda e: (e.at,))
-def draw_note(e: Note, ctx: DrawContext) -> None:
-    """The words on a white ground centred at the note's point -- where they would cover a note set
-    before (names of circles a few mm apart, say), moved up or down just clear of it, the least way."""
-    words = ctx.text(e, e.text)
-    if not words:
-        return
-    x, y0 = ctx.T(e.at)
-    hw, hh = _text_half(words)
-
-    def free(y: float) -> bool:
-        return not any(Rect(x - hw, y - hh, 2 * hw, 2 * hh).overlaps(o, NOTE_GAP) for o in ctx.notes)
-    clear = NOTE_GAP + hh + 1e-6                # (a hair more: the test is strict)
-    ys = [y0] + [v for o in ctx.notes for v in (o.top - clear, o.bottom + clear)]
-    y = min((v for v in ys if free(v)), key=lambda v: (abs(v - y0), v))
-    ctx.notes.append(_boxed_text(ctx, (x, y), words, e.name))
-
-
-__all__ = ["trial_crossings", "diagram_facts", "draw_pins", "TRIAL_EXT", "BLOCK_L", "BLOCK_H"]
+__all__ = ["trial_crossings", "diagram_facts", "draw_pins", "TRIAL_EXT"]

@@ -9,11 +9,12 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from typing import Any
+from typing import TYPE_CHECKING, Any, Mapping, NamedTuple
 
 from constructions.mechanisms.classify import classify_four_bar
 from constructions.forces.effects import NO_EFFECTS
 from constructions.forces.polygon import force_analysis
+from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
 from constructions.mechanisms.assembly import assembly_plan
 from constructions.mechanisms.pose import locate
@@ -21,6 +22,9 @@ from constructions.quantities import Measured
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Construction
+
+if TYPE_CHECKING:
+    from constructions.sweep import Sweep
 
 from ..registry import Analysis, Family, register
 from .scene import SECTIONS, read_linkage
@@ -99,15 +103,34 @@ SWEEP_STEPS = 360
 """A sheet's sweep: one turn of the crank in steps of 1 deg (analytic and vectorised: milliseconds)."""
 
 
-def _sweep(study):
+class SweepAnalysis(NamedTuple):
+    """The sweep analysis: the solved turn, its charts and coupler curves, the order in which the charts
+    draw the turn's samples (constructions.cycle.one_turn: over 0 to 360 deg), and at each angle where
+    the linkage cannot be assembled the crank's own points (SI), which stand there all the same."""
+
+    result: Sweep
+    record: Construction
+    chart_order: tuple[int, ...]
+    crank_at_gaps: Mapping[int, Mapping[str, Vec]]
+
+
+def _sweep(study) -> SweepAnalysis:
     """The linkage over one turn of its crank from the drawn angle, and its charts and coupler curves."""
-    from constructions.mechanisms.cycle import cycle_record
-    from constructions.sweep import sweep
+    from constructions.mechanisms.cycle import cycle_record, one_turn
+    from constructions.sweep import crank_points, sweep
     s = study.scene
     thetas = s.angle + 2 * math.pi * np.arange(SWEEP_STEPS + 1) / SWEEP_STEPS
     result = sweep(s.mechanism, thetas, s.omega, _alpha(study))
     deg = s.units.format
-    return result, cycle_record(s.mechanism, result, study.get("classification"), lambda a: deg("angle", a))
+    record = cycle_record(s.mechanism, result, study.get("classification"), lambda a: deg("angle", a))
+    crank: dict[int, Mapping[str, Vec]] = {}
+    for i in np.flatnonzero(~np.asarray(result.assembles, dtype=bool)):
+        points = crank_points(s.mechanism, float(result.thetas[i]))
+        if points is None:                        # a crank without a fixed joint: nothing stands at a gap
+            break
+        crank[int(i)] = points
+    order = one_turn(tuple(float(t) for t in result.thetas))[0]
+    return SweepAnalysis(result, record, tuple(order), crank)
 
 
 def _effects(study):
