@@ -16,8 +16,8 @@ from constructions.cams.construction import construct
 from constructions.cams.profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER
 from constructions.geometry import Vec
 
-from .scene import SECTIONS, read_cam
-from ..registry import Analysis, Family, register
+from .scene import SECTIONS, CamScene, read_cam
+from ..registry import Analysis, Family
 
 MODEL = "closed-form cam geometry (pressure angle and contact point)"
 
@@ -193,7 +193,7 @@ def _json(study) -> dict[str, Any]:
     return out
 
 
-CAM = register(Family(
+CAM = Family(
     kind="cam",
     analyses={
         "profile": Analysis("profile", (), _profile, label="cam construction"),
@@ -208,9 +208,10 @@ CAM = register(Family(
     model_name=lambda study: MODEL if study.asked("profile") else None,
     scales=_scales,
     notes=_notes,
+    scene_type=CamScene,
     sections=SECTIONS,
     read=read_cam,
     default_analyses=("profile",),
-))
+)
 
 __all__ = ["CAM", "KNIFE"]

@@ -12,19 +12,19 @@ from constructions.forces.free_body import MEMBER, PIN, ROLLER, free_body_analys
 from constructions.forces.free_body_check import equilibrium_solution
 from constructions.record import Construction
 
-from ..registry import Analysis, Family, register
-from .scene import SECTIONS, read_free_body
+from ..registry import Analysis, Family
+from .scene import SECTIONS, FreeBodyScene, read_free_body
 
 MODEL = "equilibrium of the body (3 x 3 linear system)"
 
 
 def _forces(study):
     s = study.scene
-    return free_body_analysis(s.model, fmt=s.units.format)
+    return free_body_analysis(s.body, fmt=s.units.format)
 
 
 def _equilibrium(study):
-    return equilibrium_solution(study.scene.model)
+    return equilibrium_solution(study.scene.body)
 
 
 def _measured(study) -> list:
@@ -60,7 +60,7 @@ def _notes(study) -> tuple[str, ...]:
     f = study.result("forces")
     if f is None:
         return ()
-    b, u = study.scene.model, study.scene.units
+    b, u = study.scene.body, study.scene.units
     out = []
     for s in b.supports:
         if s.kind != MEMBER:
@@ -82,7 +82,7 @@ def _warnings(study) -> tuple[str, ...]:
 
 def _json(study) -> dict[str, Any]:
     s, u = study.scene, study.scene.units
-    b = s.model
+    b = s.body
     pt = lambda p: [u.convert("length", p.x), u.convert("length", p.y)]  # noqa: E731
     out: dict[str, Any] = {"body": {"name": b.name, "points": {n: pt(p) for n, p in b.points.items()},
                                     "fixed": {n: pt(p) for n, p in b.fixed.items()}},
@@ -115,7 +115,7 @@ def _json(study) -> dict[str, Any]:
     return out
 
 
-FREE_BODY = register(Family(
+FREE_BODY = Family(
     kind="free body",
     analyses={
         "forces": Analysis("forces", (), _forces, label="force polygon"),
@@ -130,7 +130,8 @@ FREE_BODY = register(Family(
     model_name=lambda study: MODEL if study.asked("forces") else None,
     scales=_scales,
     notes=_notes,
+    scene_type=FreeBodyScene,
     sections=SECTIONS,
     read=read_free_body,
     default_analyses=("forces",),
-))
+)
