@@ -17,6 +17,7 @@ from constructions.cams.profile import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLE
 from constructions.geometry import Vec
 
 from .scene import SECTIONS, CamScene, read_cam
+from ..glue import construction_of, model_if_asked
 from ..registry import Analysis, Family
 
 MODEL = "closed-form cam geometry (pressure angle and contact point)"
@@ -202,10 +203,10 @@ CAM = Family(
     askable=("profile",),
     measured=_measured,
     analytic=_analytic,
-    construction=lambda study: study.get("profile").construction,
+    construction=construction_of("profile"),
     json=_json,
     warnings=_warnings,
-    model_name=lambda study: MODEL if study.asked("profile") else None,
+    model_name=model_if_asked("profile", MODEL),
     scales=_scales,
     notes=_notes,
     scene_type=CamScene,

@@ -12,6 +12,7 @@ from constructions.forces.free_body import MEMBER, PIN, ROLLER, free_body_analys
 from constructions.forces.free_body_check import equilibrium_solution
 from constructions.record import Construction
 
+from ..glue import measured_of, model_if_asked, scales_of
 from ..registry import Analysis, Family
 from .scene import SECTIONS, FreeBodyScene, read_free_body
 
@@ -27,20 +28,10 @@ def _equilibrium(study):
     return equilibrium_solution(study.scene.body)
 
 
-def _measured(study) -> list:
-    f = study.result("forces")
-    return f.measured() if f is not None else []
-
-
 def _analytic(study):
     if not study.asked("forces"):
         return None
     return dict(study.get("equilibrium").forces)
-
-
-def _scales(study) -> dict[str, float]:
-    f = study.result("forces")
-    return f.scales() if f is not None else {}
 
 
 def _construction(study) -> Construction:
@@ -122,13 +113,13 @@ FREE_BODY = Family(
         "equilibrium": Analysis("equilibrium", (), _equilibrium, label="equilibrium system"),
     },
     askable=("forces",),
-    measured=_measured,
+    measured=measured_of("forces"),
     analytic=_analytic,
     construction=_construction,
     json=_json,
     warnings=_warnings,
-    model_name=lambda study: MODEL if study.asked("forces") else None,
-    scales=_scales,
+    model_name=model_if_asked("forces", MODEL),
+    scales=scales_of("forces"),
     notes=_notes,
     scene_type=FreeBodyScene,
     sections=SECTIONS,

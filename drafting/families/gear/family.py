@@ -16,6 +16,7 @@ from constructions.gears.mesh_check import closed_form, notes_contact_ratio
 from constructions.gears.train_check import torque_check, velocity_check
 from constructions.gears.train_drawing import train_analysis
 
+from ..glue import construction_of, measured_of, model_if_asked
 from ..registry import Analysis, Family
 from .scene import (PAIR_SECTIONS, TRAIN_SECTIONS, GearPairScene, GearTrainScene, cases_check, pair_check,
                     read_gear_pair, read_gear_train)
@@ -32,11 +33,6 @@ def _contact(study):
 
 def _closed(study):
     return closed_form(study.scene.pair)
-
-
-def _pair_measured(study) -> list:
-    a = study.result("contact")
-    return a.measured() if a is not None else []
 
 
 def _pair_analytic(study):
@@ -119,12 +115,12 @@ GEAR_PAIR = Family(
               "contact": Analysis("contact", ("meshes",), _contact, label="contact geometry"),
               "closed forms": Analysis("closed forms", (), _closed, label="closed forms")},
     askable=("contact",),
-    measured=_pair_measured,
+    measured=measured_of("contact"),
     analytic=_pair_analytic,
-    construction=lambda study: study.get("contact").construction,
+    construction=construction_of("contact"),
     json=_pair_json,
     warnings=lambda study: study.result("contact").warnings if study.result("contact") is not None else (),
-    model_name=lambda study: PAIR_MODEL if study.asked("contact") else None,
+    model_name=model_if_asked("contact", PAIR_MODEL),
     notes=_pair_notes,
     scene_type=GearPairScene,
     sections=PAIR_SECTIONS,
@@ -156,11 +152,6 @@ def _train_check(study):
             row["loads"], row["torques"] = torque_check(train, speeds, c.power, c.inp, c.out, held)
         out.append(row)
     return out
-
-
-def _train_measured(study) -> list:
-    a = study.result("speeds")
-    return a.measured() if a is not None else []
 
 
 def _train_analytic(study):
@@ -238,12 +229,12 @@ GEAR_TRAIN = Family(
               "speeds": Analysis("speeds", ("cases",), _speeds, label="tabular method"),
               "check": Analysis("check", ("cases",), _train_check, label="velocity-matching system")},
     askable=("speeds",),
-    measured=_train_measured,
+    measured=measured_of("speeds"),
     analytic=_train_analytic,
-    construction=lambda study: study.get("speeds").construction,
+    construction=construction_of("speeds"),
     json=_train_json,
     warnings=lambda study: (),
-    model_name=lambda study: TRAIN_MODEL if study.asked("speeds") else None,
+    model_name=model_if_asked("speeds", TRAIN_MODEL),
     scales=_train_scales,
     notes=_train_notes,
     scene_type=GearTrainScene,
