@@ -205,7 +205,7 @@ def test_a_load_s_force_is_varied_by_name(tmp_path):
     with the drawn force, and its forces scale with it (a static analysis is linear in the load)."""
     import tomllib
     from drafting.app.batch import variant_study
-    from drafting.scene.vary import read_vary
+    from drafting.families.linkage.vary import read_vary
     text = STATIC.read_text() + '\n[vary]\nload.P = { from = "20 N", to = "60 N", step = "5 N" }\n'
     data = tomllib.loads(text)
     scene = parse_scene(text, tmp_path / "p.toml")
@@ -249,7 +249,7 @@ def test_a_mass_and_a_pivot_are_varied_where_the_scene_gives_them(tmp_path, vary
     import tomllib
     from drafting.app.batch import variant_study
     from drafting.study.study import Study
-    from drafting.scene.vary import read_vary
+    from drafting.families.linkage.vary import read_vary
     base_text = DALEMBERT.read_text()
     text = base_text + f"\n[vary]\n{vary}\n"
     data = tomllib.loads(text)

@@ -1,59 +1,26 @@
-"""A new scene family plugs in through the registry alone: its own sections, analyses with dependencies,
-measured and analytic values, construction and JSON -- read, solved lazily, checked, rendered and
-exported by the same scene reader, study, CLI and sheets, with no linkage module touched."""
+"""A new scene family plugs in as a package of its own, found through the "drafting.families" entry points:
+its own sections, analyses with dependencies, measured and analytic values, construction and JSON -- read,
+solved lazily, checked, rendered and exported by the same scene reader, study, CLI and sheets, with no
+module of drafting/ touched.  The family is tests/rod_plugin/rod_family.py; the fixture writes the
+metadata of a distribution declaring it (a dist-info folder with entry_points.txt) onto sys.path."""
 
 from __future__ import annotations
 
 import json
+import sys
+from importlib.metadata import entry_points
+from pathlib import Path
 
 import pytest
 
-from constructions.entities import Diagram, Note, Role, Segment
-from constructions.geometry import Vec
-from constructions.quantities import Measured
-from constructions.record import Construction, Value
-from drafting.families.registry import FAMILIES, Analysis, Family, register
+from drafting.families import registry
+from drafting.families.registry import FAMILIES, GROUP, family
 from drafting.scene.reader import SceneError, parse_scene
 from drafting.study.study import Study
 
+PLUGIN = Path(__file__).resolve().parent / "rod_plugin"
+KIND = "rod (test)"
 
-def _read(r, units):
-    t = r.table("rod", {"length"}, {"length"})
-    length = r.quantity("rod.length", t["length"], "length", units)
-    if length <= 0:
-        raise r.fail("rod.length", "must be positive")
-    return {"model": length}
-
-
-def _drawing(study):
-    length = study.scene.model
-    rec = Construction("Rod").then("Draw the rod, $l long.",
-                                   Segment("rod", Role.GIVEN, Diagram.SPACE, Vec(0, 0), Vec(length, 0)),
-                                   Note("note", Role.NOTE, Diagram.SPACE, Vec(length / 2, length / 10), "rod"),
-                                   values={"l": Value("length", length)})
-    return rec
-
-
-def _doubled(study):
-    return 2 * study.get("rod")
-
-
-ROD = Family(
-    kind="rod (test)",
-    analyses={"rod": Analysis("rod", (), lambda study: study.scene.model),
-              "doubled": Analysis("doubled", ("rod",), _doubled, label="doubled rod")},
-    askable=("rod", "doubled"),
-    measured=lambda study: ([Measured("L2", "length", study.get("doubled"))] if study.asked("doubled") else []),
-    analytic=lambda study: {"L2": 2 * study.scene.model},
-    construction=_drawing,
-    json=lambda study: {"doubled_mm": study.scene.units.convert("length", study.get("doubled"))}
-    if study.asked("doubled") else {},
-    warnings=lambda study: (),
-    model_name=lambda study: "twice the length",
-    sections=frozenset({"rod"}),
-    read=_read,
-    default_analyses=("rod",),
-)
 
 SCENE = '''kind = "rod (test)"
 [drawing]
@@ -66,10 +33,26 @@ analyses = ["doubled"]
 
 
 @pytest.fixture
-def rod_family():
-    register(ROD)
-    yield ROD
-    del FAMILIES[ROD.kind]
+def rod_family(tmp_path, monkeypatch):
+    """The rod family installed as a distribution of its own: its module on sys.path and a dist-info
+    declaring it under the entry-point group; drafting finds it when a scene names its kind."""
+    info = tmp_path / "rod_family-0.1.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: rod-family\nVersion: 0.1\n")
+    (info / "entry_points.txt").write_text(f"[{GROUP}]\nrod = rod_family:ROD\n")
+    monkeypatch.syspath_prepend(str(PLUGIN))
+    monkeypatch.syspath_prepend(str(tmp_path))
+    assert KIND not in FAMILIES
+    yield family(KIND)
+    del FAMILIES[KIND]
+    sys.modules.pop("rod_family", None)
+
+
+def test_the_family_is_found_through_its_entry_point(rod_family):
+    (ep,) = [ep for ep in entry_points(group=GROUP) if ep.name == "rod"]
+    assert ep.value == "rod_family:ROD" and ep.load() is rod_family and rod_family.kind == KIND
+    assert registry.families()[KIND] is rod_family
+    assert not Path(sys.modules["rod_family"].__file__).is_relative_to(Path(registry.__file__).parents[1])
 
 
 def test_a_new_family_runs_through_reader_study_check_and_json(rod_family, tmp_path, capsys):

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+from importlib.metadata import entry_points
 from pathlib import Path
 
 import numpy as np
@@ -21,7 +22,7 @@ from constructions.forces.rigid_body import (ImproperlyConstrained, RigidBody, S
 from constructions.forces.free_body_check import equilibrium_matrix, equilibrium_solution
 from constructions.geometry import Vec
 from drafting.app.cli import main
-from drafting.families.registry import BUILTIN, family
+from drafting.families.registry import GROUP, family
 from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study
 from drafting.study.worked import sheets_for
@@ -132,7 +133,7 @@ def test_loader_sheet_draws_the_culmann_construction():
 
 
 def test_family_is_registered_from_its_own_module():
-    assert "drafting.families.free_body.family" in BUILTIN
+    assert "drafting.families.free_body.family:FREE_BODY" in {ep.value for ep in entry_points(group=GROUP)}
     assert family("free body").askable == ("forces",)
     assert family("linkage").kind == "linkage"
 

@@ -80,7 +80,7 @@ def test_bad_scene_names_file_and_key(tmp_path, capsys, old, new, key, words):
     assert old in EXAMPLE
     p = write(tmp_path, EXAMPLE.replace(old, new, 1))
     with pytest.raises(SceneError) as e:
-        load_scene(p)
+        Study(load_scene(p)).check()          # read, then the family's checks (a linkage's assembly plan)
     assert str(p) in str(e.value) and key in str(e.value) and words in str(e.value)
     code, out, err = run(["solve", str(p)], capsys)
     assert code == 2

@@ -73,13 +73,13 @@ def test_any_edit_gives_a_scene_or_one_clear_sentence(edits):
             continue                   # an earlier edit removed or replaced the parent
     try:
         scene = scene_from_data(data, "fuzz.toml")
+        study = Study(scene).check()        # the family's checks: the assembly plan
     except SceneError as e:
         text = str(e)
         assert text.startswith("fuzz.toml: ") and "\n" not in text and "Traceback" not in text
         assert printable(text) == text and len(text) < 1500      # escaped, long values cut
         return
     assert math.isfinite(scene.angle) and math.isfinite(scene.omega) and scene.omega != 0
-    study = Study(scene)
     try:
         study.comparisons
     except ConstructionError as e:

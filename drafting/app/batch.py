@@ -66,10 +66,11 @@ def variant_study(data: dict, path: Path, seed: int, index: int, notes: list[str
     from .lab import dimensioned
     from ..scene.reader import SceneError, scene_from_data
     from ..study.study import Study
-    from ..scene.vary import draw, read_vary, variant_data
+    from ..scene.vary import draw, variant_data
 
     base = scene_from_data(_plain_data(data), path)
-    ranges = read_vary(data, path, base.units)
+    study = Study(base).check()                         # the family's checks of the scene, as a render's
+    ranges = study.family.vary(data, path, base.units)
     rng = np.random.default_rng([seed, index])
     for attempt in range(1, TRIES + 1):
         ks = draw(ranges, rng)
@@ -183,9 +184,11 @@ def run_batch(scene_path: Path | str, variants: int, seed: int, out: Path | str,
     from . import parallel
     from ..backends.files import ExportError, prepare_folder, remove_stale_temporaries, write_outputs
     from ..scene.reader import SceneError, _read_text, parse_scene
+    from ..study.study import Study
     path = Path(scene_path)
     text = _read_text(path)
     scene = parse_scene(text, path)                     # every check of the scene, [vary] included
+    Study(scene).check()
     data = tomllib.loads(text)
     if "vary" not in data:
         raise SceneError(path, "vary", "is missing: a batch needs the ranges to draw from, e.g. "

@@ -36,6 +36,7 @@ from .answers import KeyItem, key_items
 from ..render.errors import LayoutError
 from ..render.scales import ratio_factor
 from ..layout.sheet import ResultRow, Sheet, SheetInfo, compose_sheets, sheet_date
+from ..families.registry import family
 from ..study.study import Study
 from ..layout.panels import SpacePanel, VectorPanel
 
@@ -221,68 +222,11 @@ def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[K
 
 # ---- the given data ------------------------------------------------------------------------------------
 
-def _sense(w: float) -> str:
-    return "counter-clockwise" if w > 0 else "clockwise" if w < 0 else ""
-
-
 def given_lines(study: Study, items: Sequence[KeyItem] = ()) -> list[str]:
-    """The data of the problem in words, in the scene's units: what a linkage scene states (links,
-    pivots, points, guides, the crank's motion, the loads and masses) and what to find."""
-    s = study.scene
-    u = s.units
-    out: list[str] = []
-    m = s.mechanism
-    if s.kind == "linkage" and m is not None:
-        f = lambda kind, v: u.format(kind, v)                      # noqa: E731
-        out.append("Links: " + ", ".join(f"{''.join(k.joints)} = {f('length', k.length)}"
-                                         for k in sorted(m.links, key=lambda k: k.number)) + ".")
-        out.append("Fixed pivots: " + ", ".join(
-            f"{n} at ({u.convert('length', p.x):.6g}, {u.convert('length', p.y):.6g}) {u.symbol('length')}"
-            for n, p in sorted(m.ground.items())) + ".")
-        for a in m.attached:
-            if a.name.startswith("G") and any(ms.centre == a.name for ms in s.effects.masses):
-                continue
-            link = m.link(a.link)
-            out.append(f"Point {a.name} of link {a.link}: {f('length', a.distance)} from {a.base}, "
-                       f"{f('angle', a.angle)} from {a.base}{link.other(a.base)}.")
-        for sl in m.slides:
-            block = f"block {sl.number} at {sl.joint}" if sl.number is not None else f"pin {sl.joint}"
-            if sl.on is None:
-                out.append(f"The {block} slides on a guide through ({u.convert('length', sl.through.x):.6g}, "
-                           f"{u.convert('length', sl.through.y):.6g}) {u.symbol('length')} at "
-                           f"{f('angle', sl.angle)}.")
-            else:
-                out.append(f"The {block} slides in a slot of link {sl.on}.")
-        crank = m.link(m.crank)
-        motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) at {f('angle', s.angle)}"]
-        if s.omega:
-            motion.append(f"\u03c9_{crank.number} = {f('angular velocity', abs(s.omega))} {_sense(s.omega)}")
-        else:
-            motion.append("at rest")
-        if any(a in study.needed for a in ("acceleration", "forces")):
-            if s.torque is not None:
-                motion.append(f"driven by a torque of {f('torque', abs(s.torque))} {_sense(s.torque)}".rstrip())
-            else:
-                motion.append(f"\u03b1_{crank.number} = {f('angular acceleration', abs(s.alpha))} "
-                              f"{_sense(s.alpha)}".rstrip())
-        out.append(", ".join(motion) + ".")
-        e = s.effects
-        from ..scene.unitset import direction_deg
-        for ld in e.loads:
-            out.append(f"Load {ld.name}: {f('force', ld.force.norm())} at {direction_deg(ld.force):.1f}\u00b0 on "
-                       f"{ld.at} of body {ld.body}.")
-        for cp in e.couples:
-            out.append(f"Couple {cp.name}: {f('torque', abs(cp.torque))} {_sense(cp.torque)} on body {cp.body}.")
-        for ms in e.masses:
-            out.append(f"Body {ms.body}: mass {f('mass', ms.mass)}, centre of gravity {ms.centre}"
-                       + (f", I_G = {f('moment of inertia', ms.inertia)}" if ms.inertia else "") + ".")
-        for sp in e.springs:
-            out.append(f"Spring {sp.name}: stiffness {f('stiffness', sp.stiffness)}, free length "
-                       f"{f('length', sp.free_length)}.")
-        if e.gravity is not None:
-            out.append(f"Gravity g = {f('acceleration', e.gravity.norm())} at {direction_deg(e.gravity):.1f}\u00b0.")
-        for body, mu in sorted(e.friction.items(), key=lambda t: str(t[0])):
-            out.append(f"Friction at {body}: \u03bc = {mu:g}.")
+    """The data of the problem in words, in the scene's units: what the scene's family states
+    (:attr:`~drafting.families.registry.Family.given`: a linkage's links, pivots, points, guides, the
+    crank's motion, the loads and masses) and what to find."""
+    out = list(study.family.given(study))
     if items:
         out.append("Find: " + ", ".join(i.shown for i in items) + " (vectors with their directions, CCW "
                    "from +x; rates with their sense).")
@@ -322,4 +266,5 @@ def write_lab(lab: Lab, out_dir: Path | str, stem: str, formats: Sequence[str] =
 def dimensioned(scene):
     """The scene with its space diagram dimensioned: problem sheets are, unless the scene says
     ``[drawing] dimensions = false``."""
-    return replace(scene, dimensions=True) if scene.kind == "linkage" and scene.dimensions is None else scene
+    problem = family(scene.kind).dimensioned_problem
+    return replace(scene, dimensions=True) if problem and scene.dimensions is None else scene

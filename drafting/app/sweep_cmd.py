@@ -20,7 +20,9 @@ import numpy as np
 
 from ..scene import limits
 from .progress import Progress
+from ..families.registry import families, family
 from ..scene.reader import SceneError, load_scene
+from ..study.study import Study
 from ..scene.textsafe import printable
 from ..scene.units import UnitError, to_si, unit_symbol
 
@@ -55,23 +57,26 @@ def crank_angles(start: float, steps: int | None, every: str | None) -> np.ndarr
 
 
 def run_sweep(path: Path, steps: int | None = None, every: str | None = None):
-    """(scene, sweep) for the scene file at ``path``.  Raises SweepInputError."""
+    """(scene, sweep) for the scene file at ``path``, the sweep run by the scene's study (the family's
+    sweeping analysis, :attr:`~drafting.families.registry.Family.sweeps`).  Raises SweepInputError."""
     from constructions.errors import ConstructionError
-    from constructions.sweep import sweep
     try:
         scene = load_scene(path)
+        Study(scene).check()
     except SceneError as e:
         raise SweepInputError(str(e)) from None
-    if scene.mechanism is None:
-        raise SweepInputError(f"{printable(str(path))}: a sweep needs a linkage scene, not a {scene.kind} scene")
-    if scene.torque is not None:
-        raise SweepInputError(f"{printable(str(path))}: input.torque: a sweep needs the crank's motion (omega and "
-                              f"alpha); at a given torque the motion over the cycle is a simulation, which "
-                              f"this version does not run")
+    fam = family(scene.kind)
+    if fam.sweeps is None:
+        kinds = " or ".join(sorted(k for k, f in families().items() if f.sweeps is not None))
+        raise SweepInputError(f"{printable(str(path))}: a sweep needs a {kinds} scene, not a {scene.kind} scene")
+    why = fam.cannot_sweep(scene)
+    if why is not None:
+        raise SweepInputError(f"{printable(str(path))}: {why}")
     thetas = crank_angles(scene.angle, steps, every)
     bar = Progress(thetas.size, "sweep")
+    study = Study(scene, {"crank angles": thetas, "progress": lambda i, n: bar.update(i)})
     try:
-        result = sweep(scene.mechanism, thetas, scene.omega, scene.alpha, progress=lambda i, n: bar.update(i))
+        result = study.get(fam.sweeps)
     except ConstructionError as e:
         raise SweepInputError(f"{printable(str(path))}: {e}") from None
     finally:
@@ -185,7 +190,6 @@ def write_cycle_sheet(scene, out_dir: Path) -> list[str]:
     from constructions.errors import ConstructionError
     from ..render.errors import LayoutError
     from ..backends.files import ExportError, write_sheets
-    from ..study.study import Study
     from ..study.worked import sheets_for
     study = Study(replace(scene, analyses=("sweep",), find=None))
     try:

@@ -48,11 +48,30 @@ class Family:
     warnings: Callable[[Any], tuple[str, ...]]
     model_name: Callable[[Any], str | None] = field(default=lambda study: None)
     scales: Callable[[Any], dict] = field(default=lambda study: {})
+    scene_type: type = object
+    """The family's scene: a subclass of :class:`drafting.scene.reader.Scene` (the shared header) whose own
+    fields are the family's typed state."""
     sections: frozenset[str] = frozenset()
     """The top-level sections of a scene file this family reads (besides kind, drawing, units, ask)."""
     read: Callable[[Any, Any], dict] = field(default=lambda reader, units: {})
-    """``read(reader, units)`` reads the family's sections with the shared reader (whose errors name the
-    file and key) and returns the Scene fields of its state (``mechanism``/``angle``/... or ``model``)."""
+    """``read(reader, units)`` reads the family's sections with the public scene reader
+    (:class:`drafting.scene.reader.SceneReader`, whose errors name the file and key) and returns the fields
+    of its ``scene_type`` beyond the header.  Reading only reads: what needs solving is an analysis."""
+    checks: tuple[str, ...] = ()
+    """Analyses that finish checking a scene (a linkage's assembly plan, a train's cases): every run does
+    them first, and a scene they find wrong is a SceneError naming the key, as the reader's are."""
+    vary: Callable[[dict, Any, Any], tuple] | None = None
+    """``vary(data, path, units)``: the ranges of the scene's ``[vary]`` (:mod:`drafting.scene.vary`); None
+    for a family that cannot vary (a scene of it with ``[vary]`` is told so)."""
+    given: Callable[[Any], list[str]] = field(default=lambda study: [])
+    """What a lab's problem sheet states in words (a linkage's links, pivots, input, loads)."""
+    dimensioned_problem: bool = False
+    """A problem sheet dimensions the space diagram unless the scene says ``dimensions = false``."""
+    sweeps: str | None = None
+    """The analysis that sweeps the input over a caller's grid (``study.options["crank angles"]``, with a
+    ``"progress"`` callback): what ``drafting sweep`` runs; None for a family that cannot sweep."""
+    cannot_sweep: Callable[[Any], str | None] = field(default=lambda scene: None)
+    """Why a scene of a family that sweeps cannot be swept ("key: sentence"), or None."""
     notes: Callable[[Any], tuple[str, ...]] = field(default=lambda study: ())
     """What the sheet and the results say about the scene besides its warnings (a linkage's class)."""
     default_analyses: tuple[str, ...] = ()
@@ -75,25 +94,39 @@ def register(family: Family) -> Family:
     return family
 
 
-BUILTIN = (
-    "drafting.families.linkage.family",
-    "drafting.families.free_body.family",
-    "drafting.families.gear.family",
-    "drafting.families.cam.family",
-)
-"""The modules of the families this package ships; each registers its family when imported.  Named, not
-imported here, so this registry depends on no family (a family depends on it)."""
+GROUP = "drafting.families"
+"""The entry-point group a family is found under: each entry names a :class:`Family` object, e.g.
+``linkage = "drafting.families.linkage.family:LINKAGE"`` in pyproject.toml.  A new family is a package that
+declares one; nothing in drafting/ changes."""
 
 
-def builtin_families() -> None:
-    """Register the families this package ships (idempotent: a module registers once, on import)."""
-    import importlib
-    for name in BUILTIN:
-        importlib.import_module(name)
+def discover() -> None:
+    """Register every family the installed distributions declare under :data:`GROUP` that is not
+    registered yet (a kind registered by hand, as a test does, is left as it is)."""
+    from importlib.metadata import entry_points
+    for ep in entry_points(group=GROUP):
+        found = ep.load()
+        if found.kind not in FAMILIES:
+            register(found)
+
+
+_discovered = False
+
+
+def families() -> dict[str, Family]:
+    """Every registered family by kind, the installed ones found on first use."""
+    global _discovered
+    if not _discovered:
+        _discovered = True
+        discover()
+    return FAMILIES
 
 
 def family(kind: str) -> Family:
-    builtin_families()
+    """The family of ``kind``; a kind not known yet has the entry points looked at again (a family
+    installed since), then KeyError."""
+    if kind not in families():
+        discover()
     try:
         return FAMILIES[kind]
     except KeyError:

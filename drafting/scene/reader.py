@@ -14,10 +14,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from constructions.forces.effects import NO_EFFECTS, Effects
 from constructions.geometry import Vec
-from constructions.mechanisms.model import Mechanism
 
+from ..families.registry import Family, families, family
 from .unitset import KEYS as UNIT_KEYS, Units
 from . import limits
 from .textsafe import cut, cut_middle, one_line, printable
@@ -31,8 +30,8 @@ ORIENTATIONS = ("landscape", "portrait")
 
 COMMON_KEYS = frozenset({"kind", "drawing", "units", "ask", "vary"})
 """The sections every scene family shares; each family adds its own (Family.sections).  ``[vary]`` (the
-ranges a batch of lab sheets draws from: :mod:`drafting.scene.vary`) is checked here and otherwise left to
-``drafting batch``."""
+ranges a batch of lab sheets draws from: :mod:`drafting.scene.vary`, the keys the family's) is checked here
+and otherwise left to ``drafting batch``."""
 
 
 class SceneError(Exception):
@@ -49,11 +48,9 @@ class SceneError(Exception):
 
 @dataclass(frozen=True)
 class Scene:
-    """A read scene: the shared sections (drawing, units, what it asks) and its family's own state.
-
-    A linkage fills ``mechanism``, the input (``angle``, ``omega``, ``alpha`` or the ``torque`` it follows
-    from) and the ``effects`` it declares (loads, masses, gravity, springs, friction; none unless the scene
-    gives them); another family puts its model in ``model``."""
+    """The shared header of a read scene: the drawing, the units and what it asks for.  Each family's
+    state is a subclass of it (its own typed fields: a linkage's mechanism and input, a cam's model ...),
+    named by the family (:attr:`~drafting.families.registry.Family.scene_type`)."""
 
     path: Path
     title: str
@@ -63,15 +60,8 @@ class Scene:
     units: Units
     analyses: tuple[str, ...]
     find: tuple[str, ...] | None
-    kind: str = "linkage"
-    mechanism: Mechanism | None = None
-    angle: float = 0.0    # crank angle, rad CCW from +x
-    omega: float = 0.0    # crank angular velocity, rad/s CCW positive
-    alpha: float = 0.0    # crank angular acceleration, rad/s^2 CCW positive
-    torque: float | None = None   # torque on the crank, N m CCW positive: alpha follows from it (not given)
-    model: Any = None
-    effects: Effects = NO_EFFECTS
-    dimensions: bool | None = None   # [drawing] dimensions: the space diagram dimensioned as a drafter would
+    kind: str
+    dimensions: bool | None          # [drawing] dimensions: the space diagram dimensioned as a drafter would
                                      # (None: not said; a problem sheet dimensions it then)
 
     def _repr_html_(self) -> str:
@@ -152,7 +142,7 @@ def scene_from_data(data: dict[str, Any], path: Path | str = "<scene>") -> Scene
         limits.check_data(data)
     except limits.LimitError as e:
         raise SceneError(path, e.key, e.problem) from None
-    reader = _Reader(path, data)
+    reader = SceneReader(path, data)
     scene = reader.scene()
     bad = limits.length_ratio_problem(reader.lengths)
     if bad:
@@ -165,7 +155,11 @@ def scene_from_data(data: dict[str, Any], path: Path | str = "<scene>") -> Scene
     return scene
 
 
-class _Reader:
+class SceneReader:
+    """The one reader of a scene's data: the header here, each family's sections by its own section
+    reader (``Family.read``) through these helpers, whose every error is one :class:`SceneError` naming
+    the file and the key.  ``lengths`` collects every length read, for the limits' length ratio."""
+
     def __init__(self, path: Path, data: dict[str, Any]) -> None:
         self.path, self.data = path, data
         self.lengths: list[tuple[str, float]] = []     # (key, SI) of every length read: limits
@@ -251,19 +245,9 @@ class _Reader:
 
     # -- sections --------------------------------------------------------------------------------
     def scene(self) -> Scene:
-        from ..families.registry import FAMILIES, family
+        """The scene: the header, the family's state (its Scene subclass), the [vary] ranges checked."""
         kind = self.data.get("kind", "linkage")
-        fam = None
-        if isinstance(kind, str):
-            try:
-                fam = family(kind)
-            except KeyError:
-                fam = None
-        if fam is None:
-            kinds = ", ".join(sorted(FAMILIES))
-            if kind in PLANNED_KINDS:
-                raise self.fail("kind", f"{kind!r} scenes are not available yet; this version reads {kinds} scenes")
-            raise self.fail("kind", f"{kind!r} is not a scene kind; choose from {kinds}")
+        fam = self._family(kind)
         allowed = COMMON_KEYS | fam.sections
         unknown = sorted(set(self.data) - allowed)
         if unknown:
@@ -281,9 +265,7 @@ class _Reader:
         if dimensions is not None and not isinstance(dimensions, bool):
             raise self.fail("drawing.dimensions", "must be true or false (dimension the space diagram)")
         units = self.units()
-        if "vary" in self.data:
-            from .vary import read_vary
-            read_vary(self.data, self.path, units)
+        self.ranges(fam, kind, units)
         state = fam.read(self, units)
         ask = self.table("ask", {"analyses", "find"})
         analyses = ask.get("analyses", list(fam.default_analyses))
@@ -298,8 +280,33 @@ class _Reader:
         find = ask.get("find")
         if find is not None and (not isinstance(find, list) or not all(isinstance(f, str) for f in find)):
             raise self.fail("ask.find", "must be a list of quantities, e.g. [\"V_C\", \"omega_2\"]")
-        return Scene(self.path, title, number, paper, orientation, units, tuple(dict.fromkeys(analyses)),
-                     tuple(find) if find is not None else None, kind, dimensions=dimensions, **state)
+        return fam.scene_type(self.path, title, number, paper, orientation, units, tuple(dict.fromkeys(analyses)),
+                              tuple(find) if find is not None else None, kind, dimensions, **state)
+
+    def ranges(self, fam: Family, kind: str, units: Units) -> tuple:
+        """The scene's ``[vary]`` ranges, read by its family (empty when it has none)."""
+        vary = self.data.get("vary")
+        if vary is None:
+            return ()
+        if not isinstance(vary, dict):
+            raise self.fail("vary", "must be a table of ranges, e.g. crank_angle = [\"30 deg\", \"150 deg\"]")
+        if fam.vary is None:
+            kinds = " and ".join(sorted(k for k, f in families().items() if f.vary is not None))
+            raise self.fail("vary", f"is read for {kinds} scenes; this is a {kind!r} scene")
+        if not vary:
+            raise self.fail("vary", "is empty; give at least one range, e.g. crank_angle = [\"30 deg\", \"150 deg\"]")
+        return fam.vary(self.data, self.path, units)
+
+    def _family(self, kind: Any) -> Family:
+        if isinstance(kind, str):
+            try:
+                return family(kind)
+            except KeyError:
+                pass
+        kinds = ", ".join(sorted(families()))
+        if kind in PLANNED_KINDS:
+            raise self.fail("kind", f"{kind!r} scenes are not available yet; this version reads {kinds} scenes")
+        raise self.fail("kind", f"{kind!r} is not a scene kind; choose from {kinds}")
 
     def units(self) -> Units:
         t = self.table("units", set(UNIT_KEYS))

@@ -9,7 +9,7 @@ accelerations.  ``Study.ran`` lists what has been computed so far (e.g. "positio
 from __future__ import annotations
 
 from functools import cached_property
-from typing import Any
+from typing import Any, Mapping
 
 from constructions.check import Comparison, compare
 from constructions.geometry import Vec
@@ -22,9 +22,13 @@ from ..scene.unitset import direction_deg
 
 
 class Study:
-    def __init__(self, scene: Scene) -> None:
+    """The lazy study of ``scene``.  ``options`` are what a caller hands an analysis beyond the scene (the
+    crank angles and progress callback of ``drafting sweep``: :attr:`Family.sweeps`)."""
+
+    def __init__(self, scene: Scene, options: Mapping[str, Any] | None = None) -> None:
         self.scene = scene
         self.family: Family = family(scene.kind)
+        self.options: Mapping[str, Any] = dict(options or {})
         self.ran: list[str] = []
         self._results: dict[str, Any] = {}
 
@@ -78,8 +82,16 @@ class Study:
             return self.result(name)
         raise AttributeError(name)
 
+    def check(self) -> "Study":
+        """Run the family's checks of the scene (:attr:`Family.checks`): SceneError where it is wrong."""
+        for name in self.family.checks:
+            self.get(name)
+        return self
+
     def run(self) -> "Study":
-        """Run every analysis the scene calls for (errors propagate as ConstructionError)."""
+        """Run every analysis the scene calls for, the family's checks first (errors propagate as
+        SceneError or ConstructionError)."""
+        self.check()
         for name in self.needed:
             self.get(name)
         self.comparisons

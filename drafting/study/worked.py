@@ -1,11 +1,12 @@
-"""What a solved study becomes on paper: its worked-solution sheets, and the built-in example scene."""
+"""What a solved study becomes on paper: its worked-solution sheets, and the built-in example scene.
+
+Takes a :class:`~drafting.study.study.Study` without importing it: the study hands itself here
+(``Study.sheets``), so the two modules do not import each other."""
 
 from __future__ import annotations
 
 from importlib import resources
 from pathlib import Path
-
-from .study import Study
 
 
 def builtin_example() -> Path:
@@ -13,7 +14,7 @@ def builtin_example() -> Path:
     return Path(str(resources.files("drafting.app") / "examples" / "notes-velocity-example-1.toml"))
 
 
-def sheets_for(study: Study):
+def sheets_for(study):
     """The sheets of a solved study: one, or as many pages as its diagrams need to stay legible."""
     from ..backends.public_sheet import Sheet
     from ..layout.sheet import ResultRow, SheetInfo, compose_sheets, sheet_date
@@ -24,6 +25,6 @@ def sheets_for(study: Study):
     return tuple(Sheet.of(page) for page in compose_sheets(study.construction, info, rows))
 
 
-def sheet_for(study: Study):
+def sheet_for(study):
     """The first sheet of a study (callers that want one page)."""
     return sheets_for(study)[0]

@@ -16,8 +16,9 @@ from constructions.cams.construction import construct
 from constructions.cams.follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER
 from constructions.geometry import Vec
 
-from .scene import SECTIONS, read_cam
-from ..registry import Analysis, Family, register
+from .scene import SECTIONS, CamScene, read_cam
+from ..glue import construction_of, model_if_asked
+from ..registry import Analysis, Family
 
 MODEL = "closed-form cam geometry (pressure angle and contact point)"
 
@@ -193,7 +194,7 @@ def _json(study) -> dict[str, Any]:
     return out
 
 
-CAM = register(Family(
+CAM = Family(
     kind="cam",
     analyses={
         "profile": Analysis("profile", (), _profile, label="cam construction"),
@@ -202,15 +203,16 @@ CAM = register(Family(
     askable=("profile",),
     measured=_measured,
     analytic=_analytic,
-    construction=lambda study: study.get("profile").construction,
+    construction=construction_of("profile"),
     json=_json,
     warnings=_warnings,
-    model_name=lambda study: MODEL if study.asked("profile") else None,
+    model_name=model_if_asked("profile", MODEL),
     scales=_scales,
     notes=_notes,
+    scene_type=CamScene,
     sections=SECTIONS,
     read=read_cam,
     default_analyses=("profile",),
-))
+)
 
 __all__ = ["CAM", "KNIFE"]

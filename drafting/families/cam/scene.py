@@ -27,6 +27,7 @@ from constructions.cams.laws import DWELL, RETURN, RISE, SEGMENT_KINDS, Program,
 from constructions.cams.follower import FLAT, FOLLOWERS, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
 from constructions.cams.profile import check_face
 
+from ...scene.reader import Scene, SceneReader
 from ...scene.unitset import Units
 
 SECTIONS = frozenset({"cam", "follower", "segment"})
@@ -47,7 +48,14 @@ class CamModel:
     divisions: int
 
 
-def read_cam(r, units: Units) -> dict:
+@dataclass(frozen=True)
+class CamScene(Scene):
+    """A cam scene: its ``model`` (program, follower, speed, divisions)."""
+
+    model: CamModel
+
+
+def read_cam(r: SceneReader, units: Units) -> dict:
     if "cam" not in r.data:
         raise r.fail("cam", "is missing: give the cam's base_radius and sense, e.g. [cam] base_radius = \"50 mm\"")
     t = r.table("cam", CAM_KEYS, {"base_radius"})

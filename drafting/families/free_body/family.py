@@ -13,35 +13,26 @@ from constructions.forces.rigid_body import MEMBER, PIN, ROLLER
 from constructions.forces.free_body_check import equilibrium_solution
 from constructions.record import Construction
 
-from ..registry import Analysis, Family, register
-from .scene import SECTIONS, read_free_body
+from ..glue import measured_of, model_if_asked, scales_of
+from ..registry import Analysis, Family
+from .scene import SECTIONS, FreeBodyScene, read_free_body
 
 MODEL = "equilibrium of the body (3 x 3 linear system)"
 
 
 def _forces(study):
     s = study.scene
-    return free_body_analysis(s.model, fmt=s.units.format)
+    return free_body_analysis(s.body, fmt=s.units.format)
 
 
 def _equilibrium(study):
-    return equilibrium_solution(study.scene.model)
-
-
-def _measured(study) -> list:
-    f = study.result("forces")
-    return f.measured() if f is not None else []
+    return equilibrium_solution(study.scene.body)
 
 
 def _analytic(study):
     if not study.asked("forces"):
         return None
     return dict(study.get("equilibrium").forces)
-
-
-def _scales(study) -> dict[str, float]:
-    f = study.result("forces")
-    return f.scales() if f is not None else {}
 
 
 def _construction(study) -> Construction:
@@ -61,7 +52,7 @@ def _notes(study) -> tuple[str, ...]:
     f = study.result("forces")
     if f is None:
         return ()
-    b, u = study.scene.model, study.scene.units
+    b, u = study.scene.body, study.scene.units
     out = []
     for s in b.supports:
         if s.kind != MEMBER:
@@ -83,7 +74,7 @@ def _warnings(study) -> tuple[str, ...]:
 
 def _json(study) -> dict[str, Any]:
     s, u = study.scene, study.scene.units
-    b = s.model
+    b = s.body
     pt = lambda p: [u.convert("length", p.x), u.convert("length", p.y)]  # noqa: E731
     out: dict[str, Any] = {"body": {"name": b.name, "points": {n: pt(p) for n, p in b.points.items()},
                                     "fixed": {n: pt(p) for n, p in b.fixed.items()}},
@@ -116,22 +107,23 @@ def _json(study) -> dict[str, Any]:
     return out
 
 
-FREE_BODY = register(Family(
+FREE_BODY = Family(
     kind="free body",
     analyses={
         "forces": Analysis("forces", (), _forces, label="force polygon"),
         "equilibrium": Analysis("equilibrium", (), _equilibrium, label="equilibrium system"),
     },
     askable=("forces",),
-    measured=_measured,
+    measured=measured_of("forces"),
     analytic=_analytic,
     construction=_construction,
     json=_json,
     warnings=_warnings,
-    model_name=lambda study: MODEL if study.asked("forces") else None,
-    scales=_scales,
+    model_name=model_if_asked("forces", MODEL),
+    scales=scales_of("forces"),
     notes=_notes,
+    scene_type=FreeBodyScene,
     sections=SECTIONS,
     read=read_free_body,
     default_analyses=("forces",),
-))
+)

@@ -21,6 +21,7 @@ naming the file and the key; the supports are checked for static determinacy and
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from typing import Any
 
 from constructions.errors import ConstructionError, DegenerateInput
@@ -30,6 +31,7 @@ from constructions.geometry import Vec
 
 from ...scene import limits
 from ...scene.effects import polar
+from ...scene.reader import Scene, SceneReader
 from ...scene.unitset import Units
 
 SUPPORT_SECTIONS = (MEMBER, PIN, ROLLER, GUIDE)
@@ -49,13 +51,20 @@ CONSTRUCTION_FORCES = ("R", "F_KL")
 _FORCE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)?")
 
 
-def read_free_body(r, units: Units) -> dict:
-    """The free-body sections of a scene -> ``{"model": RigidBody}``."""
-    return {"model": _FreeBodyReader(r, units).read()}
+@dataclass(frozen=True)
+class FreeBodyScene(Scene):
+    """A free-body scene: the rigid ``body`` with its points, loads, couples and supports."""
+
+    body: RigidBody
+
+
+def read_free_body(r: SceneReader, units: Units) -> dict:
+    """The free-body sections of a scene -> ``{"body": RigidBody}``."""
+    return {"body": _FreeBodyReader(r, units).read()}
 
 
 class _FreeBodyReader:
-    def __init__(self, r, units: Units) -> None:
+    def __init__(self, r: SceneReader, units: Units) -> None:
         self.r, self.units = r, units
         self.names: dict[str, str] = {}          # force name -> the key that gave it
 

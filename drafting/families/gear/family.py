@@ -17,8 +17,10 @@ from constructions.gears.mesh_check import closed_form, notes_contact_ratio
 from constructions.gears.train_check import torque_check, velocity_check
 from constructions.gears.train_drawing import train_analysis
 
-from ..registry import Analysis, Family, register
-from .scene import PAIR_SECTIONS, TRAIN_SECTIONS, read_gear_pair, read_gear_train
+from ..glue import construction_of, measured_of, model_if_asked
+from ..registry import Analysis, Family
+from .scene import (PAIR_SECTIONS, TRAIN_SECTIONS, GearPairScene, GearTrainScene, cases_check, pair_check,
+                    read_gear_pair, read_gear_train)
 
 PAIR_MODEL = "closed forms of the contact geometry (tangent lengths to the base circles)"
 TRAIN_MODEL = "pitch-point velocity matching and member equilibrium (linear systems)"
@@ -27,20 +29,15 @@ TRAIN_MODEL = "pitch-point velocity matching and member equilibrium (linear syst
 # -- gear pair -------------------------------------------------------------------------------------------
 
 def _contact(study):
-    return mesh_analysis(study.scene.model)
+    return mesh_analysis(study.scene.pair)
 
 
 def _closed(study):
-    return closed_form(study.scene.model)
-
-
-def _pair_measured(study) -> list:
-    a = study.result("contact")
-    return a.measured() if a is not None else []
+    return closed_form(study.scene.pair)
 
 
 def _pair_analytic(study):
-    return closed_form(study.scene.model).values() if study.asked("contact") else None
+    return closed_form(study.scene.pair).values() if study.asked("contact") else None
 
 
 def _pair_limits(pair) -> dict[str, Any]:
@@ -57,7 +54,7 @@ def _pair_notes(study) -> tuple[str, ...]:
     a = study.result("contact")
     if a is None:
         return ()
-    pair, g = study.scene.model, a.geometry
+    pair, g = study.scene.pair, a.geometry
     cf = closed_form(pair)
     u = study.scene.units
     out = [f"Contact ratio {g.contact_ratio:.4f} drawn (AB / p_b = {u.format('length', g.path)} / "
@@ -86,7 +83,7 @@ def _pair_notes(study) -> tuple[str, ...]:
 
 
 def _pair_json(study) -> dict[str, Any]:
-    pair = study.scene.model
+    pair = study.scene.pair
     u = study.scene.units
     L = lambda x: u.convert("length", x)  # noqa: E731
 
@@ -113,22 +110,25 @@ def _pair_json(study) -> dict[str, Any]:
     return out
 
 
-GEAR_PAIR = register(Family(
+GEAR_PAIR = Family(
     kind="gear pair",
-    analyses={"contact": Analysis("contact", (), _contact, label="contact geometry"),
+    analyses={"meshes": Analysis("meshes", (), pair_check, label="contact geometry"),   # recorded with contact
+              "contact": Analysis("contact", ("meshes",), _contact, label="contact geometry"),
               "closed forms": Analysis("closed forms", (), _closed, label="closed forms")},
     askable=("contact",),
-    measured=_pair_measured,
+    measured=measured_of("contact"),
     analytic=_pair_analytic,
-    construction=lambda study: study.get("contact").construction,
+    construction=construction_of("contact"),
     json=_pair_json,
     warnings=lambda study: study.result("contact").warnings if study.result("contact") is not None else (),
-    model_name=lambda study: PAIR_MODEL if study.asked("contact") else None,
+    model_name=model_if_asked("contact", PAIR_MODEL),
     notes=_pair_notes,
+    scene_type=GearPairScene,
     sections=PAIR_SECTIONS,
     read=read_gear_pair,
+    checks=("meshes",),
     default_analyses=("contact",),
-))
+)
 
 
 # -- gear train ------------------------------------------------------------------------------------------
@@ -138,12 +138,12 @@ def _rate(study):
 
 
 def _speeds(study):
-    train, cases = study.scene.model
+    train, cases = study.scene.train, study.scene.cases
     return train_analysis(train, cases)
 
 
 def _train_check(study):
-    train, cases = study.scene.model
+    train, cases = study.scene.train, study.scene.cases
     out = []
     for c in cases:
         speeds, rank, res = velocity_check(train, c.givens)
@@ -153,11 +153,6 @@ def _train_check(study):
             row["loads"], row["torques"] = torque_check(train, speeds, c.power, c.inp, c.out, held)
         out.append(row)
     return out
-
-
-def _train_measured(study) -> list:
-    a = study.result("speeds")
-    return a.measured() if a is not None else []
 
 
 def _train_analytic(study):
@@ -177,7 +172,7 @@ def _train_analytic(study):
 
 
 def _train_scales(study) -> dict[str, float]:
-    train, cases = study.scene.model
+    train, cases = study.scene.train, study.scene.cases
     return {"angular velocity": max(abs(g.speed) for c in cases for g in c.givens)}
 
 
@@ -202,7 +197,7 @@ def _train_notes(study) -> tuple[str, ...]:
 
 
 def _train_json(study) -> dict[str, Any]:
-    train, cases = study.scene.model
+    train, cases = study.scene.train, study.scene.cases
     u = study.scene.units
     out: dict[str, Any] = {"gears": {g.name: {"teeth": g.teeth, "shaft": g.member, "carrier": g.carrier,
                                               "internal": g.internal,
@@ -229,20 +224,23 @@ def _train_json(study) -> dict[str, Any]:
     return out
 
 
-GEAR_TRAIN = register(Family(
+GEAR_TRAIN = Family(
     kind="gear train",
-    analyses={"speeds": Analysis("speeds", (), _speeds, label="tabular method"),
-              "check": Analysis("check", (), _train_check, label="velocity-matching system")},
+    analyses={"cases": Analysis("cases", (), cases_check, label="tabular method"),      # recorded with speeds
+              "speeds": Analysis("speeds", ("cases",), _speeds, label="tabular method"),
+              "check": Analysis("check", ("cases",), _train_check, label="velocity-matching system")},
     askable=("speeds",),
-    measured=_train_measured,
+    measured=measured_of("speeds"),
     analytic=_train_analytic,
-    construction=lambda study: study.get("speeds").construction,
+    construction=construction_of("speeds"),
     json=_train_json,
     warnings=lambda study: (),
-    model_name=lambda study: TRAIN_MODEL if study.asked("speeds") else None,
+    model_name=model_if_asked("speeds", TRAIN_MODEL),
     scales=_train_scales,
     notes=_train_notes,
+    scene_type=GearTrainScene,
     sections=TRAIN_SECTIONS,
     read=read_gear_train,
+    checks=("cases",),
     default_analyses=("speeds",),
-))
+)

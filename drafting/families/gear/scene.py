@@ -23,21 +23,25 @@ A gear train (``kind = "gear train"``)::
     [[case]]    name = "carrier held"; driven = "1"; speed = "1000 rpm"; sense = "cw"; held = "C" (a planetary
                 train needs one member held); power = "30 kW" and output = "3" (optional: torques, tooth loads)
 
-Read with the shared reader, so every error is one sentence naming the file and the key.
+Read with the public scene reader, so every error is one sentence naming the file and the key.  Reading
+only reads: whether the pair meshes and each case of a train can be solved are the families' checks
+(:func:`pair_check`, :func:`cases_check`), run first by the study.
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 from constructions.errors import ConstructionError, DegenerateInput
 from constructions.gears.generation import largest_tip_round
-from constructions.gears.contact import Pair
+from constructions.gears.mesh import Pair, contact_geometry
 from constructions.gears.tooth import INCH, SYSTEMS, Gear, ToothSystem
 from constructions.gears.train_drawing import Case
 from constructions.gears.trains import FRAME, Given, Train, TrainGear, TrainMesh, layout, solve_train
 
+from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.units import UnitError, to_si
 from ...scene.unitset import Units
 
@@ -48,13 +52,52 @@ MAX_TEETH = 10000
 MAX_GEARS = 30
 
 
+@dataclass(frozen=True)
+class GearPairScene(Scene):
+    """A gear pair scene: the ``pair`` in mesh (pinion, gear or rack, centre distance)."""
+
+    pair: Pair
+
+
+@dataclass(frozen=True)
+class GearTrainScene(Scene):
+    """A gear train scene: the ``train`` (gears, meshes, shafts) and the ``cases`` it is driven in."""
+
+    train: Train
+    cases: tuple[Case, ...]
+
+
+def pair_check(study) -> None:
+    """The gear pair's check: its contact geometry exists at its centre distance (SceneError if not)."""
+    s = study.scene
+    try:
+        contact_geometry(s.pair)
+    except ConstructionError as e:
+        raise SceneError(s.path, "pair.centre_distance" if s.pair.centre_distance is not None else "pair",
+                         e.reason) from None
+
+
+def cases_check(study) -> None:
+    """The gear train's check: each case can be solved, and a case's output turns (SceneError if not)."""
+    s = study.scene
+    for i, case in enumerate(s.cases, 1):
+        try:
+            sol = solve_train(s.train, case.givens, power=None)
+        except ConstructionError as e:
+            raise SceneError(s.path, f"case[{i}]", e.reason) from None
+        w = case.givens[-1].speed
+        if case.out is not None and abs(sol.speeds[case.out]) < 1e-12 * abs(w):
+            raise SceneError(s.path, f"case[{i}].output", f"{case.out} stands still in this case: no power is "
+                                                          f"taken off it")
+
+
 def _teeth_count(r, key: str, value: Any, least: int = 3) -> int:
     if isinstance(value, bool) or not isinstance(value, int) or not (least <= value <= MAX_TEETH):
         raise r.fail(key, f"{r.shown(value)} must be a whole number of teeth from {least} to {MAX_TEETH}")
     return value
 
 
-def read_teeth(r, units: Units) -> ToothSystem:
+def read_teeth(r: SceneReader, units: Units) -> ToothSystem:
     if "teeth" not in r.data:
         raise r.fail("teeth", "is missing: give the module (or diametral pitch) and the pressure angle, e.g. "
                               "[teeth] module = \"5 mm\", pressure_angle = \"20 deg\"")
@@ -103,7 +146,7 @@ def read_teeth(r, units: Units) -> ToothSystem:
     return s
 
 
-def read_gear_pair(r, units: Units) -> dict:
+def read_gear_pair(r: SceneReader, units: Units) -> dict:
     s = read_teeth(r, units)
     if "pair" not in r.data:
         raise r.fail("pair", "is missing: give the teeth, e.g. [pair] pinion = 20, gear = 40 (or gear = \"rack\")")
@@ -129,16 +172,11 @@ def read_gear_pair(r, units: Units) -> dict:
     if "centre_distance" in t:
         c = r.quantity("pair.centre_distance", t["centre_distance"], "length", units)
     pair = Pair(Gear(n1, s), gear, c, internal=internal)
-    try:
-        from constructions.gears.contact import contact_geometry
-        contact_geometry(pair)
-    except ConstructionError as e:
-        raise r.fail("pair.centre_distance" if c is not None else "pair", e.reason) from None
     r.lengths.append(("pair", pair.size))
-    return {"model": pair}
+    return {"pair": pair}
 
 
-def read_gear_train(r, units: Units) -> dict:
+def read_gear_train(r: SceneReader, units: Units) -> dict:
     s = read_teeth(r, units)
     gears = []
     names: set[str] = set()
@@ -234,14 +272,8 @@ def read_gear_train(r, units: Units) -> dict:
                 raise r.fail(f"{k}.output", f"{out} is the driven or the held member; take the power off another")
         elif "output" in t:
             raise r.fail(f"{k}.power", "is missing: an output without a power gives no torque")
-        try:
-            sol = solve_train(train, tuple(givens), power=None)
-        except ConstructionError as e:
-            raise r.fail(k, e.reason) from None
-        if out is not None and abs(sol.speeds[out]) < 1e-12 * abs(w):
-            raise r.fail(f"{k}.output", f"{out} stands still in this case: no power is taken off it")
         cases.append(Case(name, tuple(givens), power, driven if power else None, out))
-    return {"model": (train, tuple(cases))}
+    return {"train": train, "cases": tuple(cases)}
 
 
 def _member(r, key: str, value: Any) -> str:
@@ -257,4 +289,5 @@ def _known_member(r, key: str, value: Any, train: Train) -> str:
     return v
 
 
-__all__ = ["PAIR_SECTIONS", "TRAIN_SECTIONS", "read_gear_pair", "read_gear_train"]
+__all__ = ["PAIR_SECTIONS", "TRAIN_SECTIONS", "GearPairScene", "GearTrainScene", "cases_check", "pair_check",
+           "read_gear_pair", "read_gear_train"]

@@ -9,14 +9,13 @@ import math
 from dataclasses import replace
 
 import numpy as np
-from typing import TYPE_CHECKING, Any, Mapping, NamedTuple
+from typing import TYPE_CHECKING, Mapping, NamedTuple
 
 from constructions.mechanisms.classify import classify_four_bar
 from constructions.forces.effects import NO_EFFECTS
 from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
-from constructions.mechanisms.assembly import assembly_plan
 from constructions.mechanisms.pose import locate
 from constructions.quantities import Measured
 from constructions.polygons.acceleration import acceleration_polygon
@@ -26,9 +25,11 @@ from constructions.record import Construction
 if TYPE_CHECKING:
     from constructions.sweep import Sweep
 
-from ..registry import Analysis, Family, register
-from .scene import SECTIONS, read_linkage
-from ...scene.unitset import direction_deg
+from ..registry import Analysis, Family
+from .given import given_lines
+from .output import linkage_json, transmission_at_pose
+from .scene import SECTIONS, LinkageScene, assembly_check, read_linkage
+from .vary import read_vary
 
 
 def _classification(study):
@@ -41,20 +42,9 @@ def _loops(study):
     return classify_loops(study.scene.mechanism)
 
 
-def _transmission_at_pose(study) -> float | None:
-    """The transmission angle (deg) of the crank's four-bar at the drawn pose, between coupler and rocker."""
-    k = study.get("classification")
-    if k is None:
-        return None
-    P = study.get("position").positions
-    _, b, c, o2 = k.joints
-    u, v = P[b] - P[c], P[o2] - P[c]
-    return math.degrees(abs(math.atan2(u.cross(v), u.dot(v))))
-
-
 def _position(study):
     s = study.scene
-    pose = locate(s.mechanism, s.angle, assembly_plan(s.mechanism), fmt=s.units.format)
+    pose = locate(s.mechanism, s.angle, study.get("plan"), fmt=s.units.format)
     if s.dimensions:
         from constructions.dimensions import dimension_links
         pose = replace(pose, construction=dimension_links(s.mechanism, pose))
@@ -131,6 +121,21 @@ def _sweep(study) -> SweepAnalysis:
         crank[int(i)] = points
     order = one_turn(tuple(float(t) for t in result.thetas))[0]
     return SweepAnalysis(result, record, tuple(order), crank)
+
+
+def _turn(study):
+    """The linkage at a caller's crank angles (``study.options``: "crank angles", "progress"): ``drafting
+    sweep``'s table."""
+    from constructions.sweep import sweep
+    s = study.scene
+    return sweep(s.mechanism, study.options["crank angles"], s.omega, s.alpha, progress=study.options.get("progress"))
+
+
+def _cannot_sweep(scene) -> str | None:
+    if scene.torque is not None:
+        return ("input.torque: a sweep needs the crank's motion (omega and alpha); at a given torque the motion "
+                "over the cycle is a simulation, which this version does not run")
+    return None
 
 
 def _effects(study):
@@ -246,7 +251,7 @@ def _notes(study) -> tuple[str, ...]:
     k = study.get("classification")
     if k is not None:
         line = k.summary(lambda v: s.units.format("length", v))
-        mu = _transmission_at_pose(study)
+        mu = transmission_at_pose(study)
         if k.transmission_min is not None:
             lo, hi = math.degrees(k.transmission_min), math.degrees(k.transmission_max)
             line += f"; transmission angle {lo:.0f}-{hi:.0f} deg"
@@ -296,77 +301,12 @@ def _model(study) -> str | None:
     return "; ".join(names) or None
 
 
-def _json(study) -> dict[str, Any]:
-    s, u = study.scene, study.scene.units
-    m = s.mechanism
-    out: dict[str, Any] = {}
-    pose = study.get("position")
-    k = study.get("classification")
-    if k is not None:
-        deg = math.degrees
-        out["classification"] = {
-            "joints": list(k.joints), "closes": k.closes, "grashof": k.grashof, "kind": k.kind,
-            "turns_fully": list(k.turns_fully), "mobility": k.mobility[0],
-            "transmission_angle_deg": {
-                "as_drawn": _transmission_at_pose(study),
-                "min": deg(k.transmission_min) if k.transmission_min is not None else None,
-                "max": deg(k.transmission_max) if k.transmission_max is not None else None,
-                "min_at_crank_deg": deg(k.transmission_min_at) % 360 if k.transmission_min_at is not None else None,
-                "max_at_crank_deg": deg(k.transmission_max_at) % 360 if k.transmission_max_at is not None else None},
-            "limit_positions": [{"extended": lp.extended, "crank_angle_deg": deg(lp.crank_angle) % 360,
-                                 "rocker_angle_deg": deg(lp.rocker_angle) % 360} for lp in k.limit_positions]}
-    loops = study.get("loops")
-    if loops:
-        out["loops"] = [{"input_link": lp.input, "joints": list(lp.k.joints), "closes": lp.k.closes,
-                         "grashof": lp.k.grashof, "kind": lp.k.kind, "turns_fully": list(lp.k.turns_fully)}
-                        for lp in loops]
-    out["position"] = {n: [u.convert("length", p.x), u.convert("length", p.y)] for n, p in pose.positions.items()}
-    v = study.computed("velocity")
-    if v is not None:
-        out["velocity"] = {f"V_{n}": u.vector_json(p, "velocity") for n, p in v.velocities.items() if n not in m.ground}
-        out["relative_velocity"] = {f"V_{j}{p}": u.vector_json(w, "velocity") for (j, p), w in v.relative.items()}
-        out["angular_velocity"] = {f"omega_{n}": u.rate_json(w, "angular velocity")
-                                   for n, w in sorted(v.angular.items())}
-    a = study.computed("acceleration")
-    if a is not None:
-        from constructions.polygons.common import component_name
-        out["acceleration"] = {f"A_{n}": u.vector_json(p, "acceleration") for n, p in a.accelerations.items()
-                               if n not in m.ground}
-        out["acceleration_components"] = {
-            component_name(j, p, sup, m): u.vector_json(x, "acceleration")
-            for comps, sup in ((a.normal, "n"), (a.tangential, "t")) for (j, p), x in comps.items()}
-        out["angular_acceleration"] = {f"alpha_{n}": u.rate_json(al, "angular acceleration")
-                                       for n, al in sorted(a.angular.items())}
-    sw = study.computed("sweep")
-    if sw is not None:
-        res = sw[0]
-        out["sweep"] = {"steps": int(res.thetas.size), "model": res.model,
-                        "assembled": int(np.count_nonzero(res.assembles)),
-                        "gaps_deg": [[math.degrees(float(res.thetas[i])), math.degrees(float(res.thetas[j - 1]))]
-                                     for i, j in res.gaps()]}
-    ic = study.computed("instant centres")
-    if ic is not None:
-        from constructions.mechanisms.centres import centre_name
-        out["instant_centres"] = {
-            centre_name(q): ({"x": u.convert("length", c.at.x), "y": u.convert("length", c.at.y)} if c.finite
-                             else {"at_infinity": True, "direction_deg": direction_deg(c.direction) % 180})
-            for q, c in sorted(ic.centres.items())}
-        out["instant_centres_missing"] = [centre_name(q) for q in ic.missing]
-    f = study.result("forces")
-    if f is not None:
-        rows = {x.name: x.value for x in f.measured(m)}
-        out["forces"] = {
-            "dynamic": f.inertial,
-            "forces": {n: u.vector_json(v, "force") for n, v in rows.items() if not isinstance(v, float)},
-            "driving_torque": {n: u.rate_json(v, "torque") for n, v in rows.items() if isinstance(v, float)}}
-    return out
-
-
-LINKAGE = register(Family(
+LINKAGE = Family(
     kind="linkage",
     analyses={
-        "classification": Analysis("classification", (), _classification),
-        "loops": Analysis("loops", (), _loops, label="classification"),     # part of it: one entry in ran
+        "plan": Analysis("plan", (), assembly_check, label="classification"),   # recorded with the class
+        "classification": Analysis("classification", ("plan",), _classification),
+        "loops": Analysis("loops", ("plan",), _loops, label="classification"),     # part of it: one entry in ran
         "position": Analysis("position", ("classification",), _position),
         "velocity": Analysis("velocity", ("position",), _velocity),
         "crank alpha": Analysis("crank alpha", ("position",), _crank_alpha, label="alpha from the torque"),
@@ -380,17 +320,25 @@ LINKAGE = register(Family(
         "sweep": Analysis("sweep", ("position",), _sweep, label="sweep over the cycle"),
         "force check": Analysis("force check", ("position",), _force_check,
                                 label="equilibrium system and virtual work"),
+        "turn": Analysis("turn", ("plan",), _turn, label="sweep over the given crank angles"),
     },
     askable=("position", "velocity", "acceleration", "forces", "instant centres", "sweep"),
     measured=_measured,
     analytic=_analytic_values,
     construction=_construction,
-    json=_json,
+    json=linkage_json,
     warnings=_warnings,
     model_name=_model,
     scales=_scales,
     notes=_notes,
+    scene_type=LinkageScene,
     sections=SECTIONS,
     read=read_linkage,
+    checks=("plan",),
+    vary=read_vary,
+    given=given_lines,
+    dimensioned_problem=True,
+    sweeps="turn",
+    cannot_sweep=_cannot_sweep,
     default_analyses=("velocity",),
-))
+)

@@ -1,26 +1,57 @@
 """The linkage family's own sections of a scene file: the frame, the links and their points, sliders on
-guides and slots, the input and the assembly branches.  Called by the scene reader (:mod:`drafting.scene.reader`)
-through the family registry with the shared reader, whose helpers name the file and key in every error."""
+guides and slots, the input and the assembly branches, read into a :class:`LinkageScene`.  Called by the
+scene reader (:mod:`drafting.scene.reader`) through the family registry with the public
+:class:`~drafting.scene.reader.SceneReader`, whose helpers name the file and key in every error.  Whether
+the mechanism can be built dyad by dyad is the family's first analysis (:func:`assembly_check`), not
+the reader's."""
 
 from __future__ import annotations
 
 import math
 import re
+from dataclasses import dataclass
 from typing import Any
 
 from constructions.errors import DegenerateInput
+from constructions.forces.effects import Effects
 from constructions.geometry import Vec
 from constructions.mechanisms.assembly import assembly_plan
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 
 from ...scene.effects import SECTIONS as EFFECT_SECTIONS, read_effects
+from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.unitset import Units
 
 
 SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"}) | EFFECT_SECTIONS
 
 
-def read_linkage(r, units: Units) -> dict:
+@dataclass(frozen=True)
+class LinkageScene(Scene):
+    """A linkage scene: the ``mechanism``, its input (``angle``, ``omega``, ``alpha`` or the ``torque`` it
+    follows from) and the ``effects`` it declares (loads, masses, gravity, springs, friction; none unless
+    the scene gives them)."""
+
+    mechanism: Mechanism
+    angle: float            # crank angle, rad CCW from +x
+    omega: float            # crank angular velocity, rad/s CCW positive
+    alpha: float            # crank angular acceleration, rad/s^2 CCW positive
+    torque: float | None    # torque on the crank, N m CCW positive: alpha follows from it (not given)
+    effects: Effects
+
+
+def assembly_check(study):
+    """The order the joints are built in (the family's check of the scene): a mechanism that cannot be
+    built dyad by dyad, or whose branches are wrongly given, is a SceneError at [assembly] or [[link]]."""
+    s = study.scene
+    try:
+        return assembly_plan(s.mechanism)
+    except DegenerateInput as e:
+        text = str(e)
+        raise SceneError(s.path, "assembly" if "branch" in text or "assemblies" in text else "link", text) from None
+
+
+def read_linkage(r: SceneReader, units: Units) -> dict:
     """The linkage sections of a scene: [frame], [[link]], [[point]], [[slider]], [input], [assembly], and
     the effects it declares ([gravity], [[load]], [[couple]], [[mass]], [[spring]], [[friction]]:
     :mod:`drafting.scene.effects`), whose centres of gravity may add points to the mechanism."""
@@ -159,12 +190,6 @@ def read_linkage(r, units: Units) -> dict:
         if j not in points:
             raise r.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
     m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
-    try:
-        assembly_plan(m)
-    except DegenerateInput as e:
-        text = str(e)
-        key = "assembly" if "branch" in text or "assemblies" in text else "link"
-        raise r.fail(key, str(e)) from None
     m, effects = read_effects(r, units, m)
     if torque is not None and not effects.inertial:
         raise r.fail("input.torque", "a torque on the crank sets its angular acceleration only through "
@@ -173,7 +198,7 @@ def read_linkage(r, units: Units) -> dict:
             "effects": effects}
 
 
-def _branch(r, key: str, value: Any) -> Branch:
+def _branch(r: SceneReader, key: str, value: Any) -> Branch:
     v = r.text(key, value)
     m = re.fullmatch(r"(left|right)\s+of\s+([A-Za-z][A-Za-z0-9]*)\s*->\s*([A-Za-z][A-Za-z0-9]*)", v)
     if m:
