@@ -65,12 +65,29 @@ def _spans(u, spans) -> str:
                      for a, b in spans)
 
 
+_FACE_LIMITS = {
+    OSC_FLAT: (lambda u, cp: f"Cusp: the profile's radius of curvature comes to zero at "
+                             f"{u.format('angle', cp.cusp_at[0])}; the flat face is at its limit there.",
+               lambda u, cp: f"The flat face cannot follow: the profile's radius of curvature goes negative from "
+                             f"{_spans(u, cp.undercut)} (a larger base circle or a slower swing helps); the profile "
+                             f"drawn is trimmed."),
+    FLAT: (lambda u, cp: f"Cusp: the base radius is exactly the smallest for a flat face (r_b + s + s'' = 0 at "
+                         f"{u.format('angle', cp.cusp_at[0])}).",
+           lambda u, cp: f"The flat face cannot follow: r_b + s + s'' < 0 from {_spans(u, cp.undercut)} (needs a base "
+                         f"radius above {u.format('length', cp.min_base_radius)}); the profile drawn is trimmed."),
+}
+"""A flat face's warnings, translating or oscillating: (at the cusp, past it)."""
+
+
+def _profile_terms(study):
+    """The scene's units, the solved profile and the follower: what the warnings and notes speak of."""
+    return study.scene.units, study.result("profile").profile, study.scene.model.follower
+
+
 def _warnings(study) -> tuple[str, ...]:
-    c = study.result("profile")
-    if c is None:
+    if study.result("profile") is None:
         return ()
-    u, m = study.scene.units, study.scene.model
-    cp, f = c.profile, m.follower
+    u, cp, f = _profile_terms(study)
     out = []
     if f.kind in (ROLLER, OSCILLATING) and cp.min_rho_pitch is not None:
         t, rho = cp.min_rho_pitch
@@ -84,21 +101,10 @@ def _warnings(study) -> tuple[str, ...]:
                        f"smallest radius of curvature {u.format('length', rho)} (at {u.format('angle', t)}); the "
                        f"envelope loops back from {_spans(u, cp.undercut)}: the profile drawn is trimmed there and "
                        f"the follower will not follow its program.")
-    if f.kind == OSC_FLAT:
-        if cp.cusp_at:
-            out.append(f"Cusp: the profile's radius of curvature comes to zero at {u.format('angle', cp.cusp_at[0])}; "
-                       f"the flat face is at its limit there.")
-        elif cp.undercut:
-            out.append(f"The flat face cannot follow: the profile's radius of curvature goes negative from "
-                       f"{_spans(u, cp.undercut)} (a larger base circle or a slower swing helps); the profile drawn is "
-                       f"trimmed.")
-    if f.kind == FLAT:
-        if cp.cusp_at:
-            out.append(f"Cusp: the base radius is exactly the smallest for a flat face (r_b + s + s'' = 0 at "
-                       f"{u.format('angle', cp.cusp_at[0])}).")
-        elif cp.undercut:
-            out.append(f"The flat face cannot follow: r_b + s + s'' < 0 from {_spans(u, cp.undercut)} (needs a base "
-                       f"radius above {u.format('length', cp.min_base_radius)}); the profile drawn is trimmed.")
+    face = _FACE_LIMITS.get(f.kind)
+    if face is not None and (cp.cusp_at or cp.undercut):
+        cusp, cannot = face
+        out.append(cusp(u, cp) if cp.cusp_at else cannot(u, cp))
     if cp.corners:
         at = ", ".join(u.format("angle", t % (2 * math.pi)) for t in sorted(cp.corners, key=lambda t: t % (2 * math.pi)))
         out.append(f"Corners: the follower's velocity jumps at {at}, so the pitch curve turns a corner there and "
@@ -115,11 +121,9 @@ def _warnings(study) -> tuple[str, ...]:
 
 
 def _notes(study) -> tuple[str, ...]:
-    c = study.result("profile")
-    if c is None:
+    if study.result("profile") is None:
         return ()
-    u, m = study.scene.units, study.scene.model
-    cp, f = c.profile, m.follower
+    u, cp, f = _profile_terms(study)
     out = []
     if f.kind != FLAT:
         t, phi = cp.max_pressure_angle
@@ -145,7 +149,7 @@ def _notes(study) -> tuple[str, ...]:
         out.append(f"Smallest base radius for a flat face (r_b + s + s'' > 0): {u.format('length', cp.min_base_radius)}"
                    f"; the face must reach {u.format('length', -lo)} and {u.format('length', hi)} either side of its "
                    f"axis (width {u.format('length', hi - lo)}).")
-    for j in m.program.joins():
+    for j in study.scene.model.program.joins():
         if j.consequence:
             out.append(f"At {u.format('angle', j.theta)} ({j.before} to {j.after}): {j.consequence}.")
     return tuple(out)
