@@ -22,7 +22,19 @@ from typing import Any, Mapping
 from .scene.reader import Scene, load_scene, parse_scene, scene_from_data
 from .study.study import Study
 
-__all__ = ["load", "loads"]
+__all__ = ["load", "loads", "lab_for", "write_lab", "dimensioned", "run_batch"]
+
+
+def __getattr__(name: str):
+    """A scene's lab sheets and a batch of variants, from the application's rooms, imported on first use:
+    ``drafting.api.lab_for(study)``, ``write_lab``, ``dimensioned``, ``run_batch``."""
+    if name in ("lab_for", "write_lab", "dimensioned"):
+        from .app import lab
+        return getattr(lab, name)
+    if name == "run_batch":
+        from .app.batch import run_batch
+        return run_batch
+    raise AttributeError(f"module 'drafting.api' has no attribute {name!r}")
 
 
 def load(source: str | Path | Mapping[str, Any] | Scene, *, paper: str | None = None) -> Study:

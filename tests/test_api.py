@@ -114,3 +114,13 @@ def test_results_as_csv_in_the_scenes_units(tmp_path, capsys):
     assert main(["solve", str(GALLERY / "notes-velocity-example-2.toml"), "--csv", str(blocker / "r.csv")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--csv" in err and "Traceback" not in err
+
+
+def test_the_lab_and_batch_functions_are_on_the_api():
+    """The README's Python route to a scene's lab sheets and to a batch goes through drafting.api."""
+    import drafting.api as api
+    from drafting.app.batch import run_batch
+    from drafting.app.lab import dimensioned, lab_for, write_lab
+    assert (api.lab_for, api.write_lab, api.dimensioned, api.run_batch) == (lab_for, write_lab, dimensioned, run_batch)
+    with pytest.raises(AttributeError, match="no attribute 'nothing'"):
+        api.nothing
