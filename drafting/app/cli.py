@@ -178,8 +178,11 @@ MAX_VARIANTS = 10_000
 
 
 def cmd_bench(quick: bool, peers: bool = False) -> int:
-    from .bench import run_benchmarks
-    print(run_benchmarks(quick=quick, peers=peers))
+    from .bench import BenchmarksMissing, run_benchmarks
+    try:
+        print(run_benchmarks(quick=quick, peers=peers))
+    except BenchmarksMissing as e:             # installed without the checkout: one sentence, exit 2
+        raise UserError(f"bench --peers: {e}") from None
     return 0
 
 
