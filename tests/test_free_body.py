@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -25,7 +24,7 @@ from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study
 from drafting.study.worked import sheets_for
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 LOADER = GALLERY / "notes-front-end-loader.toml"
 AGREE = 1e-9
 

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
 
 import pytest
 
@@ -15,8 +14,7 @@ from drafting.scene.reader import load_scene
 from drafting.study.study import Study
 from drafting.study.worked import sheets_for
 
-ROOT = Path(__file__).resolve().parent.parent
-GALLERY = ROOT / "gallery"
+from paths import GALLERY
 PAIR = GALLERY / "gear-pair-20-40.toml"
 RACK = GALLERY / "gear-rack-interference-limit.toml"
 THREE = GALLERY / "gear-train-three-gears.toml"

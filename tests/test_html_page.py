@@ -6,7 +6,6 @@ from __future__ import annotations
 import re
 import shutil
 import subprocess
-from pathlib import Path
 
 import pytest
 
@@ -14,7 +13,7 @@ import drafting
 from drafting.app.cli import main
 from drafting.backends.html_page import entity_of, markup_html, page_html
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 SCENE = GALLERY / "notes-acceleration-example-1.toml"
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 

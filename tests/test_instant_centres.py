@@ -5,7 +5,6 @@ slotted links and random mechanisms."""
 from __future__ import annotations
 
 import itertools
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -20,7 +19,7 @@ from drafting.scene.reader import load_scene
 from drafting.study.study import Study
 from test_linkage_velocity import four_bar, four_bars, slider_crank, slider_cranks
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 
 
 def _points(m, body):
