@@ -18,9 +18,9 @@ from constructions.forces.effects import Couple, Effects, End, Load, Mass, Sprin
 from constructions.forces.equilibrium import alpha_for_torque, equilibrium, virtual_work_torque
 from constructions.geometry import Vec
 from constructions.linkage import Attached, Link, Mechanism, locate
-from mechanisms import quick_return, rocker_with_slot, slanted_slot, slot_and_guide
+from mechanisms import quick_return, rocker_with_slot, slanted_slot, slider_crank, slot_and_guide
 from test_acceleration import toggle_four_bar
-from test_linkage_velocity import four_bars, slider_crank, slider_cranks
+from strategies import four_bars, slider_cranks
 
 G = Vec(0.0, -9.81)
 

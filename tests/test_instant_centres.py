@@ -17,7 +17,8 @@ from constructions.linkage import locate
 from constructions.polygons.velocity import velocity_polygon
 from drafting.scene.reader import load_scene
 from drafting.study.study import Study
-from test_linkage_velocity import four_bar, four_bars, slider_crank, slider_cranks
+from mechanisms import four_bar, slider_crank
+from strategies import four_bars, slider_cranks
 
 from paths import GALLERY
 
