@@ -24,16 +24,14 @@ import pytest
 from drafting.app.cli import main
 
 from paths import GALLERY, ROOT
+from process_moments import (children, end, freeze_at, gone, handlers_installed, maps, resume, signal_at,
+                             temporaries, wait_for)
 
 # one-sheet scenes (the velocity examples): the fault tests count the files of one sheet per scene
 VELOCITY = sorted(GALLERY.glob("notes-velocity-example-[1-4].toml"))
 FORMATS = ("svg", "pdf", "png")
 
 linux_proc = pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="needs /proc (Linux)")
-
-
-def temporaries(folder: Path) -> list[str]:
-    return sorted(n for n in os.listdir(folder) if n.startswith(".drafting-tmp-")) if folder.is_dir() else []
 
 
 def assert_whole(folder: Path, stems: list[str]) -> dict[str, bool]:
@@ -129,73 +127,6 @@ def _start(out: Path, scenes: list[Path], *extra: str, text: bool = True) -> sub
                             start_new_session=True)
 
 
-def _handlers_installed(pid: int) -> bool:
-    try:
-        status = Path(f"/proc/{pid}/status").read_text()
-    except OSError:
-        return False
-    caught = int(next(l.split()[1] for l in status.splitlines() if l.startswith("SigCgt:")), 16)
-    return bool(caught & (1 << (signal.SIGTERM - 1)))
-
-
-def _wait(cond, timeout: float = 60.0) -> bool:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if cond():
-            return True
-        time.sleep(0.001)
-    return False
-
-
-def _group(pgid: int) -> dict[int, str]:
-    """pid -> state letter of every live process in the process group ``pgid``."""
-    out = {}
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            try:
-                fields = Path(f"/proc/{entry}/stat").read_text().rsplit(") ", 1)[1].split()
-            except (OSError, IndexError):
-                continue
-            if int(fields[2]) == pgid and fields[0] not in "ZX":
-                out[int(entry)] = fields[0]
-    return out
-
-
-def _freeze_at(p: subprocess.Popen, moment, what: str, timeout: float = 120.0) -> None:
-    """Wait until ``moment()`` holds, then stop the run's process group (SIGSTOP) and return once every
-    process in it has stopped and the moment still holds; if the moment passed while the stop was on its
-    way, let the group go on and look again.  The test fails if the run ends first: a fault sent after the
-    run has tested nothing.  The caller sends its fault, then :func:`_resume`."""
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if p.poll() is not None:
-            pytest.fail(f"the run ended (exit {p.returncode}) before {what}: the fault was not tested")
-        if moment():
-            os.killpg(p.pid, signal.SIGSTOP)
-            assert _wait(lambda: all(s == "T" for s in _group(p.pid).values()), 10), "the group did not stop"
-            if p.poll() is None and moment():
-                return
-            _resume(p)
-        time.sleep(0.001)
-    pytest.fail(f"{what} did not come within {timeout:.0f} s")
-
-
-def _end(p: subprocess.Popen) -> None:
-    """After a test that failed on the way: the run's whole group killed (stopped or not) and reaped."""
-    try:
-        os.killpg(p.pid, signal.SIGKILL)
-    except ProcessLookupError:
-        pass
-    p.wait()
-
-
-def _resume(p: subprocess.Popen) -> None:
-    try:
-        os.killpg(p.pid, signal.SIGCONT)
-    except ProcessLookupError:              # nothing left in the group
-        pass
-
-
 def _empty(folder: Path) -> bool:
     """Nothing written yet: no temporary file, no sheet."""
     return not folder.is_dir() or os.listdir(folder) == []
@@ -209,10 +140,10 @@ def _written(out: Path, scene: Path, fmt: str = "png") -> bool:
 
 def _render_moment(p: subprocess.Popen, out: Path, scenes: list[Path], moment: str):
     """The condition of each moment of a render; all of them before the last scene is written."""
-    started = lambda: _handlers_installed(p.pid)                      # noqa: E731
+    started = lambda: handlers_installed(p.pid)                      # noqa: E731
     unwritten = lambda: not _written(out, scenes[-1])                 # noqa: E731
     return {"main started": lambda: started() and _empty(out),
-            "drawing": lambda: started() and bool(_children(p.pid)) and _empty(out),
+            "drawing": lambda: started() and bool(children(p.pid)) and _empty(out),
             "temporary file exists": lambda: bool(temporaries(out)) and unwritten(),
             "first scene written": lambda: _written(out, scenes[0]) and unwritten()}[moment]
 
@@ -221,14 +152,7 @@ def _interrupt(tmp_path: Path, sig: int, moment: str) -> tuple[int, str, str, di
     out = tmp_path / "out"
     scenes = VELOCITY[:3]
     p = _start(out, scenes)
-    try:
-        _freeze_at(p, _render_moment(p, out, scenes, moment), moment)
-        p.send_signal(sig)
-        _resume(p)
-        stdout, stderr = p.communicate(timeout=60)
-    except BaseException:
-        _end(p)
-        raise
+    stdout, stderr, _ = signal_at(p, _render_moment(p, out, scenes, moment), moment, sig)
     return p.returncode, stdout, stderr, assert_whole(out, [s.stem for s in scenes])
 
 
@@ -260,11 +184,11 @@ def test_kill_9_leftovers_are_removed_by_the_next_run(tmp_path):
     out = tmp_path / "out"
     p = _start(out, VELOCITY[:3], "--workers", "1")
     try:
-        _freeze_at(p, lambda: bool(temporaries(out)), "a temporary file exists")
+        freeze_at(p, lambda: bool(temporaries(out)), "a temporary file exists")
         p.kill()                                           # SIGKILL: no handler runs (stopped or not)
         p.communicate(timeout=60)
     except BaseException:
-        _end(p)
+        end(p)
         raise
     left = temporaries(out)
     assert left and all(n.startswith(f".drafting-tmp-{p.pid}-") for n in left)
@@ -279,23 +203,16 @@ def test_a_reader_that_goes_away_ends_the_run_quietly(tmp_path):
     p = _start(out, scenes, "--format", "svg", "--workers", "1", text=False)   # printed in turn, as done
     try:
         p.stdout.readline()                                # the first scene's results
-        _freeze_at(p, lambda: not _written(out, scenes[-1], "svg"), "the last scene is written")
+        freeze_at(p, lambda: not _written(out, scenes[-1], "svg"), "the last scene is written")
         p.stdout.close()                                   # the reader goes away while more is to come
-        _resume(p)
+        resume(p)
         err = p.stderr.read().decode()
         p.wait(timeout=60)
     except BaseException:
-        _end(p)
+        end(p)
         raise
     assert p.returncode == 141 and "Traceback" not in err and "BrokenPipe" not in err, (p.returncode, err)
     assert temporaries(tmp_path / "out") == []
-
-
-def _maps(pid: int) -> str:
-    try:
-        return Path(f"/proc/{pid}/maps").read_text()
-    except OSError:
-        return ""
 
 
 @linux_proc
@@ -309,12 +226,12 @@ def test_an_interrupt_while_loading_is_one_line_too(library):
                          stderr=subprocess.PIPE, env={**os.environ, "PYTHONPATH": str(ROOT)},
                          preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL), start_new_session=True)
     try:
-        _freeze_at(p, lambda: library in _maps(p.pid) and not _handlers_installed(p.pid), f"{library} loading")
+        freeze_at(p, lambda: library in maps(p.pid) and not handlers_installed(p.pid), f"{library} loading")
         p.send_signal(signal.SIGINT)
-        _resume(p)
+        resume(p)
         out, err = p.communicate(timeout=60)
     except BaseException:
-        _end(p)
+        end(p)
         raise
     text = err.decode()
     assert "Traceback" not in text, text
@@ -344,7 +261,7 @@ def _start_batch(out: Path, scene: Path, variants: int = 8) -> subprocess.Popen:
 def _batch_moment(p: subprocess.Popen, out: Path, moment: str):
     """The condition of each moment of a batch of 8; all of them before the last variant is written."""
     unfinished = lambda: not (out / "lab-v008-key.csv").exists()      # noqa: E731
-    return {"drawing": lambda: _handlers_installed(p.pid) and bool(_children(p.pid)) and _empty(out),
+    return {"drawing": lambda: handlers_installed(p.pid) and bool(children(p.pid)) and _empty(out),
             "temporary file exists": lambda: bool(temporaries(out)) and unfinished(),
             "first variant written": lambda: ((out / "lab-v001-key.csv").exists()
                                               or (out / "lab-v002-key.csv").exists()) and unfinished()}[moment]
@@ -368,20 +285,6 @@ def assert_batch_whole(folder: Path, stem: str, variants: int) -> int:
     return complete
 
 
-def _children(pid: int) -> list[int]:
-    try:
-        return [int(c) for c in Path(f"/proc/{pid}/task/{pid}/children").read_text().split()]
-    except OSError:
-        return []
-
-
-def _gone(pid: int) -> bool:
-    try:
-        return Path(f"/proc/{pid}/stat").read_text().split(") ", 1)[1].startswith("Z")   # a zombie is gone
-    except OSError:
-        return True
-
-
 @linux_proc
 @pytest.mark.parametrize("sig, moment", [(signal.SIGTERM, "temporary file exists"),
                                          (signal.SIGINT, "first variant written"),
@@ -390,18 +293,9 @@ def test_an_interrupted_batch_leaves_no_half_written_file(tmp_path, sig, moment)
     out = tmp_path / "out"
     scene = _batch_scene(tmp_path)
     p = _start_batch(out, scene)
-    workers: list[int] = []
-    try:
-        _freeze_at(p, _batch_moment(p, out, moment), moment)
-        workers = _children(p.pid)
-        p.send_signal(sig)
-        _resume(p)
-        stdout, stderr = p.communicate(timeout=120)
-    except BaseException:
-        _end(p)
-        raise
+    stdout, stderr, workers = signal_at(p, _batch_moment(p, out, moment), moment, sig)
     assert "Traceback" not in stderr, stderr
-    assert workers and all(_gone(w) for w in workers), "a worker outlived the batch"
+    assert workers and all(gone(w) for w in workers), "a worker outlived the batch"
     complete = assert_batch_whole(out, "lab", 8)
     assert complete < 8
     if moment == "first variant written":
@@ -418,18 +312,18 @@ def test_kill_9_of_a_batch_ends_its_workers_and_leaves_nothing_half_written(tmp_
     scene = _batch_scene(tmp_path)
     p = _start_batch(out, scene)
     try:
-        _freeze_at(p, lambda: bool(temporaries(out)), "a temporary file exists")
-        workers = _children(p.pid)
+        freeze_at(p, lambda: bool(temporaries(out)), "a temporary file exists")
+        workers = children(p.pid)
         p.kill()                                           # SIGKILL: no handler of the parent runs
         p.wait(timeout=60)
-        _resume(p)                                         # the workers, stopped with it, go on
+        resume(p)                                         # the workers, stopped with it, go on
         p.communicate(timeout=120)                         # (they hold its pipes until they end)
     except BaseException:
-        _end(p)
+        end(p)
         raise
     assert workers
     # each worker is told of its parent's death (SIGTERM) and removes its own temporary files
-    assert _wait(lambda: all(_gone(w) for w in workers), timeout=120), "the workers outlived their parent"
+    assert wait_for(lambda: all(gone(w) for w in workers), timeout=120), "the workers outlived their parent"
     assert_batch_whole(out, "lab", 8)
     assert main(["batch", str(scene), "--variants", "1", "-o", str(out), "--format", "svg"]) == 0
     assert temporaries(out) == []
@@ -446,7 +340,7 @@ def test_a_stopped_pool_s_own_thread_has_ended():
     pool = cf.ProcessPoolExecutor(max_workers=2, mp_context=multiprocessing.get_context("fork"))
     for _ in range(2):
         pool.submit(parallel._call, time.sleep, 30)
-    assert _wait(lambda: len(pool._processes) == 2 and all(p.is_alive() for p in pool._processes.values()), 10)
+    assert wait_for(lambda: len(pool._processes) == 2 and all(p.is_alive() for p in pool._processes.values()), 10)
     manager = pool._executor_manager_thread
     started = time.monotonic()
     parallel._stop_pool(pool, [])
