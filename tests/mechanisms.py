@@ -105,3 +105,17 @@ def watt_chain() -> Mechanism:
                Link(4, ("C", "E"), 50 * MM), Link(5, ("O3", "E"), 35 * MM)),
         slides=(), attached=(Attached("P", 2, "B", 30 * MM, math.radians(20)),), crank=1,
         branches={"C": Branch(1, ("B", "O2")), "E": Branch(1, ("C", "O3"))})
+
+
+def four_bar(o1, o2, crank, coupler, rocker, branch, attached=()):
+    """O1-B crank (link 1), B-C coupler (2), O2-C rocker (3); branch +1: C left of B->O2."""
+    return Mechanism({"O1": Vec(*o1), "O2": Vec(*o2)},
+                     (Link(1, ("O1", "B"), crank), Link(2, ("B", "C"), coupler), Link(3, ("O2", "C"), rocker)),
+                     (), tuple(attached), 1, {"C": Branch(branch, ("B", "O2"))})
+
+
+def slider_crank(o1, crank, coupler, guide_point, guide_angle, branch, attached=()):
+    """O1-B crank (1), B-C coupler (2), slider block 3 at C on the guide; branch +1: C ahead of B."""
+    return Mechanism({"O1": Vec(*o1)}, (Link(1, ("O1", "B"), crank), Link(2, ("B", "C"), coupler)),
+                     (Slide(3, "C", Vec(*guide_point), guide_angle),), tuple(attached), 1,
+                     {"C": Branch(branch, ("B",))})

@@ -18,7 +18,8 @@ from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import StepKind
 from test_compound import toggle_linkage
-from test_linkage_velocity import four_bar, four_bars, slider_crank, slider_cranks
+from mechanisms import four_bar, slider_crank
+from strategies import four_bars, slider_cranks
 
 alphas = st.one_of(st.just(0.0), st.floats(-5000.0, 5000.0))
 

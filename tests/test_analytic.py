@@ -26,6 +26,8 @@ from hypothesis import strategies as st
 from constructions import analytic as an
 from constructions.analytic import coupler_point, four_bar, slider_crank
 
+from strategies import four_bar_dimensions, slider_crank_dimensions
+
 FAST = settings(max_examples=150, deadline=None)
 
 FB_POS = ("Bx", "By", "Cx", "Cy")
@@ -39,34 +41,6 @@ SC_VEL = ("VBx", "VBy", "VCx", "VCy", "slider_speed")
 # ---------------------------------------------------------------------------------------------
 # Strategies: random mechanisms of any scale 1e-3 .. 1e3
 # ---------------------------------------------------------------------------------------------
-
-@st.composite
-def four_bars(draw):
-    L = 10.0 ** draw(st.floats(-3.0, 3.0))
-    ratio = st.floats(0.1, 2.0)
-    mech = dict(
-        crank_pivot=(draw(st.floats(-2.0, 2.0)) * L, draw(st.floats(-2.0, 2.0)) * L),
-        crank=draw(ratio) * L, coupler=draw(ratio) * L, rocker=draw(ratio) * L,
-        branch=draw(st.sampled_from([1, -1])),
-    )
-    ground = draw(st.floats(0.05, 2.0)) * L
-    phi = draw(st.floats(-math.pi, math.pi))
-    mech["rocker_pivot"] = (mech["crank_pivot"][0] + ground * math.cos(phi),
-                            mech["crank_pivot"][1] + ground * math.sin(phi))
-    return mech
-
-
-@st.composite
-def slider_cranks(draw):
-    L = 10.0 ** draw(st.floats(-3.0, 3.0))
-    return dict(
-        crank_pivot=(draw(st.floats(-2.0, 2.0)) * L, draw(st.floats(-2.0, 2.0)) * L),
-        crank=draw(st.floats(0.1, 2.0)) * L, coupler=draw(st.floats(0.1, 3.0)) * L,
-        guide_point=(draw(st.floats(-2.0, 2.0)) * L, draw(st.floats(-2.0, 2.0)) * L),
-        guide_angle=draw(st.floats(-math.pi, math.pi)),
-        branch=draw(st.sampled_from([1, -1])),
-    )
-
 
 def fb_scale(m):
     return (m["crank"] + m["coupler"] + m["rocker"] + math.hypot(*m["crank_pivot"])
@@ -159,7 +133,7 @@ def wrap(a):
 # ---------------------------------------------------------------------------------------------
 
 @FAST
-@given(four_bars())
+@given(four_bar_dimensions())
 def test_four_bar_loop_closure(m):
     r = four_bar(ANGLES, 1.0, **m)
     L = fb_scale(m)
@@ -180,7 +154,7 @@ def test_four_bar_loop_closure(m):
 
 
 @FAST
-@given(slider_cranks())
+@given(slider_crank_dimensions())
 def test_slider_crank_loop_closure(m):
     r = slider_crank(ANGLES, 1.0, **m)
     L = sc_scale(m)
@@ -200,7 +174,7 @@ def test_slider_crank_loop_closure(m):
 
 
 @FAST
-@given(four_bars(), st.floats(-50.0, 50.0).filter(lambda w: abs(w) > 1e-3))
+@given(four_bar_dimensions(), st.floats(-50.0, 50.0).filter(lambda w: abs(w) > 1e-3))
 def test_four_bar_matches_scalar_reference(m, omega1):
     r = four_bar(ANGLES, omega1, **m)
     L = fb_scale(m)
@@ -240,7 +214,7 @@ def _interior(fn, th, m, margin=0.02):
 
 
 @FAST
-@given(four_bars())
+@given(four_bar_dimensions())
 def test_four_bar_velocities_are_position_derivatives(m):
     th = ANGLES
     r = four_bar(th, 1.0, **m)                       # omega1 = 1: velocity = d(position)/d(theta)
@@ -266,7 +240,7 @@ def test_four_bar_velocities_are_position_derivatives(m):
 
 
 @FAST
-@given(four_bars())
+@given(four_bar_dimensions())
 def test_four_bar_velocities_complex_step(m):
     r = four_bar(ANGLES, 1.0, **m)
     L = fb_scale(m)
@@ -282,7 +256,7 @@ def test_four_bar_velocities_complex_step(m):
 
 
 @FAST
-@given(slider_cranks())
+@given(slider_crank_dimensions())
 def test_slider_velocities_are_position_derivatives(m):
     th = ANGLES
     r = slider_crank(th, 1.0, **m)
@@ -329,7 +303,7 @@ def test_velocities_are_linear_in_omega1_and_broadcast():
 # ---------------------------------------------------------------------------------------------
 
 @FAST
-@given(four_bars())
+@given(four_bar_dimensions())
 def test_four_bar_branch_is_left_or_right_of_B_to_O2_and_mirrors(m):
     up = four_bar(ANGLES, 1.0, **{**m, "branch": 1})
     dn = four_bar(ANGLES, 1.0, **{**m, "branch": -1})
@@ -353,7 +327,7 @@ def test_four_bar_branch_is_left_or_right_of_B_to_O2_and_mirrors(m):
 
 
 @FAST
-@given(slider_cranks())
+@given(slider_crank_dimensions())
 def test_slider_branch_is_ahead_or_behind_the_foot_and_mirrors(m):
     ahead = slider_crank(ANGLES, 1.0, **{**m, "branch": 1})
     behind = slider_crank(ANGLES, 1.0, **{**m, "branch": -1})

@@ -13,7 +13,7 @@ import pytest
 from drafting.app.answers import PAPER_MM
 from drafting.app.cli import main
 
-ROOT = Path(__file__).resolve().parents[1]
+from paths import ROOT
 EXAMPLE_1 = ROOT / "gallery" / "notes-velocity-example-1.toml"
 # the notes' velocity Example 1: V_B 500 mm/s at 160 deg, V_C 568.5 mm/s at 180 deg, V_CB 197.4 mm/s at
 # 240 deg, omega_2 2.100 rad/s CW; the velocity polygon is drawn at 1 mm = 10 mm/s

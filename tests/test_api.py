@@ -7,7 +7,6 @@ import importlib.util
 import json
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -15,8 +14,7 @@ import drafting
 from drafting.backends.files import ExportError
 from drafting.scene.reader import SceneError, load_scene
 
-ROOT = Path(__file__).resolve().parent.parent
-GALLERY = ROOT / "gallery"
+from paths import GALLERY, ROOT
 EXAMPLE = GALLERY / "notes-velocity-example-1.toml"
 DICT = {"drawing": {"title": "Slider-crank", "number": "T-1"}, "frame": {"O1": [0, 0]},
         "link": [{"number": 1, "joints": ["O1", "B"], "length": 50},

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import sys
+
 import pytest
 
 
@@ -24,3 +26,29 @@ def test_the_run_says_how_fast_the_machine_was():
     assert isinstance(t, Timing) and 0 < t.best <= t
     assert format_machine_speed(Timing(0.0123, 0.0101)).endswith(
         "took 12.3 ms, best 10.1 ms (the sheet figures move with it)")
+
+
+def test_outside_a_checkout_the_peers_are_one_sentence_and_exit_2(tmp_path, monkeypatch, capsys):
+    """The peers live in the checkout's benchmarks/ folder: without it ``drafting bench --peers`` says so in
+    one line before timing anything, and the sheet table says why it has no matplotlib peer."""
+    from drafting.app import bench
+    from drafting.app.cli import main
+    for name in ("peers", "matplotlib_peer"):
+        monkeypatch.delitem(sys.modules, f"benchmarks.{name}", raising=False)
+    monkeypatch.setattr(bench, "BENCHMARKS", tmp_path / "benchmarks")
+    monkeypatch.setattr(bench, "machine_speed", lambda *a: pytest.fail("timed before refusing"))
+    assert main(["bench", "--quick", "--peers"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err == (f"drafting: error: bench --peers: the benchmark peers live in the benchmarks "
+                                 f"folder of a source checkout, and {tmp_path / 'benchmarks' / 'peers.py'} is "
+                                 f"not there\n")
+    assert bench.format_render_rows([]).splitlines()[-1] == (
+        f"  The same line art through matplotlib: not run (its peer lives in the benchmarks folder of a source "
+        f"checkout, and {tmp_path / 'benchmarks'} is not there).")
+
+
+def test_in_a_checkout_the_peers_load_from_the_benchmarks_folder():
+    from drafting.app.bench import BENCHMARKS, benchmark
+    peers = benchmark("peers")
+    assert peers is benchmark("peers") and peers.__file__ == str(BENCHMARKS / "peers.py")
+    assert benchmark("matplotlib_peer").__file__ == str(BENCHMARKS / "matplotlib_peer.py")

@@ -5,10 +5,12 @@ from __future__ import annotations
 
 import pytest
 
-from drafting.app import bench_matplotlib as mpl
+from drafting.app.bench import benchmark
 from drafting.scene.reader import load_scene
 from drafting.study.study import Study
 from drafting.study.worked import builtin_example, sheets_for
+
+mpl = benchmark("matplotlib_peer")
 
 pytestmark = pytest.mark.skipif(mpl.available() is None, reason="matplotlib is optional (pip install '.[bench]')")
 

@@ -7,7 +7,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from drafting.app import bench_peers as bp
+from drafting.app.bench import benchmark
+
+bp = benchmark("peers")
 
 
 def test_the_numpy_reference_is_the_engine_to_1e_9():

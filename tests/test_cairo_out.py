@@ -25,7 +25,7 @@ from drafting.study.study import Study
 from drafting.backends.svg import sheet_to_svg
 from drafting.study.worked import builtin_example, sheets_for
 
-GALLERY = Path(__file__).resolve().parents[1] / "gallery"
+from paths import GALLERY
 
 
 @pytest.fixture(scope="module")

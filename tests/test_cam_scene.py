@@ -13,7 +13,7 @@ from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study
 from drafting.study.worked import sheets_for
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 
 
 def study(name: str) -> Study:

@@ -8,12 +8,14 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
 
 from constructions import analytic
 from constructions.geometry import Vec
 from constructions.mechanisms.classify import classify_four_bar
 from constructions.mechanisms.model import Branch, Link, Mechanism, Slide
+
+from strategies import crank_rockers
 
 
 def four_bar(g, a, b, c, branch=1, frame_angle=0.0):
@@ -53,16 +55,6 @@ def test_a_slider_crank_is_not_a_four_bar():
     m = Mechanism({"O1": Vec(0, 0)}, (Link(1, ("O1", "B"), 0.05), Link(2, ("B", "C"), 0.094)),
                   (Slide(3, "C", Vec(0, 0), 0.0),), (), 1, {"C": Branch(1, ("B",))})
     assert classify_four_bar(m) is None
-
-
-@st.composite
-def crank_rockers(draw):
-    a = draw(st.floats(0.01, 0.05))
-    g = draw(st.floats(0.06, 0.2))
-    b = draw(st.floats(0.06, 0.2))
-    c = draw(st.floats(0.06, 0.2))
-    assume(a + max(g, b, c) < sum(sorted((g, b, c))[:2]) * 0.98)     # Grashof with the crank shortest
-    return g, a, b, c, draw(st.sampled_from([1, -1])), draw(st.floats(-math.pi, math.pi))
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -5,7 +5,6 @@ gaps, and a warning where the linkage cannot be assembled."""
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -18,7 +17,7 @@ from drafting.layout.chart import DEGREE_STEPS, ticks
 from drafting.scene.reader import load_scene, parse_scene
 from drafting.study.study import Study
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 CYCLE = GALLERY / "cycle-four-bar.toml"
 
 

@@ -4,7 +4,6 @@ fixed pivots from the crank's pivot, a guide's offset -- with the scene's own le
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
 
@@ -12,7 +11,7 @@ import drafting
 from constructions.entities import Diagram, Dimension
 from drafting.scene.reader import SceneError, parse_scene
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 
 
 def dims(study):

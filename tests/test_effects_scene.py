@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import math
 import tomllib
-from pathlib import Path
 
 import pytest
 
@@ -21,7 +20,7 @@ from drafting.scene.effects import SECTIONS
 from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.scene.unitset import Units
 
-ROOT = Path(__file__).resolve().parents[1]
+from paths import ROOT
 EXAMPLE = builtin_example().read_text()
 # the built-in slider-crank: link 1 O1-B (50 mm), link 2 B-C (94 mm), block 3 at C on the x axis
 

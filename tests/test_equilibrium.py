@@ -19,9 +19,9 @@ from constructions.geometry import Vec
 from constructions.mechanisms.model import Attached, Link, Mechanism
 from constructions.mechanisms.pose import locate
 from constructions.mechanisms.topology import Contact, Pin, SlotPin, moving_bodies, points_of_body
-from mechanisms import quick_return, rocker_with_slot, slanted_slot, slot_and_guide
+from mechanisms import quick_return, rocker_with_slot, slanted_slot, slider_crank, slot_and_guide
 from test_acceleration import toggle_four_bar
-from test_linkage_velocity import four_bars, slider_crank, slider_cranks
+from strategies import four_bars, slider_cranks
 
 G = Vec(0.0, -9.81)
 

@@ -23,8 +23,8 @@ from constructions.mechanisms.pose import locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
 from constructions.entities import AngleMark, Arrow, Dimension, Point, Segment, TrialLine
-from mechanisms import quick_return, rocker_with_slot, slot_and_guide
-from test_linkage_velocity import angles, coords, four_bars, sizes, slider_cranks, speeds, transmission
+from mechanisms import four_bar, quick_return, rocker_with_slot, slot_and_guide
+from strategies import angles, coords, four_bars, sizes, slider_cranks, speeds, transmission
 
 
 def compressor(angle_deg: float = 45.0) -> tuple[Mechanism, float]:
@@ -109,7 +109,6 @@ def test_a_polygon_that_cannot_close_is_named():
 
 
 def test_three_force_member_by_concurrency():
-    from test_linkage_velocity import four_bar
     from constructions.mechanisms.model import Attached
     m = four_bar((0, 0), (0.12, 0.01), 0.04, 0.13, 0.09, 1, (Attached("E", 2, "B", 0.08, -0.4),))
     fa = solve(m, 1.2, Effects(loads=(Load("P", 2, "E", Vec(10.0, -30.0)),)))

@@ -4,12 +4,12 @@ the whole pipeline, random bodies, improperly constrained and indeterminate bodi
 
 from __future__ import annotations
 
+from importlib.metadata import entry_points
 import json
 import math
-from importlib.metadata import entry_points
-from pathlib import Path
 
 import numpy as np
+
 import pytest
 from hypothesis import HealthCheck, assume, given, settings, strategies as st
 
@@ -27,7 +27,7 @@ from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study
 from drafting.study.worked import sheets_for
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 LOADER = GALLERY / "notes-front-end-loader.toml"
 AGREE = 1e-9
 

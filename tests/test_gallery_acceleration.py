@@ -23,8 +23,7 @@ from drafting.app.cli import main
 from drafting.scene.reader import load_scene
 from drafting.study.study import Study
 
-ROOT = Path(__file__).resolve().parents[1]
-GALLERY = ROOT / "gallery"
+from paths import GALLERY
 MM = 1e3            # m, m/s, m/s^2 -> mm, mm/s, mm/s^2
 DRAWING = 0.02      # drawing accuracy, relative
 

@@ -4,7 +4,6 @@ dynamic Examples 2 and 3, and that a scene runs only the analyses its effects ca
 from __future__ import annotations
 
 import itertools
-from pathlib import Path
 
 import pytest
 
@@ -12,7 +11,7 @@ from constructions.entities import Arrow
 from drafting.scene.reader import load_scene, parse_scene
 from drafting.study.study import Study
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 
 
 def study(name: str) -> Study:

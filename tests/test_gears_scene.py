@@ -3,10 +3,9 @@ labels, and bad input as one sentence naming the file and the key (drafting/gear
 
 from __future__ import annotations
 
+from importlib.metadata import entry_points
 import json
 import math
-from importlib.metadata import entry_points
-from pathlib import Path
 
 import pytest
 
@@ -16,8 +15,7 @@ from drafting.scene.reader import load_scene
 from drafting.study.study import Study
 from drafting.study.worked import sheets_for
 
-ROOT = Path(__file__).resolve().parent.parent
-GALLERY = ROOT / "gallery"
+from paths import GALLERY
 PAIR = GALLERY / "gear-pair-20-40.toml"
 RACK = GALLERY / "gear-rack-interference-limit.toml"
 THREE = GALLERY / "gear-train-three-gears.toml"

@@ -12,22 +12,18 @@ here hypothesis draws a small, fixed (derandomised) budget of them.
 
 from __future__ import annotations
 
-import importlib.util
 import random
-import sys
 import tempfile
 from pathlib import Path
 
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-ROOT = Path(__file__).resolve().parents[1]
-_spec = importlib.util.spec_from_file_location("fuzz_scenes", ROOT / "benchmarks" / "fuzz_scenes.py")
-fuzz = importlib.util.module_from_spec(_spec)
-sys.modules.setdefault("fuzz_scenes", fuzz)
-_spec.loader.exec_module(fuzz)
+from paths import GALLERY, benchmark_module
+
+fuzz = benchmark_module("fuzz_scenes")
 
 BASES = fuzz.gallery()
-KINDS = sorted(fuzz.MUTATIONS)
+KINDS = sorted(benchmark_module("fuzz_mutations").MUTATIONS)
 
 
 def known_engine_bug(r) -> str | None:
@@ -83,7 +79,7 @@ def test_the_fuzzer_sees_what_it_should():
 
 def test_two_points_on_one_link_render(tmp_path, capsys):
     from drafting.app.cli import main
-    text = (ROOT / "gallery" / "notes-velocity-example-1.toml").read_text()
+    text = (GALLERY / "notes-velocity-example-1.toml").read_text()
     pts = "".join(f'\n[[point]]\nname = "P{i}"\nlink = 2\nfrom = "B"\ndistance = {10 + i}\nangle = "{20 * i} deg"\n'
                   for i in range(2))
     p = tmp_path / "two.toml"

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import math
 import time
-from pathlib import Path
 
 import pytest
 
@@ -17,7 +16,6 @@ from drafting.scene.reader import parse_scene
 from drafting.scene.units import DEFAULT_UNITS, KINDS, UnitError, check_unit, format_value, from_si, to_si
 
 EXAMPLE = builtin_example().read_text()
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def refuse(tmp_path, capsys, text: str | bytes, key: str, *words: str, name: str = "scene.toml") -> str:

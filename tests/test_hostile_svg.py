@@ -5,28 +5,16 @@ the end of the session, so a bad SVG shows as an error at the teardown of the la
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-
-
-def _fuzz():
-    mod = sys.modules.get("fuzz_scenes")
-    if mod is None:
-        spec = importlib.util.spec_from_file_location("fuzz_scenes", ROOT / "benchmarks" / "fuzz_scenes.py")
-        mod = importlib.util.module_from_spec(spec)
-        sys.modules["fuzz_scenes"] = mod
-        spec.loader.exec_module(mod)
-    return mod
+from paths import GALLERY, benchmark_module
 
 
 def bad_svgs(folder: Path) -> list[tuple[Path, str]]:
     """(path, why) for every .svg under ``folder`` that is not well-formed, inert SVG."""
-    check = _fuzz().check_svg
+    check = benchmark_module("fuzz_scenes").check_svg
     return [(p, why) for p in sorted(folder.rglob("*.svg")) if (why := check(p))]
 
 
@@ -39,9 +27,9 @@ def every_svg_of_the_session(tmp_path_factory):
 
 
 def test_gallery_svgs_are_well_formed_and_inert():
-    svgs = sorted((ROOT / "gallery").glob("*.svg"))
+    svgs = sorted(GALLERY.glob("*.svg"))
     assert svgs
-    assert bad_svgs(ROOT / "gallery") == []
+    assert bad_svgs(GALLERY) == []
 
 
 def test_the_check_catches_a_bad_svg(tmp_path):

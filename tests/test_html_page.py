@@ -6,7 +6,6 @@ from __future__ import annotations
 import re
 import shutil
 import subprocess
-from pathlib import Path
 
 import pytest
 
@@ -15,7 +14,7 @@ from drafting.app.cli import main
 from drafting.backends.html_markup import markup_html
 from drafting.backends.html_page import entity_of, page_html
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 SCENE = GALLERY / "notes-acceleration-example-1.toml"
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 

@@ -11,7 +11,6 @@ import math
 import re
 import shutil
 import subprocess
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -27,7 +26,7 @@ from drafting.render.paper import Polyline
 from drafting.scene.reader import parse_scene
 from test_sweep import PARALLELOGRAM            # the same parallelogram four-bar
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 CYCLE = GALLERY / "cycle-four-bar.toml"
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 GAP_TEXT = CYCLE.read_text().replace("length = 20\n", "length = 50\n", 1)      # the crank cannot turn fully

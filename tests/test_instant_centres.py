@@ -5,7 +5,6 @@ slotted links and random mechanisms."""
 from __future__ import annotations
 
 import itertools
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,9 +18,10 @@ from constructions.mechanisms.pose import locate
 from constructions.polygons.velocity import velocity_polygon
 from drafting.scene.reader import load_scene
 from drafting.study.study import Study
-from test_linkage_velocity import four_bar, four_bars, slider_crank, slider_cranks
+from mechanisms import four_bar, slider_crank
+from strategies import four_bars, slider_cranks
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 
 
 def _points(m, body):

@@ -7,7 +7,6 @@ import csv
 import io
 import re
 import xml.etree.ElementTree as ET
-from pathlib import Path
 
 import pytest
 
@@ -17,7 +16,7 @@ from drafting.backends.svg import sheet_to_svg
 from drafting.scene.reader import load_scene
 from drafting.study.study import Study
 
-ROOT = Path(__file__).resolve().parents[1]
+from paths import ROOT
 SCENES = ["notes-velocity-example-1", "notes-velocity-example-4", "notes-acceleration-example-1",
           "notes-static-force-sample", "gear-pair-20-40", "notes-front-end-loader"]
 

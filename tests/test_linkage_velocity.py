@@ -29,24 +29,11 @@ from constructions.record import VectorEquation
 from constructions.tolerance import DEAD_CENTRE_SINE, SINGULAR_SINE, WARN_SINE
 from constructions.polygons.velocity import velocity_polygon
 
+from mechanisms import four_bar, slider_crank
+from strategies import angles, coords, four_bars, slider_cranks, speeds
+
 AGREE = 1e-9
 FAST = settings(max_examples=200, deadline=None)
-
-
-# -- building mechanisms ------------------------------------------------------------------------------
-
-def four_bar(o1, o2, crank, coupler, rocker, branch, attached=()):
-    """O1-B crank (link 1), B-C coupler (2), O2-C rocker (3); branch +1: C left of B->O2."""
-    return Mechanism({"O1": Vec(*o1), "O2": Vec(*o2)},
-                     (Link(1, ("O1", "B"), crank), Link(2, ("B", "C"), coupler), Link(3, ("O2", "C"), rocker)),
-                     (), tuple(attached), 1, {"C": Branch(branch, ("B", "O2"))})
-
-
-def slider_crank(o1, crank, coupler, guide_point, guide_angle, branch, attached=()):
-    """O1-B crank (1), B-C coupler (2), slider block 3 at C on the guide; branch +1: C ahead of B."""
-    return Mechanism({"O1": Vec(*o1)}, (Link(1, ("O1", "B"), crank), Link(2, ("B", "C"), coupler)),
-                     (Slide(3, "C", Vec(*guide_point), guide_angle),), tuple(attached), 1,
-                     {"C": Branch(branch, ("B",))})
 
 
 def scaled(m: Mechanism, k: float) -> Mechanism:
@@ -178,71 +165,6 @@ def test_notes_example_1_in_line_slider_crank():
 
 
 # -- random mechanisms against the analytic solution ---------------------------------------------------
-
-sizes = st.floats(0.01, 1.0)                       # a mechanism's unit: 10 mm .. 1 m
-proportions = st.floats(0.25, 5.0)                 # its links 0.25..5 units: 2.5 mm .. 5 m, at most 1:20
-coords = st.floats(-1.0, 1.0)
-angles = st.floats(-math.pi, math.pi)
-speeds = st.floats(0.1, 1000.0).flatmap(lambda w: st.sampled_from([w, -w]))
-# a point fixed to a link: anywhere, on the line of the link, next to it (1e-10..1e-6 rad) or at a joint
-point_angles = st.one_of(st.sampled_from([0.0, math.pi]), angles,
-                         st.floats(1e-10, 1e-6).flatmap(lambda a: st.sampled_from([a, -a, math.pi - a])))
-point_distances = st.one_of(st.just(0.0), st.floats(0.0, 2.0), st.floats(1e-12, 1e-8))  # x link length
-
-
-@st.composite
-def transmission(draw):
-    """An angle between coupler and rocker (or coupler and guide normal) with |sine| >= 0.06."""
-    a = draw(st.floats(math.asin(0.06), math.pi - math.asin(0.06)))
-    return a if draw(st.booleans()) else -a
-
-
-@st.composite
-def four_bars(draw):
-    o1 = (draw(coords), draw(coords))
-    unit = draw(sizes)
-    crank, coupler, rocker = (unit * draw(proportions) for _ in range(3))
-    theta = draw(angles)
-    b = Vec(*o1) + Vec.polar(crank, theta)
-    phi2 = draw(angles)
-    c = b + Vec.polar(coupler, phi2)
-    o2 = c - Vec.polar(rocker, phi2 + draw(transmission()))
-    natural = 1 if (o2 - b).cross(c - b) > 0 else -1
-    branch = natural if draw(st.booleans()) else -natural      # the mirror assembly, too
-    points = [Attached("D", 2, draw(st.sampled_from(["B", "C"])), coupler * draw(point_distances),
-                       draw(point_angles)),
-              Attached("E", 3, draw(st.sampled_from(["O2", "C"])), rocker * draw(st.floats(0.1, 1.5)),
-                       draw(point_angles)),
-              Attached("A", 1, "O1", crank * draw(st.floats(0.1, 1.5)), draw(point_angles))]
-    m = four_bar(o1, o2.as_tuple(), crank, coupler, rocker, branch, points)
-    return m, theta, draw(speeds)
-
-
-@st.composite
-def slider_cranks(draw):
-    o1 = (draw(coords), draw(coords))
-    unit = draw(sizes)
-    crank, coupler = unit * draw(proportions), unit * draw(proportions)
-    theta = draw(angles)
-    g = draw(st.one_of(st.just(0.0), angles))
-    if draw(st.booleans()):
-        # in-line: the guide passes through O1; a coupler longer than the crank always assembles
-        coupler = crank * draw(st.floats(1.06, 6.0))
-        through = Vec(*o1) + Vec.polar(unit * draw(st.sampled_from([0.0, 0.3, -2.7])), g)
-        natural = draw(st.sampled_from([1, -1]))
-    else:
-        # offset: C where the coupler meets a guide drawn through it, |cos(coupler, guide)| >= 0.06
-        b = Vec(*o1) + Vec.polar(crank, theta)
-        c = b + Vec.polar(coupler, g + math.pi / 2 + draw(transmission()))
-        through = c + Vec.polar(unit * draw(st.floats(-5.0, 5.0)), g)
-        natural = 1 if (c - b).dot(Vec.polar(1.0, g)) > 0 else -1
-    branch = natural if draw(st.booleans()) else -natural
-    points = [Attached("D", 2, draw(st.sampled_from(["B", "C"])), coupler * draw(point_distances),
-                       draw(point_angles)),
-              Attached("A", 1, "O1", crank * draw(st.floats(0.1, 1.5)), draw(point_angles))]
-    m = slider_crank(o1, crank, coupler, through.as_tuple(), g, branch, points)
-    return m, theta, draw(speeds)
-
 
 def assert_only_dead_centre_warnings(m, va):
     """Away from singular positions the only possible remark is a dead centre (crank and coupler in

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import math
 import re
-from pathlib import Path
 
 import pytest
 
@@ -15,7 +14,7 @@ from drafting.app.cli import main
 from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 EXAMPLE_1 = GALLERY / "notes-dynamic-example-1.toml"
 G, MASS, L = 9.81, 1.0, 1.0
 

@@ -15,8 +15,7 @@ from drafting.app.cli import builtin_example, main
 from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study
 
-ROOT = Path(__file__).resolve().parents[1]
-GALLERY = ROOT / "gallery"
+from paths import GALLERY, ROOT
 EXAMPLE = builtin_example().read_text()
 
 

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import csv
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -17,7 +16,7 @@ from constructions.sweep import sweep
 from drafting.app import cli
 from drafting.scene.reader import load_scene
 
-GALLERY = Path(__file__).resolve().parent.parent / "gallery"
+from paths import GALLERY
 FOUR_BAR = GALLERY / "notes-velocity-example-2.toml"
 QUICK_RETURN = GALLERY / "quick-return-slotted-lever.toml"
 

@@ -18,7 +18,8 @@ from constructions import sweep_kernels as sk
 from constructions.analytic.states import FOURBAR_FIELDS
 from constructions.sweep_kernels import chain_chunks, shared_steps, trig
 from constructions.sweep_kernels import coupler_point, four_bar, slider_crank
-from test_analytic import ANGLES, FAST, FB, four_bars, slider_cranks
+from strategies import four_bar_dimensions, slider_crank_dimensions
+from test_analytic import ANGLES, FAST, FB
 from test_analytic_acceleration import toggle_linkage
 
 #: Away from singular positions: the sine of the angle between the velocity trial lines at least this.
@@ -63,7 +64,7 @@ def _same_as_oracle(kernel, oracle, angle_fields=()):
 
 
 @FAST
-@given(four_bars())
+@given(four_bar_dimensions())
 def test_four_bar_kernel_matches_the_oracle(m):
     omega, alpha = 7.0, -30.0
     k, o = four_bar(ANGLES, omega, alpha, **m), an.four_bar(ANGLES, omega, alpha, **m)
@@ -73,7 +74,7 @@ def test_four_bar_kernel_matches_the_oracle(m):
 
 
 @FAST
-@given(slider_cranks())
+@given(slider_crank_dimensions())
 def test_slider_kernel_matches_the_oracle(m):
     omega, alpha = -4.0, 12.0
     _same_as_oracle(slider_crank(ANGLES, omega, alpha, **m), an.slider_crank(ANGLES, omega, alpha, **m),
@@ -81,7 +82,7 @@ def test_slider_kernel_matches_the_oracle(m):
 
 
 @FAST
-@given(four_bars())
+@given(four_bar_dimensions())
 def test_coupler_point_kernel_matches_the_oracle(m):
     r = an.four_bar(ANGLES, 3.0, 5.0, **m)
     ok = r.assembles & (r.condition >= WELL_CONDITIONED)

@@ -1,17 +1,30 @@
 """Benchmarks, side by side in one run: the default sheet to SVG, PDF and PNG, and the analytic sweep.
 
 Run with ``drafting bench`` (or ``python benchmarks/run_all.py``).  The figures are written into the
-README; they are never asserted in tests.
+README; they are never asserted in tests.  The peers (matplotlib drawing the same sheets; pylinkage,
+mechanism and plain numpy sweeping the four-bar) live in the checkout's ``benchmarks/`` folder, never inside
+drafting/, and are loaded from there by :func:`benchmark`.
 """
 
 from __future__ import annotations
 
+import gc
+import importlib.util
 import statistics
+import sys
 import time
 from pathlib import Path
+from types import ModuleType
 from typing import Callable
 
 from .bench_sweep import format_table, sweep_rows
+from .parallel import GC_YOUNG
+from ..backends import cairo as cairo_out
+from ..backends.files import PNG_DPI
+from ..backends.svg import sheet_to_svg
+from ..scene.reader import load_scene
+from ..study.study import Study
+from ..study.worked import builtin_example, sheets_for
 
 
 def _median_seconds(fn: Callable[[], object], repeats: int) -> "Timing":
@@ -36,7 +49,42 @@ class Timing(float):
         return t
 
 
-GALLERY = Path(__file__).resolve().parents[2] / "gallery"
+CHECKOUT = Path(__file__).resolve().parents[2]
+GALLERY = CHECKOUT / "gallery"
+BENCHMARKS = CHECKOUT / "benchmarks"
+
+
+class BenchmarksMissing(Exception):
+    """A peer was asked for, and this installation has no ``benchmarks/`` folder (it is not a checkout)."""
+
+
+def benchmark(name: str) -> ModuleType:
+    """The checkout's ``benchmarks/<name>.py`` (``peers``, ``matplotlib_peer``), loaded once by its path:
+    the folder is not an installed package.  :class:`BenchmarksMissing` when it is not there."""
+    key = f"benchmarks.{name}"
+    if key in sys.modules:
+        return sys.modules[key]
+    path = BENCHMARKS / f"{name}.py"
+    if not path.is_file():
+        raise BenchmarksMissing(f"the benchmark peers live in the benchmarks folder of a source checkout, and "
+                                f"{path} is not there")
+    spec = importlib.util.spec_from_file_location(key, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[key] = module                  # before it runs: its dataclasses look their module up
+    try:
+        spec.loader.exec_module(module)
+    except BaseException:
+        del sys.modules[key]
+        raise
+    return module
+
+
+def _matplotlib_peer() -> ModuleType | None:
+    """The matplotlib peer, or None outside a checkout (the sheet table then says why it has no peer)."""
+    try:
+        return benchmark("matplotlib_peer")
+    except BenchmarksMissing:
+        return None
 
 
 def _reference_work() -> int:
@@ -68,14 +116,7 @@ def render_rows(repeats: int = 7) -> list[dict]:
     """Median wall time of each stage (solve, layout of every sheet, SVG/PDF/PNG in memory) for each
     sheet of :data:`RENDER_SCENES` that exists in this checkout, and the same sheets' line art drawn
     through matplotlib when it is installed (``mpl_svg`` ...)."""
-    from . import bench_matplotlib as mpl
-    from ..backends import cairo as cairo_out
-    from ..backends.files import PNG_DPI
-    from ..study.worked import builtin_example, sheets_for
-    from ..scene.reader import load_scene
-    from ..study.study import Study
-    from ..backends.svg import sheet_to_svg
-
+    mpl = _matplotlib_peer()
     rows = []
     for label, name in RENDER_SCENES:
         path = builtin_example() if name is None else GALLERY / name
@@ -92,7 +133,7 @@ def render_rows(repeats: int = 7) -> list[dict]:
                "svg": _median_seconds(lambda: [sheet_to_svg(s) for s in sheets], repeats),
                "pdf": _median_seconds(lambda: cairo_out.sheets_to_pdf(sheets), repeats),
                "png": _median_seconds(lambda: [cairo_out.sheet_to_png(s, PNG_DPI) for s in sheets], repeats)}
-        if mpl.available():
+        if mpl is not None and mpl.available():
             row["artists"] = mpl.artists(sheets)
             if row["artists"] != mpl.command_count(sheets):       # checked before it is timed: the same drawing
                 raise RuntimeError(f"the matplotlib peer drew {row['artists']} artists for the sheet's "
@@ -119,9 +160,13 @@ def format_render_rows(rows: list[dict]) -> str:
                      + f"   {both(base + r['svg'], best + getattr(r['svg'], 'best', r['svg']))}"
                      + f" {both(base + r['pdf'], best + getattr(r['pdf'], 'best', r['pdf']))}")
     lines.append("  (to SVG and to PDF: the sum of the stages' medians [of their best runs])")
-    from .bench_matplotlib import available
-    version = available()
     lines.append("")
+    mpl = _matplotlib_peer()
+    if mpl is None:
+        lines.append(f"  The same line art through matplotlib: not run (its peer lives in the benchmarks folder of a "
+                     f"source checkout, and {BENCHMARKS} is not there).")
+        return "\n".join(lines)
+    version = mpl.available()
     if version is None:
         lines.append("  The same line art through matplotlib: not installed (pip install '.[bench]').")
         return "\n".join(lines)
@@ -134,10 +179,11 @@ def format_render_rows(rows: list[dict]) -> str:
 
 
 def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
+    """Every table of one run as text; with ``peers`` the four-bar sweep against its peers too
+    (:class:`BenchmarksMissing` at once, before any timing, outside a checkout)."""
+    peer_sweep = benchmark("peers") if peers else None
     repeats = 3 if quick else 7
     sizes = (10**3, 10**4, 10**5, 10**6) if quick else (10**3, 10**4, 10**5, 10**6, 10**7)
-    import gc
-    from .parallel import GC_YOUNG
     collector = ("tuned as in the drafting command" if gc.get_threshold()[0] == GC_YOUNG
                  else "Python's defaults (the drafting command tunes it: drafting.app.parallel.tune_gc)")
     speed = machine_speed(repeats)
@@ -149,9 +195,8 @@ def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
     lines.append("Analytic sweep, full states -- positions, velocities and accelerations of every joint "
                  "(one core, numpy):")
     lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))
-    if peers:
-        from .bench_peers import format_rows, rows
+    if peer_sweep is not None:
         lines.append("")
         lines.append("The four-bar sweep against its peers (positions checked against this engine first):")
-        lines.append(format_rows(*rows(sizes)))
+        lines.append(peer_sweep.format_rows(*peer_sweep.rows(sizes)))
     return "\n".join(lines)

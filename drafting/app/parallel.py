@@ -25,13 +25,14 @@ Faults, with the default process pool:
 from __future__ import annotations
 
 import concurrent.futures as cf
+import contextlib
 import gc
 import multiprocessing
 import os
 import signal
 import sys
 import threading
-from typing import Any, Callable, Iterable, Sequence
+from typing import Any, Callable, Iterable, Iterator, Sequence
 
 from ..backends import faults
 
@@ -39,6 +40,8 @@ SERIAL_BELOW = 3
 """Fewer jobs than this run serially when no executor is given (see the module docstring)."""
 GRACE_SECONDS = 20.0
 """How long an interrupted worker may take to remove its temporary files before it is killed."""
+HELD = frozenset({signal.SIGINT, signal.SIGTERM})
+"""The signals held back (blocked) while this process starts its pool: see :func:`_held`."""
 
 
 class WorkerLost(Exception):
@@ -72,6 +75,8 @@ def _worker_init() -> None:
     tune_gc()
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, faults.end_worker)
+    if hasattr(signal, "pthread_sigmask"):      # started with them blocked (_held): its own handlers now run
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, HELD)
     try:
         import ctypes
         libc = ctypes.CDLL(None, use_errno=True)
@@ -81,6 +86,25 @@ def _worker_init() -> None:
             os._exit(128 + signal.SIGTERM)
     except (OSError, AttributeError):
         pass
+
+
+@contextlib.contextmanager
+def _held() -> Iterator[None]:
+    """SIGINT and SIGTERM blocked while this process starts its pool.  A forked worker inherits the
+    block, so a signal sent to it before :func:`_worker_init` has put its own handlers in place waits
+    for them (else it ran this process's handler mid-fork: "Exception ignored ... _releaseLock" and a
+    worker that lived on); and this process takes its own signal only once every worker is recorded in
+    the pool, so that :func:`_stop_pool` ends them all (else a worker forked but not yet recorded was
+    never told, and the exit waited for it for ever).  Found by the fault tests sending the signal while
+    the pool starts."""
+    if not hasattr(signal, "pthread_sigmask") or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = signal.pthread_sigmask(signal.SIG_BLOCK, HELD)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, before)
 
 
 def _call(fn: Callable[[Any], Any], job: Any) -> Any:
@@ -135,8 +159,9 @@ def run(fn: Callable[[Any], Any], jobs: Sequence[Any], *, executor: cf.Executor 
     futures: dict[cf.Future, int] = {}
     clean = False
     try:
-        for i, job in enumerate(jobs):
-            futures[executor.submit(_call, fn, job)] = i
+        with _held() if own else contextlib.nullcontext():      # the pool forks its workers on the first submit
+            for i, job in enumerate(jobs):
+                futures[executor.submit(_call, fn, job)] = i
         for fut in cf.as_completed(futures):
             i = futures[fut]
             try:

@@ -7,7 +7,8 @@ circles as patches, each span of lettering as a
 ``text`` at the position the sheet's layout gave it (matplotlib has no layout of its own to offer
 here) -- and saved with matplotlib's own SVG, PDF and Agg (PNG) back ends.  Only the drawing stage has
 a peer: solving and laying out a sheet are this engine's.  matplotlib is optional (``pip install
-'.[bench]'``); without it :func:`available` is False and the benchmark says so.
+'.[bench]'``); without it :func:`available` is None and the benchmark says so.  ``drafting bench`` loads
+this file from the checkout (:func:`drafting.app.bench.benchmark`).
 """
 
 from __future__ import annotations
@@ -15,9 +16,9 @@ from __future__ import annotations
 import io
 from typing import Sequence
 
-from ..render.paper import Circle, Line, Polygon, Polyline, Rectangle, Strokes, Text
-from ..layout.sheet import Sheet
-from ..render.style import FONT_FAMILY, measure, style
+from drafting.render.paper import Circle, Line, Polygon, Polyline, Rectangle, Strokes, Text
+from drafting.layout.sheet import Sheet
+from drafting.render.style import FONT_FAMILY, measure, style
 
 PT_PER_MM = 72.0 / 25.4
 _CAPS = {"butt": "butt", "round": "round", "square": "projecting"}

@@ -1,0 +1,81 @@
+"""``drafting check``: graphical against analytic for each scene, or a student's answers marked against the
+scene's key (or a batch variant's) at drawing accuracy."""
+
+from __future__ import annotations
+
+import sys
+import tomllib
+from pathlib import Path
+from typing import Sequence
+
+from .answers import AnswersError, mark, read_answers
+from .batch import variant_label, variant_study
+from .lab import dimensioned, lab_for
+from .solving import EXIT_DISAGREE, UserError, load_study, results_text, solve_study
+from ..scene.reader import SceneError, _read_text, parse_scene
+from ..study.study import Study
+
+
+def cmd_check(scenes: Sequence[Path]) -> int:
+    """Check every scene; a scene that cannot be read or solved is reported in one line and the others are
+    still checked (as render does).  Exit: the worst of 1 (disagreement), 3 (singular), 2 (bad input)."""
+    status = 0
+    for path in scenes:
+        try:
+            study = solve_study(load_study(path))
+        except UserError as e:
+            print(f"drafting: error: {e}", file=sys.stderr)
+            status = max(status, e.code)
+            continue
+        print(results_text(study))
+        if study.comparisons and study.model is None:
+            print(f"  {path}: no analytic model for this mechanism; nothing checked")
+        if study.disagreements():
+            status = max(status, EXIT_DISAGREE)
+    return status
+
+
+def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int | None) -> int:
+    """Mark a student's values against the scene's key (or a batch variant's) at drawing accuracy: one
+    line per item, right / wrong / missing with the expected value.  Exit 1 unless every item is right."""
+    label = ""
+    if variant is not None:
+        if seed is None:
+            raise UserError(f"{path}: --variant needs the batch's --seed")
+        try:
+            text = _read_text(path)
+            parse_scene(text, path)
+            data = tomllib.loads(text)
+        except SceneError as e:
+            raise UserError(str(e)) from None
+        if "vary" not in data:
+            raise UserError(f"{path}: vary: is missing, so the scene has no variants")
+        notes: list[str] = []
+        try:
+            study, _ = variant_study(data, path, seed, variant, notes)
+        except SceneError as e:
+            raise UserError(str(e)) from None
+        if study is None:
+            raise UserError(f"{path}: variant {variant} of seed {seed} was skipped by the batch (no draw could "
+                            f"be drawn)")
+        label = variant_label(variant)
+    else:
+        study = solve_study(Study(dimensioned(load_study(path).scene)))
+    items = lab_for(study, label=label).items
+    if not items:
+        raise UserError(f"{path}: the scene has no answers to mark (it asks for {', '.join(study.scene.analyses)})")
+    try:
+        marks, unknown = mark(items, read_answers(answers), answers, study.scene.units)
+    except AnswersError as e:
+        raise UserError(str(e)) from None
+    width = max(len(m.item.shown) for m in marks)
+    title = study.scene.title + (f" ({label})" if label else "")
+    print(f"{title}: {answers} marked at drawing accuracy")
+    for m in marks:
+        print(m.line(width))
+    counts = {v: sum(1 for m in marks if m.verdict == v) for v in ("right", "wrong", "missing")}
+    print(f"  {counts['right']} right, {counts['wrong']} wrong, {counts['missing']} missing of {len(marks)}")
+    for name in unknown:
+        print(f"  note: {answers}: {name!r} is not a quantity of this scene; it asks for "
+              f"{', '.join(i.shown for i in items)}")
+    return 0 if counts["right"] == len(marks) else EXIT_DISAGREE
