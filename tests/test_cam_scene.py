@@ -140,10 +140,12 @@ def test_export_undercut_cam_is_trimmed_and_the_cli_pieces(tmp_path, capsys):
     from shapely.geometry import LinearRing
 
     from constructions.cams.profile import analyse
-    from drafting.app.cam_export import add_export_arguments, profile_for_export, run_export
+    from drafting.app.cam_export import add_export_arguments, run_export
+    from drafting.study.study import Study
 
-    m = load_scene(GALLERY / "roller-cam-undercut.toml").model
-    pts, tol = profile_for_export(m)
+    scene = load_scene(GALLERY / "roller-cam-undercut.toml")
+    m = scene.model
+    pts, tol = Study(scene).get("machining profile")
     assert LinearRing(pts.T).is_simple
     P = analyse(m.program, m.follower, 4096).samples.pitch
     d = np.min(np.hypot(pts[0][:, None] - P[0][None, :], pts[1][:, None] - P[1][None, :]), axis=1)

@@ -1,8 +1,9 @@
 """Who may import whom, read from the source (imports inside functions too): the engine never imports
-drafting/, and drafting's drawing rooms -- render/, layout/, backends/ -- never solve: of constructions/
-they import only the record and the data types it is made of (geometry, and the tolerance the drawing's
-one geometric helper is given), never a solver; every number and point they draw comes from the Study's
-record and results."""
+drafting/, and drafting never solves -- only study/ and families/ call the engine's solvers.  The drawing
+rooms (render/, layout/, backends/) import of constructions/ only the record and the data types it is made
+of (geometry, and the tolerance the drawing's one geometric helper is given); scene/ the model's data types
+it reads a scene into; app/ the errors and values it reports.  Every number and point they draw or print
+comes from the Study's record and results."""
 
 from __future__ import annotations
 
@@ -13,14 +14,27 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 
-DRAWING_ROOMS = {
+ROOM_IMPORTS = {
     "render": {"constructions.entities", "constructions.geometry", "constructions.tolerance"},
     "layout": {"constructions.entities", "constructions.geometry", "constructions.record"},
     "backends": {"constructions.entities", "constructions.geometry"},
+    "scene": {"constructions.forces.effects", "constructions.forces.inertia", "constructions.geometry",
+              "constructions.mechanisms.model"},
+    "app": {"constructions.entities", "constructions.errors", "constructions.geometry", "constructions.quantities",
+            "constructions.record"},
 }
-"""Each drawing room and exactly the constructions modules it imports."""
+"""Each room that does not solve and exactly the constructions modules it imports."""
 
-DATA_TYPES = {"constructions.record", "constructions.entities", "constructions.geometry", "constructions.quantities", "constructions.formatting",
+SOLVING_ROOMS = {"study", "families"}
+"""The rooms that run the engine's analyses."""
+
+BENCH_HARNESS = {"drafting/app/bench_sweep.py": {"constructions.geometry", "constructions.mechanisms.model",
+                                                 "constructions.sweep_kernels"}}
+"""``drafting bench`` times the engine's own sweep kernels: the one file outside the solving rooms that calls
+a solver, to time it, drawing nothing."""
+
+DATA_TYPES = {"constructions.record", "constructions.entities", "constructions.forces.effects",
+              "constructions.forces.inertia", "constructions.mechanisms.model", "constructions.geometry", "constructions.quantities", "constructions.formatting",
               "constructions.errors", "constructions.dimensions", "constructions.tolerance"}
 """The engine's modules that hold data types and names, no solver: all a drawing room may ever import."""
 
@@ -32,8 +46,10 @@ def imported_modules(folder: Path) -> dict[str, set[str]]:
         mods: set[str] = set()
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
-                mods.add(node.module)
-                mods |= {f"{node.module}.{a.name}" for a in node.names if node.module == "constructions"}
+                package = ROOT.joinpath(*node.module.split("."))
+                submodules = {f"{node.module}.{a.name}" for a in node.names
+                              if (package / f"{a.name}.py").exists() or (package / a.name).is_dir()}
+                mods |= submodules or {node.module}
             elif isinstance(node, ast.Import):
                 mods |= {a.name for a in node.names}
         out[str(path.relative_to(ROOT))] = mods
@@ -46,11 +62,26 @@ def test_constructions_never_imports_drafting():
     assert {f: m for f, m in wrong.items() if m} == {}
 
 
-@pytest.mark.parametrize("room", sorted(DRAWING_ROOMS))
-def test_the_drawing_rooms_import_no_solver(room):
-    """A drawing room imports exactly its listed constructions modules, every one a data type."""
-    assert DRAWING_ROOMS[room] <= DATA_TYPES
-    by_file = imported_modules(ROOT / "drafting" / room)
-    engine = {m for mods in by_file.values() for m in mods if m == "constructions" or m.startswith("constructions.")}
-    assert engine == DRAWING_ROOMS[room], {f: sorted(m for m in mods if m.startswith("constructions"))
-                                           for f, mods in by_file.items()}
+def _engine(mods: set[str]) -> set[str]:
+    return {m for m in mods if m == "constructions" or m.startswith("constructions.")}
+
+
+@pytest.mark.parametrize("room", sorted(ROOM_IMPORTS))
+def test_the_rooms_that_do_not_solve_import_no_solver(room):
+    """A room outside study/ and families/ imports exactly its listed constructions modules, every one a
+    data type (the bench harness apart)."""
+    assert ROOM_IMPORTS[room] <= DATA_TYPES
+    by_file = {f: mods for f, mods in imported_modules(ROOT / "drafting" / room).items() if f not in BENCH_HARNESS}
+    engine = {m for mods in by_file.values() for m in _engine(mods)}
+    assert engine == ROOM_IMPORTS[room], {f: sorted(_engine(mods)) for f, mods in by_file.items() if _engine(mods)}
+
+
+def test_every_room_is_ruled_and_the_top_imports_no_engine():
+    """Each folder of drafting/ is a ruled room; api.py and entry.py reach the engine only through them;
+    the bench harness imports what it is listed with."""
+    rooms = {p.name for p in (ROOT / "drafting").iterdir() if p.is_dir() and (p / "__init__.py").exists()}
+    assert rooms == set(ROOM_IMPORTS) | SOLVING_ROOMS
+    top = {f: _engine(m) for f, m in imported_modules(ROOT / "drafting").items() if f.count("/") == 1}
+    assert {f: m for f, m in top.items() if m} == {}
+    harness = imported_modules(ROOT / "drafting" / "app")
+    assert {f: _engine(harness[f]) for f in BENCH_HARNESS} == BENCH_HARNESS

@@ -16,9 +16,10 @@ from constructions.cams.construction import construct
 from constructions.cams.follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER
 from constructions.geometry import Vec
 
-from .scene import SECTIONS, CamScene, read_cam
 from ..glue import construction_of, model_if_asked
 from ..registry import Analysis, Family
+from .machining import machining_profile
+from .scene import SECTIONS, CamScene, read_cam
 
 MODEL = "closed-form cam geometry (pressure angle and contact point)"
 
@@ -203,6 +204,7 @@ CAM = Family(
     analyses={
         "profile": Analysis("profile", (), _profile, label="cam construction"),
         "closed forms": Analysis("closed forms", ("profile",), _closed, label="cam closed forms"),
+        "machining profile": Analysis("machining profile", (), machining_profile),
     },
     askable=("profile",),
     measured=_measured,
