@@ -50,6 +50,15 @@ def read_effects(r, units: Units, m: Mechanism) -> tuple[Mechanism, Effects]:
     return _EffectsReader(r, units, m).read()
 
 
+def claim_name(names: dict[str, str], key: str, v: str, fail, rule: str) -> str:
+    """``v`` given at ``key`` registered in ``names`` (name -> the key's table), or ``fail(key, ...)`` naming
+    the table that has it already and ``rule``."""
+    if v in names:
+        raise fail(key, f"{v} is already the name of {names[v]}; {rule}")
+    names[v] = key.rsplit(".", 1)[0]
+    return v
+
+
 class _EffectsReader:
     def __init__(self, r, units: Units, m: Mechanism) -> None:
         self.r, self.units, self.m = r, units, m
@@ -65,11 +74,7 @@ class _EffectsReader:
         v = self.r.text(key, value)
         if not _NAME.fullmatch(v):
             raise self.fail(key, f"{v!r} is not a name (a letter then letters or digits, e.g. P or M4)")
-        if v in self.names:
-            raise self.fail(key, f"{v} is already the name of {self.names[v]}; loads, couples and springs "
-                                 f"need names of their own")
-        self.names[v] = key.rsplit(".", 1)[0]
-        return v
+        return claim_name(self.names, key, v, self.fail, "loads, couples and springs need names of their own")
 
     def body(self, key: str, value: Any) -> int:
         n = self.r.number(key, value)

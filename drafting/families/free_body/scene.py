@@ -30,7 +30,7 @@ from constructions.forces.rigid_body import GUIDE, MEMBER, PIN, ROLLER, RigidBod
 from constructions.geometry import Vec
 
 from ...scene import limits
-from ...scene.effects import polar
+from ...scene.effects import claim_name, polar
 from ...scene.reader import Scene, SceneReader
 from ...scene.unitset import Units
 
@@ -85,11 +85,7 @@ class _FreeBodyReader:
         if v in CONSTRUCTION_FORCES:
             raise self.fail(key, f"{v} names a force of the construction (R the resultant, F_KL the Culmann "
                                  f"force); call it something else")
-        if v in self.names:
-            raise self.fail(key, f"{v} is already the name of {self.names[v]}; every load, couple and support "
-                                 f"needs a name of its own")
-        self.names[v] = key.rsplit(".", 1)[0]
-        return v
+        return claim_name(self.names, key, v, self.fail, "every load, couple and support needs a name of its own")
 
     def label(self, key: str, t: dict) -> str:
         return self.r.text(key, t["label"]) if "label" in t else ""
