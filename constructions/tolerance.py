@@ -221,3 +221,9 @@ EPSILON = 2.220446049250313e-16
 OTHER_ASSEMBLY = 1e-6
 """A Newton solution that moved a joint more than this fraction of the scene size from the construction's
 position settled on another assembly: far above Newton's convergence (1e-12 L), far below a branch's gap."""
+
+COSINE_SLACK = 1e-12
+"""A cosine computed from lengths (the law of cosines) that lies outside [-1, 1] by no more than this is
+rounding at an extreme (a change point, links in line) and is clamped to it; farther out the triangle does
+not close.  Rounding of the squared lengths leaves a few ulp, 1e-15, at every scale."""
+

@@ -175,3 +175,13 @@ def test_the_loop_is_on_the_sheet_and_in_json():
     assert any(n.startswith("Loop O2-E-F-O3, driven by link 3, by its lengths a Grashof crank-rocker")
                for n in s.notes)
     assert j["analyses"].count("classification") == 1
+
+
+@pytest.mark.parametrize("scale", [1e-3, 1.0, 1e3])
+def test_a_parallelogram_at_its_change_point_is_named_at_every_scale(scale):
+    """A parallelogram four-bar at crank angle 0 has its transmission angle at 0 exactly; the law of cosines
+    then gives cos(mu) a few ulp past 1 at some sizes (at 0.01/0.03/0.01 mm it was 'math domain error'):
+    clamped, the class is a change point and the position is named as one at every scale."""
+    k = classify_four_bar(four_bar(0.03 * scale, 0.01 * scale, 0.03 * scale, 0.01 * scale))
+    assert k.grashof == "change point"
+    assert k.transmission_min == pytest.approx(0.0, abs=1e-6)

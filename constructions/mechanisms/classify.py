@@ -30,6 +30,7 @@ from dataclasses import dataclass
 
 from ..errors import ConstructionError
 from ..geometry import Circle, Contact, Vec, intersect_circles
+from ..tolerance import COSINE_SLACK
 from .assembly import CrankTip, TwoCircles, assembly_plan
 from .model import Branch, Link, Mechanism, mobility
 
@@ -126,7 +127,7 @@ def classify_four_bar(m: Mechanism) -> FourBarClass | None:
     def mu_at(theta_rel: float) -> float | None:
         d2 = a * a + g * g - 2 * a * g * math.cos(theta_rel)
         cm = (b * b + c * c - d2) / (2 * b * c)
-        return math.acos(cm) if -1 - 1e-12 <= cm <= 1 + 1e-12 else None
+        return math.acos(max(-1.0, min(1.0, cm))) if abs(cm) <= 1 + COSINE_SLACK else None
 
     t_min = t_max = at_min = at_max = None
     if closes and "crank" in turns:
