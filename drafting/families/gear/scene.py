@@ -200,6 +200,7 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
             raise r.fail(f"{k}.internal", "must be true or false")
         gears.append(TrainGear(name, teeth, shaft, carrier, internal))
     meshes = []
+    meshed: dict[frozenset, str] = {}          # a pair of gears -> the [[mesh]] that joined them
     for i, t in enumerate(r.array("mesh"), 1):
         k = f"mesh[{i}]"
         r.table(k, {"gears", "angle"}, {"gears"}, value=t)
@@ -209,6 +210,11 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
         for x in g:
             if x not in names:
                 raise r.fail(f"{k}.gears", f"{x} is not a gear of the train (its gears: {', '.join(sorted(names))})")
+        pair = frozenset(g)
+        if pair in meshed:
+            raise r.fail(f"{k}.gears", f"gears {g[0]} and {g[1]} already mesh in {meshed[pair]}: a pair of gears "
+                                       f"meshes once")
+        meshed[pair] = k
         ang = r.quantity(f"{k}.angle", t["angle"], "angle", units) if "angle" in t else None
         meshes.append(TrainMesh(g[0], g[1], ang))
     if not meshes:
