@@ -152,3 +152,19 @@ def test_a_gear_pair_s_lengths_are_marked_at_the_diagram_they_are_read_off(tmp_p
     got = verdicts(out)
     assert (got["AP"], got["p_b"]) == ("wrong", "wrong")
     assert "expected 12.65 mm (± 1.000 mm)" in out and "expected 14.76 mm (± 0.5000 mm)" in out
+
+
+def test_a_hostile_answers_file_is_one_sentence(tmp_path, capsys):
+    """A TOML answers file nested 500 deep (RecursionError in the TOML reader before) and a CSV row of 5000
+    fields (read as its first three before) are each refused in one sentence naming the file and line."""
+    deep = tmp_path / "deep.toml"
+    deep.write_text("V_C = " + "[" * 500 + "]" * 500 + "\n")
+    assert main(["check", str(EXAMPLE_1), "--answers", str(deep)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{deep}: line 1 (V_C): values nest deeper than 10 levels" in err, err
+    code, f = check(tmp_path, "V_C,568 mm/s,180," + ",".join(["1"] * 4997) + "\n")
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and f"{f}: line 1: has 5000 fields" in err, err
+    code, f = check(tmp_path, "V_C,568.5 mm/s,180,,\n")            # empty trailing fields are no answer
+    out, err = capsys.readouterr()
+    assert code in (0, 1) and err == "" and verdicts(out)["V_C"] == "right", (code, out, err)

@@ -37,6 +37,7 @@ from typing import Iterable, Mapping, Sequence
 from constructions.geometry import Vec
 from constructions.quantities import key as quantity_key
 
+from ..scene import limits
 from ..scene.reader import read_input_text
 from ..scene.textsafe import cut, one_line, printable
 from ..scene.units import UnitError, to_si
@@ -210,6 +211,10 @@ def read_answers(path: Path | str) -> list[tuple[str, object]]:
     text = read_input_text(path, MAX_ANSWERS_BYTES, "answers file", AnswersError)
     if path.suffix.lower() == ".toml":
         try:
+            limits.check_text(text, "an answers file")   # nesting and number sizes, before the TOML reader, as for scenes
+        except limits.LimitError as e:
+            raise AnswersError(path, e.key, e.problem) from None
+        try:
             t = tomllib.loads(text)
         except tomllib.TOMLDecodeError as e:
             raise AnswersError(path, "", f"is not valid TOML ({e})") from None
@@ -223,6 +228,9 @@ def read_answers(path: Path | str) -> list[tuple[str, object]]:
             continue
         if len(cells) < 2 or not cells[1]:
             raise AnswersError(path, f"line {i}", "needs a name and a value, e.g. V_C,568 mm/s")
+        if len(cells) > 3 and any(cells[3:]):
+            raise AnswersError(path, f"line {i}", f"has {len(cells)} fields; a row is a name, a value and an "
+                                                  f"optional direction or sense, e.g. V_C,568 mm/s,180")
         value = cells[1]
         if len(cells) >= 3 and cells[2]:          # a direction (or a sense) in a third column
             extra = cells[2]

@@ -98,7 +98,7 @@ _TOKEN = re.compile(r'''
 ''', re.S | re.X)
 
 
-def check_text(text: str) -> None:
+def check_text(text: str, what: str = "a scene") -> None:
     """Scan TOML text for nesting deeper than :data:`MAX_DEPTH` and over-long numbers, without
     recursion and without running the TOML reader; raises :class:`LimitError` naming the line (and
     the key being written there)."""
@@ -148,7 +148,7 @@ def check_text(text: str) -> None:
                 key_text.append(".")
                 if depth + key_parts > MAX_DEPTH:
                     last_key = "".join(key_text).strip(". ")
-                    raise fail(f"the key nests deeper than {MAX_DEPTH} levels; a scene nests at most "
+                    raise fail(f"the key nests deeper than {MAX_DEPTH} levels; {what} nests at most "
                                f"{MAX_DEPTH} deep")
             continue
         if tok == "=":
@@ -162,7 +162,7 @@ def check_text(text: str) -> None:
             stack.append(tok)
             depth += 1
             if depth + key_parts - 1 > MAX_DEPTH:
-                raise fail(f"values nest deeper than {MAX_DEPTH} levels; a scene nests at most {MAX_DEPTH} deep")
+                raise fail(f"values nest deeper than {MAX_DEPTH} levels; {what} nests at most {MAX_DEPTH} deep")
             if tok == "{":
                 expect_key, key_parts, key_text = True, 1, []
             elif not header:
