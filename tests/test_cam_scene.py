@@ -153,8 +153,10 @@ def test_export_undercut_cam_is_trimmed_and_the_cli_pieces(tmp_path, capsys):
     ap = add_export_arguments(argparse.ArgumentParser(prog="drafting export"))
     assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "-o", str(tmp_path)])) == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["notes-roller-cam-profile.csv", "notes-roller-cam-profile.dxf"]
-    assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "--tolerance", "0.5"])) == 2
-    assert "--tolerance" in capsys.readouterr().err
+    for bad in ("0.5", "1e-10", "1e-300", "nan"):     # 1e-300 was a traceback, 1e-10 ran for ever
+        assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "--tolerance", bad])) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "--tolerance must lie between 1e-07 and 0.1" in err, err
     out = tmp_path / "m"
     r = subprocess.run([sys.executable, "-m", "drafting.app.cam_export", str(GALLERY / "notes-flat-faced-cam.toml"),
                         "-o", str(out)], capture_output=True, text=True, cwd=Path(__file__).resolve().parent.parent)

@@ -17,7 +17,7 @@ from pathlib import Path
 from ..backends.cam_files import csv_text, dxf_bytes
 from ..backends.files import ExportError, prepare_folder, write_outputs
 from ..scene.reader import SceneError, load_scene
-from ..families.cam.machining import EXPORT_TOLERANCE
+from ..families.cam.machining import EXPORT_TOLERANCE, EXPORT_TOLERANCE_RANGE
 from ..study.study import Study
 
 
@@ -46,8 +46,10 @@ def add_export_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentPa
 def run_export(args: argparse.Namespace) -> int:
     """Write the CSV and DXF for parsed ``args`` (:func:`add_export_arguments`): 0 when written, 2 on a
     scene or export error or a tolerance out of range (the message on stderr)."""
-    if not 0 < args.tolerance < 0.1:
-        print("drafting: error: --tolerance must lie between 0 and 0.1 (a fraction of the cam's size)", file=sys.stderr)
+    if not EXPORT_TOLERANCE_RANGE[0] <= args.tolerance < EXPORT_TOLERANCE_RANGE[1]:
+        print(f"drafting: error: --tolerance must lie between {EXPORT_TOLERANCE_RANGE[0]:g} and "
+              f"{EXPORT_TOLERANCE_RANGE[1]:g} (a fraction of the cam's size; a finer one takes minutes to "
+              f"sample)", file=sys.stderr)
         return 2
     try:
         for p in export(args.scene, args.out, args.tolerance):
