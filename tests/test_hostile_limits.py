@@ -288,3 +288,79 @@ def test_odd_titles_and_file_names_render_and_the_svg_parses(tmp_path, capsys):
     root = ET.parse(svg).getroot()
     text = "".join(root.itertext())
     assert "T\ufffdi\ufffdt\ufffdl\ufffde <b>&amp;</b> \u202eevil" in text and "N\ufffd\ufffdo" in text
+
+
+CHANGE_POINT = EXAMPLE.split("[frame]")[0] + """[frame]
+O1 = [0, 0]
+O2 = [0.03, 0]
+
+[[link]]
+number = 1
+joints = ["O1", "B"]
+length = 0.01
+
+[[link]]
+number = 2
+joints = ["B", "C"]
+length = 0.03
+
+[[link]]
+number = 3
+joints = ["O2", "C"]
+length = 0.01
+
+[input]
+link = 1
+angle = "0 deg"
+tip_speed = "300 mm/s"
+sense = "ccw"
+
+[assembly]
+C = "left of B->O2"
+
+[ask]
+analyses = ["velocity"]
+"""
+
+
+def test_solve_render_and_check_give_one_exit_code(tmp_path, capsys):
+    """A scene at a singular position (a 0.01/0.03/0.01 mm parallelogram at its change point) exits 3 from
+    solve, render and check alike (render said 2), with the same one sentence; a friction coefficient far
+    out of range (1e300: numpy's overflow warning and then 'singular') is refused by the reader, exit 2."""
+    p = tmp_path / "change-point.toml"
+    p.write_text(CHANGE_POINT)
+    errs = []
+    for cmd in (["solve", str(p)], ["render", str(p), "-o", str(tmp_path / "out")], ["check", str(p)]):
+        assert main(cmd) == 3, cmd
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "change point" in err and "Traceback" not in err, err
+        errs.append(err)
+    assert len(set(errs)) == 1
+    mu = builtin_example().read_text().replace('analyses = ["velocity"]', 'analyses = ["forces"]') + (
+        '\n[[load]]\nname = "P"\nlink = 3\nat = "C"\nforce = "40 N"\nangle = "180 deg"\n'
+        '\n[[friction]]\nslider = 3\nmu = 1e300\n')
+    q = tmp_path / "mu.toml"
+    q.write_text(mu)
+    for cmd in (["solve", str(q)], ["render", str(q), "-o", str(tmp_path / "out")], ["check", str(q)]):
+        assert main(cmd) == 2, cmd
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "friction[1].mu: 1e+300 must be a number from 0 to 10" in err, err
+
+
+def test_a_numeric_warning_while_solving_is_the_engine_s_sentence(monkeypatch, capsys):
+    """Whatever numpy would warn about while a study runs (an overflow, an invalid value) reaches the user as
+    one sentence naming the scene file, exit 2 -- never numpy's two lines with its site-packages path."""
+    import numpy as np
+
+    from drafting.study.study import Study
+    real_run = Study.run
+
+    def overflowing(self):
+        np.multiply(np.float64(1e300), np.float64(1e300))
+        return real_run(self)
+    monkeypatch.setattr(Study, "run", overflowing)
+    with np.errstate(over="warn"):
+        assert main(["solve", str(builtin_example())]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "overflow" in err and "site-packages" not in err, err
+    assert str(builtin_example()) in err

@@ -35,9 +35,10 @@ from ..scene.textsafe import safe_streams
 
 
 def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
-               lab: bool = False) -> tuple[str | None, str]:
-    """Render one scene: ``(error, text)`` -- the one-line error (None when it rendered) and what to print
-    (its results and the files written).  ``lab``: the problem sheet and the answer key beside the worked
+               lab: bool = False) -> tuple[str | None, str, int]:
+    """Render one scene: ``(error, text, code)`` -- the one-line error (None when it rendered), what to
+    print (its results and the files written) and the exit code it stands for (0, or the UserError's: the
+    same as ``solve`` and ``check`` give for the scene).  ``lab``: the problem sheet and the answer key beside the worked
     solution (drafting.app.lab), all written together."""
     from ..backends.files import ExportError, write_sheets
     from ..render.errors import LayoutError
@@ -65,11 +66,11 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
         except ConstructionError as e:            # raised while drawing: told at its position
             raise UserError(f"{path}: {located(study, e)}") from None
     except UserError as e:
-        return str(e), ""
-    return None, "\n".join([results_text(study)] + [f"  wrote {w}" for w in written])
+        return str(e), "", e.code
+    return None, "\n".join([results_text(study)] + [f"  wrote {w}" for w in written]), 0
 
 
-def _render_job(job: tuple) -> tuple[str | None, str]:
+def _render_job(job: tuple) -> tuple[str | None, str, int]:
     """One scene of a parallel render (runs in a worker; module level, so a process pool can send it)."""
     path, out, formats, paper, lab = job
     return render_one(Path(path), Path(out), formats, paper, lab)
@@ -85,17 +86,17 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
     from .progress import Progress
     bar = Progress(len(scenes), "render")
     bar.shown = len(scenes) >= 2 and _is_tty(sys.stderr)
-    failed = [0]
-    ready: dict[int, tuple[str | None, str]] = {}
+    failed = [0]                           # the highest exit code of a scene that failed
+    ready: dict[int, tuple[str | None, str, int]] = {}
     shown = [0]
 
     def on_done(i: int, result) -> None:
         ready[i] = result
         while shown[0] in ready:
-            err, text = ready.pop(shown[0])
+            err, text, code = ready.pop(shown[0])
             if err is not None:
                 print(f"drafting: error: {err}", file=sys.stderr)
-                failed[0] += 1
+                failed[0] = max(failed[0], code)
             else:
                 print(text)
             shown[0] += 1
@@ -106,7 +107,7 @@ def cmd_render(scenes: Sequence[Path], out: Path, formats: Sequence[str], paper:
     except parallel.WorkerLost as e:
         raise UserError(f"render: {e}") from None
     bar.finish()
-    return 2 if failed[0] else 0
+    return failed[0]
 
 
 def _is_tty(stream) -> bool:

@@ -3,6 +3,7 @@ exit code, and the results table as plain text (what ``render``, ``solve`` and `
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import replace
 from pathlib import Path
 
@@ -37,9 +38,15 @@ def load_study(path: Path, paper: str | None = None) -> Study:
 
 def solve_study(study: Study) -> Study:
     """Run what the scene asks for; construction errors become one sentence naming the file (exit 3 at
-    a singular position, whose message names its kind, else 2)."""
+    a singular position, whose message names its kind, else 2), and so does a numeric warning (an overflow
+    or an invalid value numpy would print with its own path), exit 2."""
     try:
-        study.run()
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", RuntimeWarning)     # numpy's overflow or invalid value: no raw warning
+            study.run()
+    except RuntimeWarning as e:
+        raise UserError(f"{study.scene.path}: the numbers of this scene overflow while it is solved ({e}); a "
+                        f"value is far out of the range a mechanism has") from None
     except SceneError as e:                  # what the scene asks for, found wrong once solved (ask.find)
         raise UserError(str(e)) from None
     except IndeterminatePosition as e:
