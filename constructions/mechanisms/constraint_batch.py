@@ -27,12 +27,18 @@ def _wrap(a: np.ndarray) -> np.ndarray:
     return a - TWO_PI * np.rint(a / TWO_PI)
 
 
-def _arm(Q: np.ndarray, body: int, s) -> tuple:
+def _frames(Q: np.ndarray) -> list[tuple]:
+    """(x, y, cos phi, sin phi) of every body at every pose, computed once for all the equations."""
+    phi = Q[:, 2::3]
+    c, sn = np.cos(phi), np.sin(phi)
+    return [(Q[:, 3 * i], Q[:, 3 * i + 1], c[:, i], sn[:, i]) for i in range(phi.shape[1])]
+
+
+def _arm(F: list[tuple], body: int, s) -> tuple:
     """(x, y, w x, w y) of the point with body-frame coordinates s, at every pose (a frame point: scalars)."""
     if body == FRAME:
         return s[0], s[1], 0.0, 0.0
-    x, y, phi = Q[:, 3 * body], Q[:, 3 * body + 1], Q[:, 3 * body + 2]
-    c, sn = np.cos(phi), np.sin(phi)
+    x, y, c, sn = F[body]
     wx, wy = c * s[0] - sn * s[1], sn * s[0] + c * s[1]
     return x + wx, y + wy, wx, wy
 
@@ -45,17 +51,18 @@ def _line(Q: np.ndarray, c) -> tuple:
     return Q[:, 3 * c.slot], Q[:, 3 * c.slot + 1], np.cos(phi), np.sin(phi)
 
 
-def residual(model: Model, Q: np.ndarray, th: np.ndarray) -> np.ndarray:
-    """Phi at every pose, (N, k), in the rows' order of :meth:`Model.rows`."""
+def residual(model: Model, Q: np.ndarray, th: np.ndarray, F: list[tuple] | None = None) -> np.ndarray:
+    """Phi at every pose, (N, k), in the rows' order of :meth:`Model.rows` (F: the poses' frames, if known)."""
+    F = _frames(Q) if F is None else F
     out = np.empty((Q.shape[0], model.equations))
     row = 0
     for c in model.revolutes:
-        ax, ay, _, _ = _arm(Q, *c.a)
-        bx, by, _, _ = _arm(Q, *c.b)
+        ax, ay, _, _ = _arm(F, *c.a)
+        bx, by, _, _ = _arm(F, *c.b)
         out[:, row], out[:, row + 1] = ax - bx, ay - by
         row += 2
     for c in model.lines:
-        px, py, _, _ = _arm(Q, c.body, c.s)
+        px, py, _, _ = _arm(F, c.body, c.s)
         ox, oy, dx, dy = _line(Q, c)
         out[:, row] = -dy * (px - ox) + dx * (py - oy) + c.offset
         row += 1
@@ -67,41 +74,48 @@ def residual(model: Model, Q: np.ndarray, th: np.ndarray) -> np.ndarray:
     return out
 
 
-def jacobian(model: Model, Q: np.ndarray) -> np.ndarray:
-    """Phi_q at every pose, (N, k, k)."""
+def scaled_jacobian(model: Model, Q: np.ndarray, rows: np.ndarray, cols: np.ndarray,
+                    F: list[tuple] | None = None) -> np.ndarray:
+    """R Phi_q C at every pose, (N, k, k): the Jacobian scaled by :func:`.constraint_equations.scales`,
+    each entry scaled as it is written."""
+    F = _frames(Q) if F is None else F
     J = np.zeros((Q.shape[0], model.equations, model.unknowns))
+
+    def add(r: int, c: int, v) -> None:
+        J[:, r, c] += v * (rows[r] * cols[c])
+
     row = 0
     for c in model.revolutes:
         for sign, (body, s) in ((1.0, c.a), (-1.0, c.b)):
             if body == FRAME:
                 continue
-            _, _, wx, wy = _arm(Q, body, s)
+            _, _, wx, wy = _arm(F, body, s)
             col = 3 * body
-            J[:, row, col] += sign
-            J[:, row + 1, col + 1] += sign
-            J[:, row, col + 2] -= sign * wy
-            J[:, row + 1, col + 2] += sign * wx
+            add(row, col, sign)
+            add(row + 1, col + 1, sign)
+            add(row, col + 2, -sign * wy)
+            add(row + 1, col + 2, sign * wx)
         row += 2
     for c in model.lines:
-        px, py, wx, wy = _arm(Q, c.body, c.s)
+        px, py, wx, wy = _arm(F, c.body, c.s)
         ox, oy, dx, dy = _line(Q, c)
         nx, ny = -dy, dx
         col = 3 * c.body
-        J[:, row, col] += nx
-        J[:, row, col + 1] += ny
-        J[:, row, col + 2] += wx * ny - wy * nx
+        add(row, col, nx)
+        add(row, col + 1, ny)
+        add(row, col + 2, wx * ny - wy * nx)
         if c.slot is not None:
             col = 3 * c.slot
-            J[:, row, col] -= nx
-            J[:, row, col + 1] -= ny
-            J[:, row, col + 2] -= dx * (px - ox) + dy * (py - oy)
+            add(row, col, -nx)
+            add(row, col + 1, -ny)
+            add(row, col + 2, -(dx * (px - ox) + dy * (py - oy)))
         row += 1
     for c in model.angles:
-        J[:, row, 3 * c.body + 2] += 1.0
+        add(row, 3 * c.body + 2, 1.0)
         if c.other is not None:
-            J[:, row, 3 * c.other + 2] -= 1.0
+            add(row, 3 * c.other + 2, -1.0)
         row += 1
-    J[:, row, 3 * model.crank + 2] = 1.0
+    add(row, 3 * model.crank + 2, 1.0)
     return J
 
 
@@ -114,19 +128,20 @@ def _rates(Qd: np.ndarray, body: int) -> tuple:
 def gamma(model: Model, Q: np.ndarray, Qd: np.ndarray) -> np.ndarray:
     """The right-hand side of Phi_q q'' = gamma at every pose, without the crank's angular acceleration
     (the driver's row is 0: add alpha there)."""
+    F = _frames(Q)
     out = np.zeros((Q.shape[0], model.equations))
     row = 0
     for c in model.revolutes:
         for sign, (body, s) in ((1.0, c.a), (-1.0, c.b)):
             if body == FRAME:
                 continue
-            _, _, wx, wy = _arm(Q, body, s)
+            _, _, wx, wy = _arm(F, body, s)
             w2 = Qd[:, 3 * body + 2] ** 2
             out[:, row] += sign * w2 * wx
             out[:, row + 1] += sign * w2 * wy
         row += 2
     for c in model.lines:
-        px, py, wx, wy = _arm(Q, c.body, c.s)
+        px, py, wx, wy = _arm(F, c.body, c.s)
         ox, oy, dx, dy = _line(Q, c)
         nx, ny = -dy, dx
         vx, vy, wi = _rates(Qd, c.body)
@@ -170,7 +185,8 @@ def close(model: Model, Q0: np.ndarray, th: np.ndarray, tolerance: float, steps:
     one-pose solver does.  None when a Jacobian of the stack is exactly singular."""
     rows, cols = scales(model)
     Q = np.array(Q0, dtype=np.float64)
-    res = _size(rows, residual(model, Q, th))
+    r = residual(model, Q, th)
+    res = _size(rows, r)
     with np.errstate(all="ignore"):
         try:
             for _ in range(steps):
@@ -178,24 +194,23 @@ def close(model: Model, Q0: np.ndarray, th: np.ndarray, tolerance: float, steps:
                 if act.size == 0:
                     break
                 Qa = Q[act]
-                A = rows[:, None] * jacobian(model, Qa) * cols
-                b = rows * residual(model, Qa, th[act])
-                Q[act] = Qa - cols * np.linalg.solve(A, b[:, :, None])[:, :, 0]
-                res[act] = _size(rows, residual(model, Q[act], th[act]))
-            A = rows[:, None] * jacobian(model, Q) * cols
+                A = scaled_jacobian(model, Qa, rows, cols)
+                Qa -= cols * np.linalg.solve(A, (rows * r[act])[:, :, None])[:, :, 0]
+                Q[act] = Qa
+                r[act] = residual(model, Qa, th[act])
+                res[act] = _size(rows, r[act])
+            F = _frames(Q)
+            A = scaled_jacobian(model, Q, rows, cols, F)
             Ainv = np.linalg.inv(A)
         except np.linalg.LinAlgError:
             return None
         closed = res <= tolerance
-        b = rows * residual(model, Q, th)
-        Qp = Q - cols * np.einsum("nij,nj->ni", Ainv, b)
-        resp = _size(rows, residual(model, Qp, th))
-        keep = closed & (resp <= res)
+        Qp = Q - cols * np.einsum("nij,nj->ni", Ainv, rows * r)
+        keep = closed & (_size(rows, residual(model, Qp, th)) <= res)
         Q[keep] = Qp[keep]
         kappa1 = np.max(np.sum(np.abs(A), axis=1), axis=1) * np.max(np.sum(np.abs(Ainv), axis=1), axis=1)
         q_theta = cols * (Ainv[:, :, -1] * rows[-1])             # Phi_q q' = (0, .., 0, 1): the driver
-        g = rows * gamma(model, Q, q_theta)
-        q_theta2 = cols * np.einsum("nij,nj->ni", Ainv, g)
+        q_theta2 = cols * np.einsum("nij,nj->ni", Ainv, rows * gamma(model, Q, q_theta))
         moved = np.max(np.abs((Q - Q0) / cols), axis=1)
     ok = closed & np.isfinite(kappa1) & np.all(np.isfinite(q_theta2), axis=1) & np.all(np.isfinite(Q), axis=1)
     return Closed(Q, q_theta, q_theta2, kappa1, moved, ok)
@@ -215,14 +230,14 @@ def points(model: Model, Q: np.ndarray, Qd: np.ndarray, Qdd: np.ndarray) -> tupl
         ax, ay, a = _rates(Qdd, body)
         return (vx - w * wy, vy + w * wx), (ax - a * wy - w * w * wx, ay + a * wx - w * w * wy)
 
-    n = Q.shape[0]
+    n, F = Q.shape[0], _frames(Q)
     for name, cs in model.carriers.items():
         body, s = cs[0]
         if body == FRAME:
             pos[name] = (np.full(n, s[0]), np.full(n, s[1]))
             vel[name] = acc[name] = (np.zeros(n), np.zeros(n))
             continue
-        x, y, wx, wy = _arm(Q, body, s)
+        x, y, wx, wy = _arm(F, body, s)
         pos[name] = (x, y)
         vel[name], acc[name] = motion_of(body, wx, wy)
     for name, (joint, g) in model.coincident.items():

@@ -19,7 +19,8 @@ from the previous pose; the first pose, and the first after a gap, from the cons
   step; elsewhere it is the same solution to rounding.
 
 Blocks grow while whole blocks are taken (to :data:`LONGEST`) and shrink where they are cut.
-``progress(done, total)`` hears how far the continuation has come at least every :data:`REPORT` angles.
+``progress(done, total)`` hears how far the continuation has come before every block and every
+:data:`REPORT` angles solved one by one: at least every LONGEST angles.
 """
 
 from __future__ import annotations
@@ -52,7 +53,7 @@ SHORTEST, FIRST, LONGEST = 4, 16, 1024
 """Block lengths (angles): the least a cut block shrinks to, the first, the most it grows to."""
 
 REPORT = 256
-"""The continuation reports its progress at least every this many angles."""
+"""Angles solved one by one (at a gap, near a singular position) between two reports of the progress."""
 
 
 @dataclass(frozen=True)
@@ -156,7 +157,7 @@ def continue_constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: floa
     guess = None
     length, i, reported = FIRST, 0, -REPORT
     while i < n:
-        if progress is not None and i - reported >= REPORT:
+        if progress is not None and (anchor is not None or i - reported >= REPORT) and i > reported:
             progress(i, n)
             reported = i
         if anchor is not None:
