@@ -43,6 +43,16 @@ def _arm(F: list[tuple], body: int, s) -> tuple:
     return x + wx, y + wy, wx, wy
 
 
+def _revolute_arms(model: Model, F: list[tuple]):
+    """(first row, sign, body, w x, w y) of each moving body's point in each revolute joint's two rows:
+    the point of ``a`` with sign +1, that of ``b`` with -1."""
+    for i, c in enumerate(model.revolutes):
+        for sign, (body, s) in ((1.0, c.a), (-1.0, c.b)):
+            if body != FRAME:
+                _, _, wx, wy = _arm(F, body, s)
+                yield 2 * i, sign, body, wx, wy
+
+
 def _line(Q: np.ndarray, c) -> tuple:
     """(origin x, y, direction d x, d y) of the line of ``c`` at every pose."""
     if c.slot is None:
@@ -84,18 +94,13 @@ def scaled_jacobian(model: Model, Q: np.ndarray, rows: np.ndarray, cols: np.ndar
     def add(r: int, c: int, v) -> None:
         J[:, r, c] += v * (rows[r] * cols[c])
 
-    row = 0
-    for c in model.revolutes:
-        for sign, (body, s) in ((1.0, c.a), (-1.0, c.b)):
-            if body == FRAME:
-                continue
-            _, _, wx, wy = _arm(F, body, s)
-            col = 3 * body
-            add(row, col, sign)
-            add(row + 1, col + 1, sign)
-            add(row, col + 2, -sign * wy)
-            add(row + 1, col + 2, sign * wx)
-        row += 2
+    for row, sign, body, wx, wy in _revolute_arms(model, F):
+        col = 3 * body
+        add(row, col, sign)
+        add(row + 1, col + 1, sign)
+        add(row, col + 2, -sign * wy)
+        add(row + 1, col + 2, sign * wx)
+    row = 2 * len(model.revolutes)
     for c in model.lines:
         px, py, wx, wy = _arm(F, c.body, c.s)
         ox, oy, dx, dy = _line(Q, c)
@@ -130,16 +135,11 @@ def gamma(model: Model, Q: np.ndarray, Qd: np.ndarray) -> np.ndarray:
     (the driver's row is 0: add alpha there)."""
     F = _frames(Q)
     out = np.zeros((Q.shape[0], model.equations))
-    row = 0
-    for c in model.revolutes:
-        for sign, (body, s) in ((1.0, c.a), (-1.0, c.b)):
-            if body == FRAME:
-                continue
-            _, _, wx, wy = _arm(F, body, s)
-            w2 = Qd[:, 3 * body + 2] ** 2
-            out[:, row] += sign * w2 * wx
-            out[:, row + 1] += sign * w2 * wy
-        row += 2
+    for row, sign, body, wx, wy in _revolute_arms(model, F):
+        w2 = Qd[:, 3 * body + 2] ** 2
+        out[:, row] += sign * w2 * wx
+        out[:, row + 1] += sign * w2 * wy
+    row = 2 * len(model.revolutes)
     for c in model.lines:
         px, py, wx, wy = _arm(F, c.body, c.s)
         ox, oy, dx, dy = _line(Q, c)
