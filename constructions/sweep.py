@@ -210,8 +210,9 @@ def crank_points(m: Mechanism, theta: float) -> dict[str, Vec] | None:
 def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0, *, progress=None) -> Sweep:
     """Solve ``m`` at every crank angle of ``thetas`` (rad) with the crank turning at ``omega`` (rad/s)
     and angular acceleration ``alpha`` (rad/s^2).  ``progress(done, total)``, if given, hears how far the
-    constraint continuation has come, every block of angles (the vectorised solvers finish in one stroke).  Raises DegenerateInput for
-    a mechanism none of the solvers models (e.g. not one degree of freedom)."""
+    constraint continuation has come, every block of angles (the vectorised solvers finish in one
+    stroke).  Raises DegenerateInput for a mechanism none of the solvers models (e.g. not one degree of
+    freedom)."""
     th = np.array(thetas, dtype=np.float64).reshape(-1)
     omega, alpha = float(omega), float(alpha)
     parts = closed_form_parts(m)
