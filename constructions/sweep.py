@@ -9,10 +9,10 @@ The solver is chosen as :func:`constructions.check.analytic_solution` chooses it
 - any other crank followed by RRR/RRP dyads: :func:`constructions.analytic.chain_solution`, in chunks
   (:func:`constructions.sweep_kernels.chain_sweep`);
 - anything else (a slot in a moving link, a ternary link joined at its third point): the constraint
-  equations (:func:`constructions.constraint_kinematics.solve_constraints`) angle by angle, each pose
-  started from the previous one (continuation keeps the assembly branch).  The first pose, and the first
-  after a gap, starts from the construction (:func:`constructions.linkage.locate`), which is on the branch
-  the scene chose.
+  equations, each pose continued from the previous one (continuation keeps the assembly branch), a block
+  of angles at a time (:func:`constructions.mechanisms.constraint_continuation.continue_constraints`).
+  The first pose, and the first after a gap, starts from the construction
+  (:func:`constructions.mechanisms.pose.locate`), which is on the branch the scene chose.
 
 Where the mechanism cannot be assembled every moving quantity is NaN and ``assembles`` is False: a gap,
 never a clamped or borrowed value.
@@ -28,11 +28,10 @@ import numpy as np
 
 from . import sweep_kernels
 from .closed_forms import closed_form_parts, closed_form_state
-from .errors import CannotAssemble, ConstructionError, DegenerateInput, IndeterminatePosition
+from .errors import DegenerateInput
 from .geometry import Vec
-from .mechanisms.constraint_kinematics import solve_constraints
+from .mechanisms.constraint_continuation import continue_constraints
 from .mechanisms.model import Mechanism, place_rigid
-from .mechanisms.pose import locate
 from .motion_arrays import MotionArrays
 from .sweep_kernels import chain_sweep
 
@@ -181,59 +180,19 @@ def _finish(th, pos, vel, acc, ang, alp, ok, model, moving, fixed_links) -> Swee
 
 
 def _constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float, progress=None) -> Sweep:
+    t = continue_constraints(m, th, omega, alpha, progress)
     n = th.size
-    states: list = [None] * n
-    guess = None
-    for i, t in enumerate(th):
-        if progress is not None and i % 256 == 0:
-            progress(i, n)
-        t = float(t)
-        if guess is None:                      # first angle, or after a gap: the scene's branch
-            try:
-                guess = locate(m, t).positions
-            except ConstructionError:
-                continue
-        try:
-            st = solve_constraints(m, t, omega, alpha, guess)
-        except (CannotAssemble, IndeterminatePosition):
-            guess = None
-            continue
-        states[i] = st
-        guess = st.positions
-    ok = np.array([s is not None for s in states], dtype=bool)
-    first = next((s for s in states if s is not None), None)
-    names = list(first.positions) if first else list(m.ground)
-    numbers = sorted(first.angular) if first else [m.crank]
-
-    def vectors(attr):
-        out = {}
-        for name in names:
-            x, y = np.full(n, np.nan), np.full(n, np.nan)
-            for i, s in enumerate(states):
-                if s is not None:
-                    v = getattr(s, attr)[name]
-                    x[i], y[i] = v.x, v.y
-            out[name] = (x, y)
-        return out
-
-    def scalars(attr):
-        out = {}
-        for k in numbers:
-            w = np.full(n, np.nan)
-            for i, s in enumerate(states):
-                if s is not None:
-                    w[i] = getattr(s, attr)[k]
-            out[k] = w
-        return out
-
-    pos = vectors("positions")
+    names = list(t.positions) or list(m.ground)
+    pos = {name: t.positions.get(name) or (np.full(n, np.nan), np.full(n, np.nan)) for name in names}
+    vel = {name: t.velocities.get(name) or (np.full(n, np.nan), np.full(n, np.nan)) for name in names}
+    acc = {name: t.accelerations.get(name) or (np.full(n, np.nan), np.full(n, np.nan)) for name in names}
+    ang = t.angular or {m.crank: np.full(n, np.nan)}
+    alp = t.angular_acceleration or {m.crank: np.full(n, np.nan)}
     for g, p in m.ground.items():                 # fixed pivots are there at every angle, gaps too
         pos[g] = (np.full(n, p.x), np.full(n, p.y))
-    vel, acc = vectors("velocities"), vectors("accelerations")
-    for g in m.ground:
         vel[g] = acc[g] = (np.zeros(n), np.zeros(n))
-    return _finish(th, pos, vel, acc, scalars("angular"), scalars("angular_acceleration"), ok,
-                   "constraint equations", set(names) - set(m.ground), set())   # every body is NaN at a gap
+    return _finish(th, pos, vel, acc, ang, alp, t.assembles, "constraint equations", set(names) - set(m.ground),
+                   set())                                            # every body is NaN at a gap
 
 
 def crank_points(m: Mechanism, theta: float) -> dict[str, Vec] | None:
@@ -251,8 +210,9 @@ def crank_points(m: Mechanism, theta: float) -> dict[str, Vec] | None:
 def sweep(m: Mechanism, thetas, omega: float, alpha: float = 0.0, *, progress=None) -> Sweep:
     """Solve ``m`` at every crank angle of ``thetas`` (rad) with the crank turning at ``omega`` (rad/s)
     and angular acceleration ``alpha`` (rad/s^2).  ``progress(done, total)``, if given, hears how far the
-    angle-by-angle solver has come (the vectorised ones finish in one stroke).  Raises DegenerateInput for
-    a mechanism none of the solvers models (e.g. not one degree of freedom)."""
+    constraint continuation has come, every block of angles (the vectorised solvers finish in one
+    stroke).  Raises DegenerateInput for a mechanism none of the solvers models (e.g. not one degree of
+    freedom)."""
     th = np.array(thetas, dtype=np.float64).reshape(-1)
     omega, alpha = float(omega), float(alpha)
     parts = closed_form_parts(m)
