@@ -444,3 +444,30 @@ def test_svg_text_is_made_xml_safe():
     text = "".join(root.itertext())
     assert text.count("A\ufffdB\ufffdC\ufffd[31m\ufffd\ufffd\ufffd <script>&amp;\"'") == 2
     assert "<script" not in svg and "<!ENTITY" not in svg and "href" not in svg
+
+
+def test_the_page_and_the_sheets_of_one_render_are_written_together(tmp_path, monkeypatch, capsys):
+    """render --format html,svg: a full disk while the page is written (its fsync, the last) leaves neither
+    the page nor the SVGs; before, the SVGs stood under their final names and only the page was missing."""
+    import errno
+
+    from drafting.app.cli import main
+    from paths import GALLERY
+    scene = GALLERY / "notes-velocity-example-3.toml"                 # two sheets: two SVGs and the page
+    calls = []
+
+    def full(fd):
+        calls.append(fd)
+        if len(calls) == 3:
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(export_mod.os, "fsync", full)
+    out = tmp_path / "out"
+    assert main(["render", str(scene), "--format", "html,svg", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"Cannot write {out / 'notes-velocity-example-3.html'}" in err, err
+    assert os.listdir(out) == []
+    monkeypatch.undo()
+    assert main(["render", str(scene), "--format", "html,svg", "-o", str(out)]) == 0
+    assert sorted(os.listdir(out)) == ["notes-velocity-example-3-1.svg", "notes-velocity-example-3-2.svg",
+                                       "notes-velocity-example-3.html"]

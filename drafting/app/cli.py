@@ -40,7 +40,7 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
     print (its results and the files written) and the exit code it stands for (0, or the UserError's: the
     same as ``solve`` and ``check`` give for the scene).  ``lab``: the problem sheet and the answer key beside the worked
     solution (drafting.app.lab), all written together."""
-    from ..backends.files import ExportError, write_sheets
+    from ..backends.files import ExportError
     from ..render.errors import LayoutError
     try:
         study = load_study(path, paper)
@@ -54,11 +54,11 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
                 from ..layout.sheet import source_date_epoch
                 from .lab import lab_for, write_lab
                 written = write_lab(lab_for(study, epoch=source_date_epoch()), out, path.stem, sheet_formats)
+                if PAGE in formats:
+                    from ..backends.html_page import write_page
+                    written.append(write_page(study, sheets_for(study), out, path.stem))
             else:
-                written = write_sheets(sheets_for(study), out, path.stem, sheet_formats) if sheet_formats else []
-            if PAGE in formats:
-                from ..backends.html_page import write_page
-                written.append(write_page(study, sheets_for(study), out, path.stem))
+                written = _write_together(study, out, path.stem, sheet_formats, PAGE in formats)
         except ExportError as e:                  # names the output file it could not write
             raise UserError(f"{path}: {e}") from None
         except LayoutError as e:                  # the sheet: the paper is what the user can change
@@ -68,6 +68,20 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
     except UserError as e:
         return str(e), "", e.code
     return None, "\n".join([results_text(study)] + [f"  wrote {w}" for w in written]), 0
+
+
+def _write_together(study: Study, out: Path, stem: str, sheet_formats: Sequence[str], page: bool) -> list[Path]:
+    """The sheets of one render and, with ``page``, its step-through page: one plan, all written together
+    or not at all (a full disk or a signal while the page is written leaves no sheet either)."""
+    from ..backends.files import prepare_folder, remove_stale_temporaries, sheet_plan, write_outputs
+    sheets = sheets_for(study)
+    plan = sheet_plan(sheets, out, stem, sheet_formats) if sheet_formats else []
+    if page:
+        from ..backends.html_page import page_plan
+        plan += page_plan(study, sheets, out, stem)
+    prepare_folder(out)
+    remove_stale_temporaries(out)
+    return write_outputs(out, stem, plan)
 
 
 def _render_job(job: tuple) -> tuple[str | None, str, int]:

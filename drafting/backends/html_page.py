@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import html
 from pathlib import Path
-from typing import Sequence
+from typing import Callable, Sequence
 
 from .files import ExportError, prepare_folder, write_outputs
 from .html_markup import asset, markup_html, script_json
@@ -65,14 +65,20 @@ def page_html(study, sheets: Sequence[Sheet]) -> str:
             f"<script>{asset('page.js')}</script></body></html>\n")
 
 
+def page_plan(study, sheets: Sequence[Sheet], out_dir: Path | str, stem: str) -> list[tuple[Path, Callable[[], bytes]]]:
+    """The ``(final path, produce)`` pair of the page, ``out_dir/stem.html``: to go to one
+    :func:`~drafting.backends.files.write_outputs` call with the sheets' own plan, so that the page and
+    the sheets of one render are written together or not at all."""
+    return [(Path(out_dir) / f"{stem}.html", lambda: page_html(study, sheets).encode("utf-8"))]
+
+
 def write_page(study, sheets: Sequence[Sheet], out_dir: Path | str, stem: str) -> Path:
     """Write the page of ``study`` and its ``sheets`` to ``out_dir/stem.html`` atomically; raises
     ExportError naming the path."""
     out_dir = Path(out_dir)
     prepare_folder(out_dir)
-    final = out_dir / f"{stem}.html"
-    (written,) = write_outputs(out_dir, stem, [(final, lambda: page_html(study, sheets).encode("utf-8"))])
+    (written,) = write_outputs(out_dir, stem, page_plan(study, sheets, out_dir, stem))
     return written
 
 
-__all__ = ["page_html", "write_page", "entity_of", "ExportError"]
+__all__ = ["page_html", "page_plan", "write_page", "entity_of", "ExportError"]
