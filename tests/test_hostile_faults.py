@@ -376,3 +376,18 @@ def test_a_thread_s_deferred_block_does_not_hold_the_main_thread_s_signal():
             leave.set()
             t.join(10)
     assert ended == ["cleanly"]
+
+
+@linux_proc
+def test_sigterm_while_the_page_is_written_leaves_no_sheet(tmp_path):
+    """render --format svg,html: SIGTERM once the page's temporary file exists (the sheets' are written
+    before it, none renamed yet) ends the run with exit 143 and leaves no final file -- before, the SVGs
+    stood under their final names when the page was cut off."""
+    out = tmp_path / "out"
+    scene = VELOCITY[0]
+    p = _start(out, [scene], "--format", "svg,html")
+    page_begun = lambda: any(n.endswith(".html") for n in temporaries(out)) and not _written(out, scene, "svg")  # noqa: E731
+    _, stderr, _ = signal_at(p, page_begun, "the page's temporary file exists", signal.SIGTERM)
+    assert p.returncode == 143, stderr
+    assert stderr.splitlines() == ["drafting: interrupted by SIGTERM; no file was left half-written"]
+    assert temporaries(out) == [] and os.listdir(out) == []
