@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 from shapely.geometry import LinearRing, Polygon
 
 from constructions.cams.check import closed_form_point, min_base_radius_flat
@@ -341,6 +341,7 @@ def test_uniform_corners_are_named_and_the_drawn_profile_trimmed():
 @settings(max_examples=30, deadline=None)
 @given(law=st.sampled_from(LAWS), swing=st.floats(5, 20), a=st.floats(0.08, 0.14), ef=st.floats(-0.015, 0.015),
        sense=st.sampled_from([1, -1]))
+@example(law="4-5-6-7 polynomial", swing=13.109375, a=0.12419815552916008, ef=-0.0047047139980408905, sense=-1)
 def test_oscillating_flat_face_equals_kennedy(law, swing, a, ef, sense):
     """The oscillating flat face: its envelope (support-function form) against the contact found through the
     instant centre of cam and arm (Kennedy), at every construction station, to 1e-9 of the cam's size; the
@@ -365,7 +366,11 @@ def test_oscillating_flat_face_equals_kennedy(law, swing, a, ef, sense):
     assert np.allclose(np.sum(ev.profile * ev.normal, axis=0), ev.support, rtol=0, atol=1e-15)
     h = 1e-6
     tang = (evaluate(p, f, th + h).profile - evaluate(p, f, th - h).profile) / (2 * h)
-    assert np.max(np.abs(np.sum(tang * ev.normal, axis=0)) / np.hypot(*tang)) < 1e-6    # an envelope
+    # an envelope: the tangent square to the normal, to 1e-6 of its length -- plus the central difference's
+    # own rounding, eps |P| / h, which is all that is left where the profile barely moves (|P'| 8e-6 near a
+    # face's limit: hypothesis found the plain relative check at 5e-6 there, on the code before the rooms too)
+    floor = 64 * np.finfo(float).eps * np.max(np.hypot(*ev.profile)) / h
+    assert np.all(np.abs(np.sum(tang * ev.normal, axis=0)) <= 1e-6 * np.hypot(*tang) + floor)
     h = 1e-3                  # five-point stencils: their error ~h^4, fine where the radius is a millimetre
     qm2, qm1, q0, q1, q2 = (evaluate(p, f, th + j * h).profile for j in (-2, -1, 0, 1, 2))
     d1 = (-q2 + 8 * q1 - 8 * qm1 + qm2) / (12 * h)
