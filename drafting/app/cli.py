@@ -50,15 +50,7 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
         study = solve_study(study)
         try:
             sheet_formats = [f for f in formats if f != PAGE]
-            if lab:
-                from ..layout.sheet import source_date_epoch
-                from .lab import lab_for, write_lab
-                written = write_lab(lab_for(study, epoch=source_date_epoch()), out, path.stem, sheet_formats)
-                if PAGE in formats:
-                    from ..backends.html_page import write_page
-                    written.append(write_page(study, sheets_for(study), out, path.stem))
-            else:
-                written = _write_together(study, out, path.stem, sheet_formats, PAGE in formats)
+            written = _write_together(study, out, path.stem, sheet_formats, PAGE in formats, lab)
         except ExportError as e:                  # names the output file it could not write
             raise UserError(f"{path}: {e}") from None
         except LayoutError as e:                  # the sheet: the paper is what the user can change
@@ -70,12 +62,19 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
     return None, "\n".join([results_text(study)] + [f"  wrote {w}" for w in written]), 0
 
 
-def _write_together(study: Study, out: Path, stem: str, sheet_formats: Sequence[str], page: bool) -> list[Path]:
-    """The sheets of one render and, with ``page``, its step-through page: one plan, all written together
-    or not at all (a full disk or a signal while the page is written leaves no sheet either)."""
+def _write_together(study: Study, out: Path, stem: str, sheet_formats: Sequence[str], page: bool,
+                    lab: bool) -> list[Path]:
+    """The sheets of one render (with ``lab``, the problem sheet, worked solution and key) and, with
+    ``page``, its step-through page: one plan, all written together or not at all (a full disk or a
+    signal while the page is written leaves no sheet either)."""
     from ..backends.files import prepare_folder, remove_stale_temporaries, sheet_plan, write_outputs
     sheets = sheets_for(study)
-    plan = sheet_plan(sheets, out, stem, sheet_formats) if sheet_formats else []
+    if lab:
+        from ..layout.sheet import source_date_epoch
+        from .lab import lab_for, lab_plan
+        plan = lab_plan(lab_for(study, epoch=source_date_epoch()), out, stem, sheet_formats)
+    else:
+        plan = sheet_plan(sheets, out, stem, sheet_formats) if sheet_formats else []
     if page:
         from ..backends.html_page import page_plan
         plan += page_plan(study, sheets, out, stem)
