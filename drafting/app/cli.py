@@ -68,7 +68,7 @@ def _write_together(study: Study, out: Path, stem: str, sheet_formats: Sequence[
     ``page``, its step-through page: one plan, all written together or not at all (a full disk or a
     signal while the page is written leaves no sheet either)."""
     from ..backends.files import prepare_folder, remove_stale_temporaries, sheet_plan, write_outputs
-    sheets = sheets_for(study)
+    sheets = sheets_for(study) if page or (sheet_formats and not lab) else []     # laid out once
     if lab:
         from ..layout.sheet import source_date_epoch
         from .lab import lab_for, lab_plan
