@@ -45,8 +45,8 @@ def solve_study(study: Study) -> Study:
             warnings.simplefilter("error", RuntimeWarning)     # numpy's overflow or invalid value: no raw warning
             study.run()
     except RuntimeWarning as e:
-        raise UserError(f"{study.scene.path}: the numbers of this scene overflow while it is solved ({e}); a "
-                        f"value is far out of the range a mechanism has") from None
+        raise UserError(f"{study.scene.path}: solving this scene went out of the numbers' range ({e}); a value "
+                        f"of the scene is far from what a mechanism has") from None
     except SceneError as e:                  # what the scene asks for, found wrong once solved (ask.find)
         raise UserError(str(e)) from None
     except IndeterminatePosition as e:
