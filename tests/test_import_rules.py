@@ -3,7 +3,8 @@ drafting/, and drafting never solves -- only study/ and families/ call the engin
 rooms (render/, layout/, backends/) import of constructions/ only the record and the data types it is made
 of (geometry, and the tolerance the drawing's one geometric helper is given); scene/ the model's data types
 it reads a scene into; app/ the errors and values it reports.  Every number and point they draw or print
-comes from the Study's record and results."""
+comes from the Study's record and results.  And drafting's rooms import only down their floors
+(render < scene < layout < backends < study < families < app)."""
 
 from __future__ import annotations
 
@@ -85,3 +86,33 @@ def test_every_room_is_ruled_and_the_top_imports_no_engine():
     assert {f: m for f, m in top.items() if m} == {}
     harness = imported_modules(ROOT / "drafting" / "app")
     assert {f: _engine(harness[f]) for f in BENCH_HARNESS} == BENCH_HARNESS
+
+
+FLOORS = {"render": 0, "scene": 1, "layout": 2, "backends": 3, "study": 4, "families": 5, "app": 6}
+"""drafting's rooms, lowest first: a module imports from its own room or a lower one (api.py and entry.py,
+on top, from any).  The one exception is families/registry.py, which imports nothing and which scene/
+(reading a scene's kind) and study/ (its analyses) look families up in."""
+
+
+def test_the_rooms_import_down_the_floors_only():
+    top = max(FLOORS.values()) + 1
+    upward = []
+    for path in sorted((ROOT / "drafting").rglob("*.py")):
+        parts = path.relative_to(ROOT).with_suffix("").parts
+        room = FLOORS.get(parts[1], top) if len(parts) > 2 else top
+        package = parts[:-1]
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.level:
+                base = package[: len(package) - node.level + 1] + tuple((node.module or "").split(".") if node.module else ())
+                targets = [base] if node.module else [base + (a.name,) for a in node.names]
+            elif isinstance(node, (ast.Import, ast.ImportFrom)):
+                names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""]
+                targets = [tuple(n.split(".")) for n in names]
+            else:
+                continue
+            for t in targets:
+                if t[0] != "drafting" or len(t) < 2 or t[:3] == ("drafting", "families", "registry"):
+                    continue
+                if FLOORS.get(t[1], top) > room:
+                    upward.append(f"{'/'.join(parts)} -> {'.'.join(t)}")
+    assert upward == []
