@@ -15,7 +15,7 @@ import html
 from pathlib import Path
 from typing import Callable, Sequence
 
-from .files import ExportError, prepare_folder, write_outputs
+from .files import ExportError
 from .html_markup import asset, markup_html, script_json
 from .html_sweep import sweep_section
 from ..render.paper import Command
@@ -72,13 +72,4 @@ def page_plan(study, sheets: Sequence[Sheet], out_dir: Path | str, stem: str) ->
     return [(Path(out_dir) / f"{stem}.html", lambda: page_html(study, sheets).encode("utf-8"))]
 
 
-def write_page(study, sheets: Sequence[Sheet], out_dir: Path | str, stem: str) -> Path:
-    """Write the page of ``study`` and its ``sheets`` to ``out_dir/stem.html`` atomically; raises
-    ExportError naming the path."""
-    out_dir = Path(out_dir)
-    prepare_folder(out_dir)
-    (written,) = write_outputs(out_dir, stem, page_plan(study, sheets, out_dir, stem))
-    return written
-
-
-__all__ = ["page_html", "page_plan", "write_page", "entity_of", "ExportError"]
+__all__ = ["page_html", "page_plan", "entity_of", "ExportError"]
