@@ -151,7 +151,7 @@ def test_a_gear_pair_s_lengths_are_marked_at_the_diagram_they_are_read_off(tmp_p
     out = capsys.readouterr().out
     got = verdicts(out)
     assert (got["AP"], got["p_b"]) == ("wrong", "wrong")
-    assert "expected 12.65 mm (± 1.000 mm)" in out and "expected 14.76 mm (± 0.5000 mm)" in out
+    assert "expected 12.65 mm (± 1 mm)" in out and "expected 14.76 mm (± 0.5 mm)" in out
 
 
 def test_a_hostile_answers_file_is_one_sentence(tmp_path, capsys):

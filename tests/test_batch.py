@@ -93,14 +93,14 @@ def test_every_key_in_one_csv_with_units_in_the_headers(tmp_path):
     rows = list(csv.DictReader(io.StringIO((tmp_path / "out" / "slider-keys.csv").read_text())))
     assert [r["variant"] for r in rows] == ["1", "2"]
     header = list(rows[0])
-    assert header[:4] == ["variant", "crank_angle (deg)", "omega (rad/s)", "length.BC (mm)"]
+    assert header[:4] == ["variant", "crank_angle (\u00b0)", "omega (rad/s)", "length.BC (mm)"]
     assert "V_C (mm/s)" in header and "V_C direction (deg)" in header and "omega_2 (rad/s, CCW +)" in header
     for r, res in zip(rows, results):
         one = list(csv.DictReader(io.StringIO((tmp_path / "out" / f"slider-v00{r['variant']}-key.csv").read_text())))
         v_c = next(x for x in one if x["quantity"] == "V_C")
         assert float(r["V_C (mm/s)"]) == pytest.approx(float(v_c["answer"]), rel=1e-9)
-        assert dict(res.values)["crank_angle (deg)"] == r["crank_angle (deg)"]
-        assert float(r["crank_angle (deg)"]) % 5 == 0                # on the grid: 30 .. 150 every 5 deg
+        assert dict(res.values)["crank_angle (\u00b0)"] == r["crank_angle (\u00b0)"]
+        assert float(r["crank_angle (\u00b0)"]) % 5 == 0                # on the grid: 30 .. 150 every 5 deg
 
 
 def test_a_draw_that_cannot_be_drawn_is_drawn_again_the_same_way(tmp_path):

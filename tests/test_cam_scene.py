@@ -44,7 +44,7 @@ def test_flat_faced_question_values():
 def test_undercut_scene_warns_with_angles_and_json(capsys):
     s = study("roller-cam-undercut.toml")
     w = " ".join(s.warnings)
-    assert "Undercut" in w and "deg to" in w
+    assert "Undercut" in w and "\u00b0 to" in w
     assert "loops back there" in " ".join(s.notes)
     assert main(["solve", str(GALLERY / "roller-cam-undercut.toml"), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
@@ -194,7 +194,7 @@ def test_harmonic_example_knife_edge():
     jumps = {round(math.degrees(j.theta), 6): j.jumps[1] / 0.0254 for j in m.program.joins()}
     assert jumps[120.0] == pytest.approx(3.6) and jumps[180.0] == pytest.approx(3.6)
     assert jumps[210.0] == pytest.approx(-0.576) and jumps[0.0] == pytest.approx(-0.576)
-    assert "above the usual 30 deg" in " ".join(s.warnings)
+    assert "above the usual 30\u00b0" in " ".join(s.warnings)
 
 
 def test_oscillating_flat_faced_scene():
@@ -235,7 +235,7 @@ def test_gallery_cam_exactly_at_the_undercut_limit():
     assert f.prime_radius == pytest.approx(0.030, rel=1e-15)
     assert cp.cusp_at and not cp.undercut and cp.trimmed is cp.samples.profile
     w = " ".join(s.warnings)
-    assert "Cusp, at the undercut limit" in w and "49.42 deg" in w
+    assert "Cusp, at the undercut limit" in w and "49.42\u00b0" in w
     assert "zero to rounding" in " ".join(s.notes)
     assert all(c.agrees for c in s.comparisons)
     past = study("roller-cam-undercut.toml").get("profile").profile

@@ -234,10 +234,10 @@ def test_a_chart_in_a_panel_of_its_own():
     ys = [float(t.plain) for t in cmds if isinstance(t, Text) and t.name == "cam chart:number y"]
     assert min(ys) <= -20 and max(ys) >= 45
     units = {t.plain for t in cmds if isinstance(t, Text)}
-    assert "mm" in units and "cam angle (deg)" in units and "dwell" in units
+    assert "mm" in units and "cam angle (\u00b0)" in units and "dwell" in units
     assert [c for c in cmds if isinstance(c, Rectangle) and c.style == "band"]
     legend = [t.plain for t in cmds if isinstance(t, Text) and ":legend" in t.name]
-    assert legend == ["lift s", "s' (per rad)"]
+    assert legend == ["lift s", "s\u2032 (per rad)"]
     for cmd in cmds:
         from drafting.render.paper import command_points
         for x, y in command_points(cmd):
@@ -262,8 +262,8 @@ def test_a_sheet_with_every_new_entity_renders():
                values={"r": Value("length", 0.03)}))
     (sheet,) = compose_sheets(c, SheetInfo("Entities", "TOM-X-2", date="2026-11-22"))
     texts = {t.plain for t in sheet.texts()}
-    assert {"30.00 mm", "\u03c6", "prime circle", "R"} <= texts
-    assert any("30.00 mm from the centre" in t for t in texts)
+    assert {"30 mm", "\u03c6", "prime circle", "R"} <= texts
+    assert any("30 mm from the centre" in t for t in texts)
     root = ET.fromstring(sheet_to_svg(sheet))
     assert root.iter("{http://www.w3.org/2000/svg}circle")
 

@@ -354,7 +354,7 @@ def test_improper_scene_is_one_sentence_naming_file_and_key():
         parse_scene(concurrent, "plate.toml")
     msg = str(e.value)
     assert msg.startswith("plate.toml: member: the plate is improperly constrained: the lines of action of "
-                          "F_a, F_b and F_c all pass through (200.0 mm, 300.0 mm)"), msg
+                          "F_a, F_b and F_c all pass through (200 mm, 300 mm)"), msg
     assert "\n" not in msg
 
 

@@ -108,7 +108,7 @@ def test_the_mechanism_has_its_own_panel_and_the_cursors_sit_on_the_curves(cycle
                 assert abs(cur["x"][i] - pts[j][0]) < 2e-3 and abs(dot["y"][i] - pts[j][1]) < 2e-3
     # the controls, the named positions and nothing fetched from anywhere
     assert 'type="range" id="sweep-slider" min="0" max="359"' in page and 'id="sweep-play"' in page
-    assert "C&#x27; at 36.87 deg" in page and "\u03bc least at 0 deg" in page
+    assert "C&#x27; at 36.87\u00b0" in page and "\u03bc least at 0\u00b0" in page
     i = next(j for j, t in enumerate(d["status"]) if t.startswith("Limit position C'' "))
     assert "crank and coupler in line (folded); the rocker stops and turns back." in d["status"][i]
     assert not re.search(r"<(link|img|iframe)\b|\bsrc=|url\((?!data:)", page)
@@ -138,9 +138,9 @@ def test_change_points_are_named(tmp_path):
     study = Study(parse_scene(PARALLELOGRAM, tmp_path / "p.toml")).run()
     page = page_html(study, study.sheets())
     d = page_data(page)
-    assert "change point at 180.0 deg" in page and "change point at 0 deg" in page
+    assert "change point at 180\u00b0" in page and "change point at 0\u00b0" in page
     i = round((180 - 30) / 360 * d["count"])
-    assert "Change point at 180.0 deg: all the links lie in line" in d["status"][i]
+    assert "Change point at 180\u00b0: all the links lie in line" in d["status"][i]
     assert f'<option value="{i}">' in page
     assert not any("turns back" in t for t in d["status"])        # on its branch the rocker turns on
 
@@ -179,7 +179,7 @@ def test_in_headless_chromium_the_slider_moves_the_mechanism(tmp_path, cycle, ga
         x, y = map(float, re.search(rf" {name}=([-0-9.]+),([-0-9.]+)", title).groups())
         p = a.positions[name]
         assert abs(x - (d["ox"] + d["k"] * 1000 * p.x)) < 1e-3 and abs(y - (d["oy"] - d["k"] * 1000 * p.y)) < 1e-3
-    assert title.endswith("readout=190.0 deg")
+    assert title.endswith("readout=190\u00b0")
     gap_title = re.search(r"<title>([^<]*)</title>", out[1]).group(1)
     assert gap_title.startswith("selftest-sweep ok") and " gaps=ok:O2B " in gap_title, gap_title
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000

@@ -75,7 +75,7 @@ def test_step_values_are_written_in_the_scene_units_on_a_sheet():
     info = SheetInfo(title="t", drawing_number="n", date="2026-11-22", units=Units(velocity="m/min"))
     (sheet,) = compose_sheets(c, info)
     steps = [t.plain for t in sheet.texts() if t.name.startswith("step ") and not t.name.endswith("number")]
-    assert steps == ["Draw VB (30.00 m/min, crank at 70.00 deg) from Ov.", "Measure VC = 34.11 m/min.",
+    assert steps == ["Draw VB (30 m/min, crank at 70\u00b0) from Ov.", "Measure VC = 34.11 m/min.",
                      "A caption without values."]
     answers = {s.words for s in c.steps if s.kind is StepKind.ANSWER}
 

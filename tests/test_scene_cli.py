@@ -113,7 +113,7 @@ def test_link_too_short_to_assemble(tmp_path, capsys):
     p = write(tmp_path, EXAMPLE.replace("length = 94", "length = 30"))
     code, out, err = run(["render", str(p), "-o", str(tmp_path / "out")], capsys)
     assert code == 2
-    assert str(p) in err and "crank angle 70 deg" in err and "link 2 (BC = 30.00 mm)" in err
+    assert str(p) in err and "crank angle 70 deg" in err and "link 2 (BC = 30 mm)" in err
     assert "do not meet (they miss by 16.98 mm)" in err
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
 
@@ -328,8 +328,8 @@ def test_check_exits_1_when_graphical_and_analytic_disagree(monkeypatch, capsys)
     assert code == 1 and "DISAGREE" in out
 
 
-@pytest.mark.parametrize("factor,unit,expect", [(1e-3, "um", "Space 1000:1"), (1.0, "mm", "Space 1:1"),
-                                                (1e3, "m", "Space 1:1000")])
+@pytest.mark.parametrize("factor,unit,expect", [(1e-3, "um", "Space diagram 1000:1"), (1.0, "mm", "Space diagram 1:1"),
+                                                (1e3, "m", "Space diagram 1:1000")])
 def test_sheet_of_a_scaled_mechanism_keeps_its_drawing(factor, unit, expect, tmp_path, capsys):
     """The same slider-crank in micrometres, millimetres and metres: same decisions, an ISO 5455 space
     scale that follows the size (its series extended by powers of ten), and the same velocity polygon
@@ -339,7 +339,7 @@ def test_sheet_of_a_scaled_mechanism_keeps_its_drawing(factor, unit, expect, tmp
     code, out, err = run(["render", str(p), "-o", str(tmp_path), "--format", "svg"], capsys)
     assert code == 0, err
     svg = (tmp_path / "scene.svg").read_text()
-    assert expect in svg and "velocity 1 mm = 10 mm/s" in svg
+    assert expect in svg and "velocity scale: 1 mm = 10 mm/s" in svg
 
 
 # -- small bugs a new user met (issue 11) ------------------------------------------------------------------

@@ -111,7 +111,7 @@ def test_csv_has_units_and_parses_back(tmp_path, capsys):
     rows = list(csv.reader(dest.open(newline="", encoding="utf-8")))
     header, body = rows[0], rows[1:]
     assert len(body) == 12
-    assert header[0] == "crank angle [deg]"
+    assert header[0] == "crank angle [\u00b0]"
     assert "Q vx [mm/s]" in header and "Q ax [m/s^2]" in header and "omega_3 [rad/s]" in header
     assert "alpha_4 [rad/s^2]" in header
     assert all(len(r) == len(header) for r in body)
@@ -228,7 +228,7 @@ def test_a_parallelogram_stays_a_parallelogram_through_its_change_points(tmp_pat
     path.write_text(PARALLELOGRAM)
     assert cli.main(["sweep", str(path), "--steps", "72"]) == 0
     out = capsys.readouterr().out
-    assert "passes a change point (all links in line) at 180 deg, 360 deg and stays on its branch" in out
+    assert "passes a change point (all links in line) at 180\u00b0, 360\u00b0 and stays on its branch" in out
 
 
 def load_classification(scene):

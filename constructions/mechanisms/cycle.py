@@ -26,7 +26,7 @@ from ..sweep import Sweep
 from .classify import FourBarClass
 from .model import Mechanism
 
-BAND = (math.radians(40.0), math.radians(140.0), "40-140 deg")
+BAND = (math.radians(40.0), math.radians(140.0), "40\u2013140\u00b0")
 """The usual range of a transmission angle (notes, "Transmission angle")."""
 
 
@@ -139,7 +139,7 @@ def cycle_record(m: Mechanism, s: Sweep, k: FourBarClass | None, degrees) -> Con
     if k is not None and all(j in s.positions for j in k.joints[1:]):
         mu = transmission_angles(k, s)
         rec = rec.then("The transmission angle between coupler and rocker against the crank angle, the usual "
-                       "40-140 deg band shaded.",
+                       "40\u2013140\u00b0 band shaded.",
                        Chart("chart transmission", Role.GIVEN, chart_diagram("Transmission angle"), "angle",
                              "crank angle", (series("\u03bc", mu, "angle"),), (BAND,)),
                        kind=StepKind.CONSTRUCTION)

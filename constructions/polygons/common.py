@@ -65,7 +65,7 @@ def singular_kind(m: Mechanism, step, pose: Pose) -> tuple[str, str]:
     r = p[j] - p[centre]
     if line is not None and r.norm() > 0:
         a = math.degrees(math.acos(min(1.0, abs(line.direction.dot(r.unit())))))
-        return "limit position", f"link {step.link.number} at {a:.3g} deg to the {'slot' if step.slide.on else 'guide'}"
+        return "limit position", f"link {step.link.number} at {a:.3g}\u00b0 to the {'slot' if step.slide.on else 'guide'}"
     return "limit position", "link square to its guide"
 
 

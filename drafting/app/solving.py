@@ -62,7 +62,8 @@ def located(study: Study, e: ConstructionError) -> str:
         return str(e)
     try:
         u = study.scene.units.angle
-        where = f"crank angle {from_si(study.scene.angle, 'angle', u):.6g} {unit_symbol(u)}"
+        sym = unit_symbol(u)                       # written as the engine's own messages write it
+        where = f"crank angle {from_si(study.scene.angle, 'angle', u):.6g} {'deg' if sym == chr(0xb0) else sym}"
     except Exception:
         where = "the given crank angle"
     return f"at {where}: {e}"

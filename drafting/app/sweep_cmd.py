@@ -24,7 +24,7 @@ from ..families.registry import families, family
 from ..scene.reader import SceneError, load_scene
 from ..study.study import Study
 from ..scene.textsafe import printable
-from ..scene.units import UnitError, to_si, unit_symbol
+from ..scene.units import UnitError, to_si, unit_symbol, with_unit
 
 DEFAULT_STEPS = 72
 
@@ -158,14 +158,15 @@ def summary(scene, s) -> str:
     n, ok = s.thetas.size, int(np.count_nonzero(s.assembles))
     step = (ang[1] - ang[0]) if n > 1 else 0.0
     lines = [scene.title,
-             f"  {n} crank angles from {_fmt(ang[0])} to {_fmt(ang[-1])} {ua} (step {_fmt(step)} {ua}), "
+             f"  {n} crank angles from {_fmt(ang[0])} to {with_unit(_fmt(ang[-1]), ua)} "
+             f"(step {with_unit(_fmt(step), ua)}), "
              f"{s.model}: {ok} assembled"]
     gaps = s.gaps()
     if gaps:
-        spans = ", ".join(f"{_fmt(ang[i])}..{_fmt(ang[j - 1])} {ua}" for i, j in gaps)
+        spans = ", ".join(f"{_fmt(ang[i])}..{with_unit(_fmt(ang[j - 1]), ua)}" for i, j in gaps)
         lines.append(f"  cannot be assembled (gaps, {n - ok} angles): {spans}")
     if s.change_points:
-        at = ", ".join(f"{_fmt(u.convert('angle', a))} {ua}" for a in s.change_points)
+        at = ", ".join(with_unit(_fmt(u.convert('angle', a)), ua) for a in s.change_points)
         lines.append(f"  passes a change point (all links in line) at {at} and stays on its branch")
     uw, ual = u.symbol("angular velocity"), u.symbol("angular acceleration")
     rows = [("link", f"omega min [{uw}]", f"omega max [{uw}]", f"alpha min [{ual}]", f"alpha max [{ual}]")]

@@ -149,7 +149,7 @@ def chart_with_axes(e: Chart, rect: Rect, units: AxisUnits = SI_AXES,
     plot_top = top + (num_h + 1.5 if title_y else 0.0) + num_h / 2
     plot_bottom = rect.bottom - (TICK + 1.0 + num_h + 1.5 + num_h + 0.5)
     y0, y1, ys_step = ticks(y_lo, y_hi, max(plot_bottom - plot_top, 1.0), 8.0,
-                            DEGREE_STEPS if unit_y == "deg" else None)
+                            DEGREE_STEPS if unit_y == "\u00b0" else None)
     y_labels = []
     v = y0
     while v <= y1 + ys_step * 1e-6:
@@ -159,7 +159,7 @@ def chart_with_axes(e: Chart, rect: Rect, units: AxisUnits = SI_AXES,
     plot_left = rect.x + left_w
     plot_right = rect.right - 2.0
     x0, x1, xs_step = ticks(x_lo, x_hi, max(plot_right - plot_left, 1.0), 14.0,
-                            DEGREE_STEPS if x_unit == "deg" else None)
+                            DEGREE_STEPS if x_unit == "\u00b0" else None)
     if plot_right - plot_left < 20 or plot_bottom - plot_top < 15:
         raise LayoutError(f"the chart {name!r} needs at least {CHART_MIN[0]:.0f} x {CHART_MIN[1]:.0f} mm")
 

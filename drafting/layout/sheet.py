@@ -296,7 +296,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
 
     def tb_height(width: float, on_page: Sequence[Panel]) -> float:
         # the scales are not known before the rungs are; size the title block with long stand-ins
-        probe_text = "; ".join(t for t in (_probe_scale(p) for p in on_page) if t) or "\u2014 (no drawing on this sheet)"
+        probe_text = scale_cell([t for t in (_probe_scale(p) for p in on_page) if t])
         key = (round(width, 6), probe_text)
         if key not in tb_memo:
             tb_memo[key] = title_block_height(width, info.title, tb_fields(probe_text, 10, 10))
@@ -312,6 +312,14 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     first = info.sheet if m == 1 else None
     return tuple(_render_page(pp, info, pg, i, m, text_cmds, size, tb_fields, first)
                  for i, pg in enumerate(doc.pages))
+
+
+def scale_cell(scales: Sequence[str]) -> str:
+    """The title block's scale: the one scale of the sheet's drawings, "As shown" when each of several
+    carries its own (in its heading or scale bar), a dash on a sheet of text."""
+    if not scales:
+        return "\u2014 (no drawing on this sheet)"
+    return scales[0] if len(scales) == 1 else "As shown"
 
 
 def _probe_scale(p: Panel) -> str:
@@ -347,7 +355,7 @@ def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, t
     n_of_m = number or (index + 1, m)
     in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
     scale_list = [(p.key, p.scale_text(r)) for p, r, _ in in_order if p.scale_text(r)]
-    scale_text = "; ".join(t for _, t in scale_list) or "\u2014 (no drawing on this sheet)"
+    scale_text = scale_cell([t for _, t in scale_list])
     tb = title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
     regions: dict[str, Rect] = {"page": pp.page, "frame": frame, "title_block": tb.rect}
     cmds: list[Command] = [Rectangle(frame.x, frame.y, frame.w, frame.h, "frame", "frame")]

@@ -47,11 +47,11 @@ def _block_plan(width: float, title: str, fields: Sequence[Sequence[tuple[str, s
     # the title row: 7 mm, shrunk to 3.5, then wrapped
     inner = width - 2 * TB_PAD
     size = TITLE
-    tw = measure(plain(title, 1.0)).width
+    tw = measure(rich(title, 1.0)).width
     if tw * size > inner:
         size = max(LABEL, math.floor(inner / tw * 4) / 4)
     if tw * size <= inner:
-        title_lines = [plain(title, size)]
+        title_lines = [rich(title, size)]
     else:
         title_lines = wrap_words(title, inner, size)
     t_bottom = line_baselines([(m.top, m.bottom) for m in map(measure, title_lines)], TB_PAD + 0.6, size)[1]

@@ -290,6 +290,13 @@ _TOKEN = re.compile(
     r"(?<![A-Za-z0-9\u0370-\u03ff])(?P<base>[A-Za-z\u0370-\u03ff]+)_(?P<sub>" + _GROUP + r")"
     r"(?:\^(?P<sup>" + _GROUP + r"))?")
 _PIVOT = re.compile(r"^(?P<base>[A-Za-z])(?P<sub>[0-9]+)$")
+_NAMED = re.compile(r"(?<![A-Za-z0-9\u0370-\u03ff'\-/.])(?P<base>[A-Za-z\u0370-\u03ff])(?P<sub>[0-9]{1,2})?"
+                    r"(?P<primes>'{1,2})?(?![0-9A-Za-z\u0370-\u03ff])|"
+                    r"(?<![A-Za-z0-9\u0370-\u03ff'\-/.])(?P<base2>[A-Z\u0370-\u03ff])(?P<sub2>[0-9]{1,2})(?=[A-Z])")
+"""A point or member name inside running text, set as the notes print it: the digits of "O4", "F14",
+"omega2" ... as a subscript ("O4I" -> O with 4 below, then I), and a prime as a prime (b' -> b\u2032, C'' ->
+C\u2033); "D'Alembert" and "Kennedy's" are words and stay as written."""
+_PRIMES = {"'": "\u2032", "''": "\u2033"}
 
 
 def _strip(group: str | None) -> str:
@@ -329,7 +336,39 @@ def rich(markup: str, size: float, *, pivot_digits: bool = False, italic_symbols
         pos = m.end()
     if pos < len(markup):
         spans.append(Span(markup[pos:], size))
-    return tuple(_merge(spans))
+    return tuple(_merge([n for sp in spans for n in _names(sp)]))
+
+
+_DASHES = (("->", "\u2192"), (" -- ", " \u2013 "))
+"""ASCII a scene or a step may write, set as the sign it stands for: an arrow, a dash between clauses."""
+
+
+def _names(span: Span) -> list[Span]:
+    """``span`` (a run outside any markup) with its point names set as symbols (see ``_NAMED``) and its
+    ASCII arrows and dashes as their signs."""
+    if span.shift:
+        return [span]
+    if "-" in span.text:
+        text = span.text
+        for ascii_, sign in _DASHES:
+            text = text.replace(ascii_, sign)
+        span = Span(text, span.size, span.shift, span.italic)
+    if not any(c.isdigit() or c == "'" for c in span.text):
+        return [span]
+    out: list[Span] = []
+    pos = 0
+    for m in _NAMED.finditer(span.text):
+        base, sub = (m["base"], m["sub"]) if m["base"] else (m["base2"], m["sub2"])
+        primes = m["primes"] if m["base"] else None
+        if not sub and not primes:
+            continue
+        out.append(Span(span.text[pos:m.start()], span.size, 0.0, span.italic))
+        out.extend(_symbol(base, sub or "", "", span.size, span.italic))
+        if primes:
+            out.append(Span(_PRIMES[primes], span.size, 0.0, span.italic))
+        pos = m.end()
+    out.append(Span(span.text[pos:], span.size, 0.0, span.italic))
+    return out
 
 
 def _merge(spans: list[Span]) -> list[Span]:

@@ -251,7 +251,7 @@ def to_si(value: object, kind: str, default_unit: str) -> float:
         lo, hi = limits.MAGNITUDES[kind]
         bound = hi if problem == "too large" else lo
         try:
-            shown = f"{from_si(bound, kind, default_unit):g} {unit_symbol(default_unit)}"
+            shown = with_unit(f"{from_si(bound, kind, default_unit):g}", unit_symbol(default_unit))
         except UnitError:
             shown = f"{bound:g} {KINDS[kind][0]}"
         if problem == "too large":
@@ -271,15 +271,32 @@ def from_si(value: float, kind: str, unit: str) -> float:
 
 
 def unit_symbol(unit: str) -> str:
-    """How a unit is printed on a sheet: mm/s stays mm/s, degree becomes deg, a product is written with a
-    space as in "N m" (lbf*in -> lbf in; a power ** -> ^)."""
-    unit = {"degree": "deg", "radian": "rad"}.get(unit, unit)
+    """How a unit is printed on a sheet: mm/s stays mm/s, degree becomes the degree sign, a product is
+    written with a space as in "N m" (lbf*in -> lbf in; a power ** -> ^)."""
+    unit = {"degree": "\u00b0", "deg": "\u00b0", "radian": "rad"}.get(unit, unit)
     return " ".join(unit.replace("**", "^").replace("*", " ").split())
 
 
+def with_unit(number: str, symbol: str) -> str:
+    """A number and its printed unit: "50 mm", "70\u00b0" (the degree sign set close, ISO 80000-3), a
+    ratio's bare number."""
+    if not symbol:
+        return number
+    return f"{number}{symbol}" if symbol == "\u00b0" else f"{number} {symbol}"
+
+
+def trimmed(number: str) -> str:
+    """A fixed-point number without trailing zeros (ISO 129-1): "70.00" -> "70", "2.100" -> "2.1"."""
+    if "." not in number or "e" in number or "E" in number:
+        return number
+    return number.rstrip("0").rstrip(".")
+
+
 def format_value(value: float, kind: str, unit: str, digits: int = 4) -> str:
+    """An SI value in ``unit`` to ``digits`` significant figures, trailing zeros dropped: "500 mm/s",
+    "70\u00b0", "2.1 rad/s"."""
     v = from_si(value, kind, unit)
-    return f"{_sig(v, digits)} {unit_symbol(unit)}".rstrip()      # (a ratio has no unit)
+    return with_unit(trimmed(_sig(v, digits)), unit_symbol(unit))
 
 
 def _sig(v: float, digits: int) -> str:

@@ -26,7 +26,7 @@ from typing import Any
 
 from ..render.scales import nice_floor
 from .reader import SceneError
-from .units import UnitError, from_si, split_value, to_si, unit_symbol
+from .units import UnitError, from_si, split_value, to_si, unit_symbol, with_unit
 
 STEPS_AT_LEAST = 20
 MAX_STEPS = 10_000_000
@@ -110,7 +110,7 @@ def read_range(path, full: str, where: tuple, kind: str, spec, units, key_name: 
         step = Decimal(f"{from_si(st, kind, unit):.12g}")
         if step > span:
             raise fail(path, f"{full}.step", f"{_shown(st, kind, unit)} is larger than the range "
-                                             f"({_plain(span)} {unit_symbol(unit)})")
+                                             f"({with_unit(_plain(span), unit_symbol(unit))})")
     count = int(span / step) + 1
     if count > MAX_STEPS:
         raise fail(path, f"{full}.step", f"makes {count} values; at most {MAX_STEPS} are allowed")
@@ -118,7 +118,7 @@ def read_range(path, full: str, where: tuple, kind: str, spec, units, key_name: 
 
 
 def _shown(si: float, kind: str, unit: str) -> str:
-    return f"{from_si(si, kind, unit):g} {unit_symbol(unit)}"
+    return with_unit(f"{from_si(si, kind, unit):g}", unit_symbol(unit))
 
 
 # ---- variants ----------------------------------------------------------------------------------------

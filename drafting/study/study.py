@@ -8,6 +8,7 @@ accelerations.  ``Study.ran`` lists what has been computed so far (e.g. "positio
 
 from __future__ import annotations
 
+import re
 from functools import cached_property
 from typing import Any, Mapping
 
@@ -235,6 +236,12 @@ def results_csv(study: "Study") -> str:
     return buf.getvalue()
 
 
+_GREEK = {"alpha": "\u03b1", "beta": "\u03b2", "gamma": "\u03b3", "delta": "\u03b4", "theta": "\u03b8",
+          "mu": "\u03bc", "rho": "\u03c1", "phi": "\u03c6", "psi": "\u03c8", "omega": "\u03c9"}
+_GREEK_WORD = re.compile(r"^(" + "|".join(_GREEK) + r")(?=_|'|$)")
+
+
 def display_name(name: str) -> str:
-    """omega_2 -> ω_2, alpha_2 -> α_2 (the rest of the name is the notes' markup already)."""
-    return name.replace("omega_", "\u03c9_").replace("alpha_", "\u03b1_")
+    """A result's name as a sheet sets it: omega_2 -> ω_2, phi' -> φ', phi_max -> φ_max (the rest of the
+    name is the notes' markup already)."""
+    return _GREEK_WORD.sub(lambda m: _GREEK[m[1]], name)

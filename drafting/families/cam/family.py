@@ -116,7 +116,7 @@ def _warnings(study) -> tuple[str, ...]:
     limit = 35 if f.kind in (OSCILLATING, OSC_FLAT) else 30
     if f.kind != FLAT and phi > math.radians(limit):
         out.append(f"The pressure angle reaches {u.format('angle', phi)} at {u.format('angle', cp.max_pressure_angle[0])}"
-                   f", above the usual {limit} deg for {'an oscillating' if limit == 35 else 'a translating'} "
+                   f", above the usual {limit}\u00b0 for {'an oscillating' if limit == 35 else 'a translating'} "
                    f"follower.")
     return tuple(out)
 

@@ -254,11 +254,11 @@ def _notes(study) -> tuple[str, ...]:
         mu = transmission_at_pose(study)
         if k.transmission_min is not None:
             lo, hi = math.degrees(k.transmission_min), math.degrees(k.transmission_max)
-            line += f"; transmission angle {lo:.0f}-{hi:.0f} deg"
+            line += f"; transmission angle {lo:.0f}\u2013{hi:.0f}\u00b0"
             if lo < 40 or hi > 140:
-                line += " (the usual range is 40-140)"
+                line += " (the usual range is 40\u2013140\u00b0)"
         if mu is not None:
-            line += f", {mu:.0f} deg as drawn"
+            line += f", {mu:.0f}\u00b0 as drawn"
         w.append(line[:1].upper() + line[1:] + ".")
     for lp in study.get("loops"):
         q, _, j, o = lp.k.joints

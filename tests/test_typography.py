@@ -1,0 +1,57 @@
+"""Typography on the sheets (issue 23): the degree sign, no trailing zeros (ISO 129-1), point and member
+names set as the notes print them (O4 with its digit below, b' with a prime), Greek result names, ASCII
+arrows and dashes set as their signs, and the title block's scale cell."""
+
+from __future__ import annotations
+
+import pytest
+
+from drafting.layout.sheet import scale_cell
+from drafting.render.style import rich
+from drafting.scene.units import format_value, trimmed, with_unit
+from drafting.study.study import display_name
+
+
+def runs(text: str) -> list[tuple[str, bool]]:
+    """(text, set below or above the baseline) of each run ``text`` is set in."""
+    return [(s.text, s.shift != 0) for s in rich(text, 3.5)]
+
+
+@pytest.mark.parametrize("value,kind,unit,shown", [
+    (0.05, "length", "mm", "50 mm"), (0.0425, "length", "mm", "42.5 mm"), (1.2217304763960306, "angle", "deg", "70\u00b0"),
+    (0.5, "velocity", "m/min", "30 m/min"), (2.1, "angular velocity", "rad/s", "2.1 rad/s"),
+    (1e8 * 1e-3, "length", "mm", "1.000e+08 mm")])
+def test_values_drop_trailing_zeros_and_set_the_degree_sign_close(value, kind, unit, shown):
+    assert format_value(value, kind, unit) == shown
+
+
+def test_trimmed_and_with_unit():
+    assert [trimmed(t) for t in ("70.00", "2.100", "500", "4.4e-13", "0.0500")] == ["70", "2.1", "500", "4.4e-13",
+                                                                                   "0.05"]
+    assert with_unit("70", "\u00b0") == "70\u00b0" and with_unit("50", "mm") == "50 mm" and with_unit("3", "") == "3"
+
+
+def test_point_names_take_subscripts_and_primes_and_words_stay_as_written():
+    assert runs("O4I") == [("O", False), ("4", True), ("I", False)]
+    assert runs("F14 and I02") == [("F", False), ("14", True), (" and I", False), ("02", True)]
+    assert runs("From b' draw; meet at c'.") == [("From b\u2032 draw; meet at c\u2032.", False)]
+    assert runs("C''") == [("C\u2033", False)]
+    for words in ("D'Alembert force", "Kennedy's theorem", "TOM-A-001", "2026-11-23", "3-4-5 law", "4.4e-13 mm",
+                  "Example 1", "step 10.5"):
+        assert runs(words) == [(words, False)], words
+
+
+def test_ascii_arrows_and_dashes_become_their_signs():
+    assert "".join(t for t, _ in runs("left of A->B -- then")) == "left of A\u2192B \u2013 then"
+
+
+def test_greek_result_names():
+    assert display_name("omega_2") == "\u03c9_2" and display_name("alpha_3") == "\u03b1_3"
+    assert display_name("phi'") == "\u03c6'" and display_name("phi_max") == "\u03c6_max"
+    assert display_name("V_C") == "V_C" and display_name("physics") == "physics"
+
+
+def test_the_scale_cell_says_as_shown_when_each_drawing_carries_its_own():
+    assert scale_cell([]).startswith("\u2014")
+    assert scale_cell(["Space 1:2"]) == "Space 1:2"
+    assert scale_cell(["Space 1:2", "velocity 1 mm = 10 mm/s"]) == "As shown"
