@@ -65,9 +65,13 @@ def is_black_fill(cmd: Command) -> bool:
 def clip_length(seg: Segment, box: Rect) -> float:
     """The length of the part of ``seg`` strictly inside ``box`` (Liang-Barsky; a touch is 0)."""
     (a0, a1), (b0, b1) = seg
+    le, to = box.x, box.y
+    ri, bo = le + box.w, to + box.h
+    if (a0 <= le and b0 <= le) or (a0 >= ri and b0 >= ri) or (a1 <= to and b1 <= to) or (a1 >= bo and b1 >= bo):
+        return 0.0
     dx, dy = b0 - a0, b1 - a1
     t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, a0 - box.left), (dx, box.right - a0), (-dy, a1 - box.top), (dy, box.bottom - a1)):
+    for p, q in ((-dx, a0 - le), (dx, ri - a0), (-dy, a1 - to), (dy, bo - a1)):
         if abs(p) < 1e-12:
             if q <= 0:
                 return 0.0
@@ -80,6 +84,14 @@ def clip_length(seg: Segment, box: Rect) -> float:
         if t0 >= t1:
             return 0.0
     return (t1 - t0) * math.hypot(dx, dy)
+
+
+def circle_box_distance(cx: float, cy: float, r: float, box: Rect) -> float:
+    """The least distance between a circle (the curve) and a box (0 when the curve enters it): the
+    curve stays clear of the box when the box is wholly outside the circle or wholly inside it."""
+    near = point_box_distance((cx, cy), box)
+    far = max(math.hypot(x - cx, y - cy) for x in (box.left, box.right) for y in (box.top, box.bottom))
+    return max(0.0, near - r, r - far)
 
 
 def inside_polygon(p: Pt, poly: Sequence[Pt]) -> bool:

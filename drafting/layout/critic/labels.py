@@ -8,7 +8,7 @@ import math
 from collections import defaultdict
 
 from ...render.paper import Circle, Command, Line, Polygon, Rect, Text
-from .geometry import (clip_length, fill_meets, is_black_fill, is_stroked, outline, point_box_distance,
+from .geometry import (bounding, circle_box_distance, clip_length, fill_meets, is_black_fill, is_stroked, outline, point_box_distance,
                        segment_box_distance)
 from .parts import Finding, diagram_texts, owner, part
 
@@ -56,19 +56,25 @@ def crossed_labels(sheet) -> list[Finding]:
     own entity -- its own shaft, its dimension line, a leader drawn for it -- is not foreign.  One finding
     per text and command, saying whether the command is drawn after the text (struck over its letters)
     or before it (cut by its white ground); value: the length of the foreign path inside the box, mm."""
-    inked = [(i, c, outline(c), _bounds(c)) for i, c in enumerate(sheet.commands)
+    inked = [(i, c, *_edges(bounding([c]))) for i, c in enumerate(sheet.commands)
              if type(c) is not Text and (is_stroked(c) or is_black_fill(c))]
     order = {id(c): i for i, c in enumerate(sheet.commands)}
+    segments: dict[int, list] = {}                   # each command's path, made when a box meets it
     out = []
     for t in diagram_texts(sheet.commands):
         box = t.box.inset(STRIKE_INSET)
         if box.w <= 0 or box.h <= 0:
             continue
         mine = owner(t.name)
-        for i, c, segs, bb in inked:
-            if owner(c.name) == mine or not bb.overlaps(box):
+        le, to, ri, bo = _edges(box)
+        for i, c, c_le, c_to, c_ri, c_bo in inked:
+            if c_le > ri or c_ri < le or c_to > bo or c_bo < to or owner(c.name) == mine:
                 continue
-            inside = sum(clip_length(s, box) for s in segs) if is_stroked(c) else 0.0
+            if type(c) is Circle and not is_black_fill(c) and circle_box_distance(c.cx, c.cy, c.r, box) > 0:
+                continue                             # its stroke stays clear of the box
+            if i not in segments:
+                segments[i] = outline(c)
+            inside = sum(clip_length(s, box) for s in segments[i]) if is_stroked(c) else 0.0
             if inside > 1e-6 or (is_black_fill(c) and fill_meets(c, box)):
                 how = "struck over its letters" if i > order[id(t)] else "cut by its white ground"
                 out.append(Finding("label-crossed", sheet.number,
@@ -77,14 +83,13 @@ def crossed_labels(sheet) -> list[Finding]:
     return out
 
 
-def _bounds(c: Command) -> Rect:
-    segs = outline(c)
-    return Rect.bounding([p for s in segs for p in s]) if segs else Rect(0, 0, 0, 0)
+def _edges(r: Rect) -> tuple[float, float, float, float]:
+    return r.x, r.y, r.x + r.w, r.y + r.h
 
 
 # ---- which entity a label is nearest ------------------------------------------------------------------
 
-def _entities(sheet) -> dict[str, tuple[str, list]]:
+def _entities(sheet) -> dict[str, tuple[str, list, Rect]]:
     """Each owner's kind and its geometry as segments and points: an "arrow" (a shaft Line and an
     arrowhead "<owner>:head"), a "point" (a dot, or a pin "<owner>:pin" of its own), else the type and
     style of its own geometry ("Line trial", "Polyline dimension" for an angle mark's arc...)."""
@@ -101,7 +106,7 @@ def _entities(sheet) -> dict[str, tuple[str, list]]:
             own[o].append(c)
         elif p == "pin" and type(c) is Circle:
             own[o].append(c)
-    out: dict[str, tuple[str, list]] = {}
+    out: dict[str, tuple[str, list, Rect]] = {}
     for o, cmds in own.items():
         if o in heads and any(type(c) is Line for c in cmds):
             kind = "arrow"
@@ -113,13 +118,17 @@ def _entities(sheet) -> dict[str, tuple[str, list]]:
         if kind == "point":
             geometry = [(c.cx, c.cy) for c in cmds]
         else:
-            geometry = [s for c in cmds for s in outline(c)]
-        out[o] = (kind, geometry)
+            geometry = []
+            for c in cmds:
+                geometry.extend([(c.cx, c.cy, c.r)] if type(c) is Circle else outline(c))
+        out[o] = (kind, geometry, bounding(cmds))
     return out
 
 
 def _distance(box: Rect, geometry: list) -> float:
-    return min((point_box_distance(g, box) if isinstance(g[0], (int, float)) else segment_box_distance(g, box)
+    """From ``box`` to the nearest of ``geometry``: points (x, y), circles (cx, cy, r) and segments."""
+    return min((segment_box_distance(g, box) if not isinstance(g[0], (int, float))
+                else point_box_distance(g, box) if len(g) == 2 else circle_box_distance(*g, box)
                 for g in geometry), default=math.inf)
 
 
@@ -147,7 +156,7 @@ def ambiguous_labels(sheet) -> list[Finding]:
     out = []
     for t in (c for c in diagram_texts(sheet.commands) if part(c.name) == "label"):
         mine = owner(t.name)
-        kind, geometry = ents.get(mine, ("point", []))
+        kind, geometry, _ = ents.get(mine, ("point", [], None))
         if kind == "point" and not geometry:
             marks = _marks(sheet) if marks is None else marks
             if len(marks) < 2:
@@ -157,16 +166,33 @@ def ambiguous_labels(sheet) -> list[Finding]:
             other = f"the mark at ({where[0]:.1f}, {where[1]:.1f})"
         else:
             d_own = _distance(t.box, geometry)
-            cands = [(_distance(t.box, g), o) for o, (k, g) in ents.items() if k == kind and o != mine
-                     and not (kind == "point" and _same_place(g, geometry))]
-            if not cands:
+            got = _nearest(t.box, [(o, g, bb) for o, (k, g, bb) in ents.items() if k == kind and o != mine
+                                   and not (kind == "point" and _same_place(g, geometry))])
+            if got is None:
                 continue
-            d_other, other = min(cands)
+            d_other, other = got
         if d_other <= d_own + AMBIGUITY_MARGIN:
             out.append(Finding("label-ambiguous", sheet.number,
                                f"{t.plain!r} ({t.name}) is {d_own:.1f} mm from its own {kind} and {d_other:.1f} mm "
                                f"from {other}", t.box, d_other - d_own))
     return out
+
+
+def _nearest(box: Rect, cands: list) -> tuple[float, str] | None:
+    """(distance, owner) of the candidate (owner, geometry, bounds) nearest ``box``: the candidates are
+    measured in the order of their bounds' distance, which no part of them can be nearer than."""
+    best = None
+    for lower, o, g in sorted((_rect_distance(box, bb), o, g) for o, g, bb in cands):
+        if best is not None and lower > best[0]:
+            break
+        d = _distance(box, g)
+        if best is None or d < best[0]:
+            best = (d, o)
+    return best
+
+
+def _rect_distance(a: Rect, b: Rect) -> float:
+    return math.hypot(max(a.left - b.right, 0.0, b.left - a.right), max(a.top - b.bottom, 0.0, b.top - a.bottom))
 
 
 def _same_place(a: list, b: list) -> bool:
