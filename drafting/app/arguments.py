@@ -100,6 +100,13 @@ def parser() -> argparse.ArgumentParser:
         "export", help="a cam's profile for machining (CSV and DXF)",
         description="Write a cam scene's profile as CSV and DXF (units in the file), every chord within the "
                     "tolerance of the exact profile, trimmed where the follower undercuts it."))
+    n = sub.add_parser("lint", help="measure each scene's sheets against the sheet critic's checks",
+                       description="Lay out each scene's worked sheets and report what the sheet critic finds: "
+                                   "labels overlapping, struck by lines or ambiguous, short arrows without a "
+                                   "leader, diagrams filling little of their panel, blank pages, small "
+                                   "lettering, long title-block cells. Exit 1 when anything is found.")
+    n.add_argument("scenes", nargs="+", type=Path, metavar="SCENE", help="scene files (TOML)")
+    n.add_argument("--json", action="store_true", help="print the findings and counts as JSON")
     w = sub.add_parser("sweep", help="a linkage over one turn of its crank (table or CSV)",
                        description="Solve the scene's linkage over one turn of the crank, starting at the "
                                    "scene's crank angle (analytic, vectorised); angles where it cannot be "

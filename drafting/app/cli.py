@@ -8,6 +8,7 @@
     drafting render SCENE --lab   problem sheet, worked solution and answer key
     drafting batch SCENE --variants N --seed S -o DIR   N lab-sheet variants from the scene's [vary]
     drafting bench [--peers]      timings of rendering and of the analytic sweep (and its peers)
+    drafting lint SCENE... [--json]   the sheet critic's findings; exit 1 when there are any
 
 Exit codes: 0 fine, 1 graphical and analytic disagree, 2 bad input (one sentence on stderr).
 """
@@ -256,6 +257,9 @@ def _main(argv: Sequence[str] | None) -> int:
             if args.variant is not None or args.seed is not None:
                 raise UserError("--variant and --seed go with --answers")
             return cmd_check(args.scenes)
+        if args.command == "lint":
+            from .lint_cmd import cmd_lint
+            return cmd_lint(args.scenes, args.json)
         if args.command == "bench":
             return cmd_bench(args.quick, args.peers)
         if args.command == "export":
