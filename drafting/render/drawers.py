@@ -202,7 +202,7 @@ def draw_trial(e: TrialLine, ctx: DrawContext) -> None:
         ctx.d.labels.append(LabelReq("trial", e.label, b, False, e.name, other=a))
 
 
-_ARROW_OWN_STYLE = frozenset({Role.KNOWN, Role.RESULT, Role.LOAD})
+_ARROW_OWN_STYLE = frozenset({Role.KNOWN, Role.RESULT, Role.LOAD, Role.DIMENSION})
 
 
 @drawer(Arrow, points=lambda e: (e.tail, e.tip))
@@ -216,7 +216,7 @@ def draw_arrow(e: Arrow, ctx: DrawContext) -> None:
     ctx.d.layers.setdefault(HEADS, []).append(head)
     ctx.d.hard.append(Rect.bounding(head.points))
     if e.label:
-        ctx.d.labels.append(LabelReq("arrow", e.label, tip, False, e.name, other=tail))
+        ctx.d.labels.append(LabelReq("arrow", ctx.text(e, e.label), tip, False, e.name, other=tail))
 
 
 @drawer(Point, phase=2, points=lambda e: (e.at,))
