@@ -2,7 +2,7 @@
 
 Every entity has a role (what it is for: given, known, trial, result, ...) and lives in one diagram, named
 by kind and name (several force diagrams, one per link).  The set is open: points, arrows, trial lines,
-bars, plates, pivots, guides, blocks, polygons, arcs, circles, curves, segments, dimensions, angle marks,
+bars, plates, pivots, guides, blocks, link numbers, polygons, arcs, circles, curves, segments, dimensions, angle marks,
 notes, charts; how each looks on paper is the drafting layer's business, never the record's.  The steps
 that add them are :mod:`constructions.record`'s.
 """
@@ -139,6 +139,15 @@ class Block(Entity):
     at: Vec
     direction: Vec
     link: int
+
+
+@dataclass(frozen=True, slots=True)
+class LinkNumber(Entity):
+    """A link's number written beside it as the notes do: ``at`` the link's middle (a plate's centre, a
+    block's centre; a fixed pivot for the frame)."""
+
+    at: Vec
+    number: int
 
 
 @dataclass(frozen=True, slots=True)

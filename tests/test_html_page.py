@@ -58,17 +58,17 @@ def _chromium(url: str, *args: str) -> str:
 def test_in_headless_chromium_it_steps_forward_and_back(tmp_path):
     assert main(["render", str(SCENE), "-o", str(tmp_path), "--format", "html"]) == 0
     page = tmp_path / "notes-acceleration-example-1.html"
-    dom = _chromium(f"{page.as_uri()}#step=14&selftest", "--dump-dom")
+    dom = _chromium(f"{page.as_uri()}#step=15&selftest", "--dump-dom")
     title = re.search(r"<title>([^<]*)</title>", dom).group(1)
-    assert title.startswith("selftest ok step=15")                           # 14 -> 16 -> 15
+    assert title.startswith("selftest ok step=16")                           # 15 -> 17 -> 16 (the space diagram numbers its links in a step)
     lit = int(re.search(r"lit=(\d+)", title).group(1))
     hidden = int(re.search(r"hidden=(\d+)", title).group(1))
-    assert lit > 0 and hidden > 0                                            # step 15 lit, 16-17 hidden
-    dom = _chromium(f"{page.as_uri()}#step=15", "--dump-dom")
+    assert lit > 0 and hidden > 0                                            # step 16 lit, 17-18 hidden
+    dom = _chromium(f"{page.as_uri()}#step=16", "--dump-dom")
     current = re.findall(r'<li class="current">(.*?)</li>', dom)
     assert len(current) == 1 and current[0].startswith("From b' draw A<sub>CB</sub><sup>n</sup>")
     shot = tmp_path / "shot.png"
-    _chromium(f"{page.as_uri()}#step=15", f"--screenshot={shot}", "--window-size=1600,1000")
+    _chromium(f"{page.as_uri()}#step=16", f"--screenshot={shot}", "--window-size=1600,1000")
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
 
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 import itertools
 import math
 
-from ..entities import Bar, Point, Role, Segment
+from ..entities import Arrow, Bar, Point, Role, Segment
 from ..geometry import Vec
 from ..record import Construction, StepKind
 from .centres import CIRCLE, DIAGRAM, FAR, Centre, centre_name
@@ -32,17 +32,53 @@ def _centre_entities(c: Centre, norm) -> tuple:
     return ()
 
 
+POINTER = 0.3
+"""The arrow towards a centre off the drawing is 0.3 mechanism sizes long."""
+
+
 def kennedy_entities(c: Centre, found, norm, mid: Vec, size: float) -> tuple:
     """The found centre (if near) and its two lines, from the centres on them toward it, clipped to the
-    region the diagram shows."""
+    region the diagram shows.
+
+    The rule for a centre off the drawing: one within FAR mechanism sizes of the middle is drawn (the view
+    grows to hold it and the scale stays readable); one farther, or at infinity, gets an arrow on from the
+    end of its first line towards it, labelled with its coordinates ("I_02 at (412 mm, -87 mm)", the
+    step's values) or "I_02 \u2192 \u221e"."""
     out = list(_centre_entities(c, norm))
     name = centre_name(c.bodies)
+    pointer = None
     for idx, (a, b) in enumerate(c.lines):
         ends = [found[x] for x in (a, b)] + [c]
         seg = _clip_line(ends, mid, size)
         if seg is not None:
             out.append(Segment(f"ic {name} line {idx + 1}", Role.AUXILIARY, DIAGRAM, seg[0], seg[1]))
+            pointer = pointer or _pointer(c, seg, name, size)
+    if not out or isinstance(out[0], Segment):
+        out += [pointer] if pointer is not None else []
     return tuple(out)
+
+
+def _pointer(c: Centre, seg: tuple[Vec, Vec], name: str, size: float) -> Arrow | None:
+    """An arrow from the end of the line ``seg`` nearer the centre ``c`` (off the drawing) towards it."""
+    if c.finite:
+        end = min(seg, key=lambda p: (p - c.at).norm())
+        d = c.at - end
+        label = f"{name} at ($x, $y)"
+    else:
+        d = c.direction if (seg[1] - seg[0]).dot(c.direction) >= 0 else c.direction * -1.0
+        end = seg[1] if (seg[1] - seg[0]).dot(d) >= 0 else seg[0]
+        label = f"{name} \u2192 \u221e"
+    if not d.norm() > 0:
+        return None
+    return Arrow(f"ic {name} off the drawing", Role.DIMENSION, DIAGRAM, end, end + d.unit() * (POINTER * size),
+                 label)
+
+
+def infinity_arrow(name: str, at: Vec, normal: Vec, guide: str, size: float) -> Arrow:
+    """A block's centre at infinity: an arrow from the block along the normal to its ``guide`` ("guide",
+    "slot"), labelled "I_03 \u2192 \u221e \u22a5 guide"."""
+    return Arrow(f"ic {name} at infinity", Role.DIMENSION, DIAGRAM, at, at + normal.unit() * (POINTER * size),
+                 f"{name} \u2192 \u221e \u22a5 {guide}")
 
 
 def _clip_line(centres: list[Centre], mid: Vec, size: float) -> tuple[Vec, Vec] | None:

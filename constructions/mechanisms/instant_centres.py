@@ -35,7 +35,7 @@ from ..entities import Point, Role
 from ..geometry import Vec
 from ..quantities import Measured
 from ..record import Construction, StepKind, Value
-from .centre_diagram import circle_diagram, drawn_box, kennedy_entities, link_bars
+from .centre_diagram import circle_diagram, drawn_box, infinity_arrow, kennedy_entities, link_bars
 from .centres import DIAGRAM, FAR, Centre, Pair, centre_name, pair
 from .model import Mechanism, slide_line
 from .pose import Pose
@@ -134,7 +134,9 @@ def instant_centres(m: Mechanism, pose: Pose, omega: float) -> InstantCentres:
             q = pair(c.block, c.guide)
             place(Centre(q, (nrm.x, nrm.y, 0.0), f"at infinity, square to the {_guide(m, c.guide, f)} block "
                                                    f"{c.block} slides on"))
-            rec = rec.then(f"{centre_name(q)} is {found[q].how}.", kind=StepKind.CONSTRUCTION)
+            rec = rec.then(f"{centre_name(q)} is {found[q].how}.",
+                           infinity_arrow(centre_name(q), pos[c.joint], nrm, "guide" if c.guide == f else "slot",
+                                          m.size), kind=StepKind.CONSTRUCTION)
         elif isinstance(c, SlotPin):
             line = slide_line(m, c.slide, pos)
             nrm = line.direction.perp()

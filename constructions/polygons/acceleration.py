@@ -313,11 +313,29 @@ class _Polygon(PolygonDrawing):
             (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a, _img(jg)),
              Arrow(f"result {t_name}", Role.RESULT, Diagram.ACCELERATION, tip_n, a, t_name),
              Arrow(f"result A_{jg}{j}^s", Role.RESULT, Diagram.ACCELERATION, tip_c, a, f"A_{jg}{j}^s"),
-             Arrow(f"result A_{jg}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, a, f"A_{jg}"),
-             *[Point(f"acceleration image {x}", Role.LABEL, Diagram.ACCELERATION, self.acc[x], _img(x))
-               for x in m.points_of(k.number) if x != c and x not in m.ground]),
+             Arrow(f"result A_{jg}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, a, f"A_{jg}")),
             eq, {"t": _a(a_t.norm()), "s": _a((a - tip_c).norm()), "a": _a(a.norm()),
                  "al": Value("angular acceleration", abs(al))}, StepKind.ANSWER))
+        self._slotted_image(k.number, c, jg, j)
+
+    def _slotted_image(self, number: int, c: str, jg: str, j: str) -> None:
+        """The further points of the slotted link (the lever's end P): each image x' on the link's
+        acceleration image through the image of its known point ``c`` and ``jg``', the triangle c'jg'x'
+        similar to C JG X, and its vector from O_a."""
+        m = self.m
+        others = [x for x in m.points_of(number) if x != c and x != jg and x not in m.ground]
+        if not others:
+            return
+        first = "O_a" if c in m.ground else _img(c)
+        ents, values, parts = [], {}, []
+        for i, x in enumerate(others):
+            ents += [Point(f"acceleration image {x}", Role.LABEL, Diagram.ACCELERATION, self.acc[x], _img(x)),
+                     Arrow(f"result A_{x}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, self.acc[x], f"A_{x}")]
+            values[f"a{i}"] = _a(self.acc[x].norm())
+            parts.append(f"{_img(x)} ({joined(first, _img(jg), _img(x))} similar to {c}{j}{x}; "
+                         f"A_{x} from O_a to {_img(x)} = $a{i})")
+        self.steps.append((f"Acceleration image of link {number}: mark " + ", ".join(parts) + ".",
+                           tuple(ents), None, values, StepKind.ANSWER))
 
     def image(self, step: FixedToLink) -> None:
         """Acceleration image of point D of a link placed by two of its points P, Q: the triangle p'q'd'

@@ -259,8 +259,11 @@ class _Polygon(PolygonDrawing):
             self.steps.append((
                 f"The velocity image of link {k.number} runs from {first} (the image of {c}) through "
                 f"{image_name(jg)}: mark " + ", ".join(f"{image_name(x)} ({image_name(x)} is {c}{x} turned 90\u00b0 "
-                                                      f"and scaled by \u03c9_{k.number})" for x in others) + ".",
-                tuple(Point(f"image {x}", Role.LABEL, Diagram.VELOCITY, self.vel[x], image_name(x)) for x in others),
+                                                      f"and scaled by \u03c9_{k.number}; V_{x} from O_v to "
+                                                      f"{image_name(x)})" for x in others) + ".",
+                tuple(e for x in others for e in (
+                    Point(f"image {x}", Role.LABEL, Diagram.VELOCITY, self.vel[x], image_name(x)),
+                    Arrow(f"result V_{x}", Role.RESULT, Diagram.VELOCITY, ORIGIN, self.vel[x], f"V_{x}"))),
                 None, {}, StepKind.CONSTRUCTION))
 
     def image(self, step: FixedToLink) -> None:

@@ -1,7 +1,8 @@
 """One drawer per entity type (see :mod:`drafting.layout.diagram` for the registry and the phases).
 
-Mechanism entities: bars, plates, pivots (ground hatching turned away from their links), guides (rails
-either side of a slider block, or a hatched line), blocks, path arcs.  Vector entities: arrows (thick
+Mechanism entities: pivots (ground hatching turned away from their links), guides (rails
+either side of a slider block, or a hatched line), blocks, path arcs (bars, plates and link numbers in
+:mod:`drafting.render.link_drawers`).  Vector entities: arrows (thick
 shaft, filled arrowhead with its apex at the tip), trial lines (thin, run past every point of the diagram
 on them), images (light grey), points.  Drafting entities: circles (long-dash-dot centre lines and
 pitch/base circles, thin loci, thick outlines), curves, segments; the drafting annotations (dimensions,
@@ -16,7 +17,7 @@ from typing import Sequence
 
 from constructions.geometry import Line as ModelLine, Vec, intersect_lines
 from constructions.tolerance import Tolerance
-from constructions.entities import (Arc, Arrow, Bar, Block, Circle as CircleEntity, Curve, Entity, Guide, Pivot, Plate, Point, Polygon as PolygonEntity, Role, ScaleBar, Segment, TrialLine)
+from constructions.entities import (Arc, Arrow, Bar, Block, Circle as CircleEntity, Curve, Entity, Guide, Pivot, Point, Polygon as PolygonEntity, Role, ScaleBar, Segment, TrialLine)
 
 from .drawing import (BLOCKS, DOT_R, DOTS, HEADS, IMAGES, LINKS, PATHS, PIN_R, PINS,
                       SHAFTS, THICK_STYLES, TRIALS, DrawContext, Drawing, LabelReq, Pt, _dist, arrowhead, drawer,
@@ -26,6 +27,7 @@ from .style import area_style_for, line_style_for
 from .symbols import BLOCK_H, BLOCK_L, ground_side, ground_symbol, hatching
 from .transform import Transform
 from . import annotations  # noqa: F401  (registers the drawers of dimensions, angle marks and notes)
+from . import link_drawers  # noqa: F401  (registers the drawers of bars, plates and link numbers)
 
 TRIAL_EXT = 10.0        # trial lines run 10 mm past the furthest point of their diagram on them
 TRIAL_LONE = 20.0
@@ -81,19 +83,6 @@ def draw_pins(ctx: DrawContext) -> None:
 
 
 # ---- the mechanism --------------------------------------------------------------------------------
-
-@drawer(Bar, phase=0, points=lambda e: (e.start, e.end))
-def draw_bar(e: Bar, ctx: DrawContext) -> None:
-    a, b = ctx.T(e.start), ctx.T(e.end)
-    ctx.d.add(LINKS, Line(*a, *b, line_style_for(e.role), e.name))
-    ctx.add_pin(a, e.name)
-    ctx.add_pin(b, e.name)
-
-
-@drawer(Plate, phase=0, points=lambda e: e.vertices)
-def draw_plate(e: Plate, ctx: DrawContext) -> None:
-    ctx.d.add(LINKS, Polygon(tuple(ctx.T(v) for v in e.vertices), "link", e.name))
-
 
 @drawer(Block, phase=0, points=lambda e: (e.at,))
 def draw_block(e: Block, ctx: DrawContext) -> None:
@@ -213,7 +202,7 @@ def draw_trial(e: TrialLine, ctx: DrawContext) -> None:
         ctx.d.labels.append(LabelReq("trial", e.label, b, False, e.name, other=a))
 
 
-_ARROW_OWN_STYLE = frozenset({Role.KNOWN, Role.RESULT, Role.LOAD})
+_ARROW_OWN_STYLE = frozenset({Role.KNOWN, Role.RESULT, Role.LOAD, Role.DIMENSION})
 
 
 @drawer(Arrow, points=lambda e: (e.tail, e.tip))
@@ -227,7 +216,7 @@ def draw_arrow(e: Arrow, ctx: DrawContext) -> None:
     ctx.d.layers.setdefault(HEADS, []).append(head)
     ctx.d.hard.append(Rect.bounding(head.points))
     if e.label:
-        ctx.d.labels.append(LabelReq("arrow", e.label, tip, False, e.name, other=tail))
+        ctx.d.labels.append(LabelReq("arrow", ctx.text(e, e.label), tip, False, e.name, other=tail))
 
 
 @drawer(Point, phase=2, points=lambda e: (e.at,))

@@ -26,6 +26,7 @@ if TYPE_CHECKING:
     from constructions.sweep import Sweep
 
 from ..registry import Analysis, Family
+from .conventions import conventions
 from .given import given_lines
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, LinkageScene, assembly_check, read_linkage
@@ -229,7 +230,9 @@ def _analytic_values(study):
 
 
 def _construction(study) -> Construction:
-    c = study.get("position").construction
+    s, pose = study.scene, study.get("position")
+    alpha = s.alpha if s.torque is None and study.computed("acceleration") is not None else None
+    c = pose.construction + conventions(s.mechanism, pose, s.omega, alpha)
     for name in ("velocity", "acceleration", "forces", "instant centres"):
         r = study.computed(name)
         if r is not None:
