@@ -257,3 +257,32 @@ class Chart(Entity):
     x_label: str
     series: tuple[Series, ...]
     bands: tuple[tuple[float, float, str], ...] = ()     # (low, high, label) shaded y ranges
+
+
+@dataclass(frozen=True, slots=True)
+class BodyOutline(Entity):
+    """A body drawn free of the others, as a free-body diagram draws it: thin against its forces -- a slender
+    link around the segment ``outline`` (two points), a shaded plate (three or more), or a block on the
+    point ``outline[0]`` along ``direction``; each of ``pins`` (name, point) a small circle, each of
+    ``points`` a dot, all lettered; ``caption`` says what the body is ("link 3: two-force member"), written
+    under ``caption_at`` (the middle of the bottom of the body with its forces)."""
+
+    outline: tuple[Vec, ...]
+    pins: tuple[tuple[str, Vec], ...]
+    points: tuple[tuple[str, Vec], ...]
+    link: int
+    direction: Vec | None = None
+    caption: str = ""
+    caption_at: Vec | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class MomentArc(Entity):
+    """A couple or torque on a body: an arc of ``radius`` about ``centre`` from ``start_angle``, three
+    quarters of a turn in the sense of ``moment`` (CCW positive), its arrowhead at the end, and ``label``."""
+
+    centre: Vec
+    radius: float
+    start_angle: float
+    moment: float
+    label: str = ""

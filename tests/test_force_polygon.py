@@ -22,7 +22,7 @@ from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Sl
 from constructions.mechanisms.pose import locate
 from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.velocity import velocity_polygon
-from constructions.entities import AngleMark, Arrow, Dimension, Point, Segment, TrialLine
+from constructions.entities import Arrow, BodyOutline, Dimension, MomentArc, Point, Segment
 from mechanisms import four_bar, quick_return, rocker_with_slot, slot_and_guide
 from strategies import angles, coords, four_bars, sizes, slider_cranks, speeds, transmission
 
@@ -69,7 +69,18 @@ def test_static_sample_agrees_with_the_equilibrium_system_and_virtual_work():
 
 def _torque_arcs(fa):
     return [e for st in fa.construction.steps for e in st.entities
-            if isinstance(e, AngleMark) and e.diagram.kind == "free-body" and e.text == "T_2"]
+            if isinstance(e, MomentArc) and e.diagram.kind == "free-body" and e.label == "T_2"]
+
+
+def _free_body(fa, body: str) -> list:
+    """The entities drawn on the free body of ``body`` ("link 2")."""
+    return [e for e in fa.construction.entities() if e.diagram.kind == "free-body" and e.name.startswith(f"fbd {body}:")]
+
+
+def _shift(fa, body: str, pose, pin: str) -> Vec:
+    """How far the free body of ``body`` stands from the body in the mechanism (read at its pin ``pin``)."""
+    outline = next(e for e in _free_body(fa, body) if isinstance(e, BodyOutline))
+    return dict(outline.pins)[pin] - pose[pin]
 
 
 @pytest.mark.parametrize("angle_deg", [45.0, 100.0, 250.0])
@@ -80,12 +91,13 @@ def test_the_driving_torque_is_drawn_on_the_crank_s_free_body(angle_deg):
     (arc,) = _torque_arcs(fa)
     pose = locate(m, theta)
     arm = pose["B"] - pose["O2"]
-    assert arc.vertex == pose["O2"] and arc.diagram.name == "link 2" and fa.torque != 0.0
-    span = arc.end_angle - arc.start_angle
-    assert span == pytest.approx(math.copysign(1.5 * math.pi, fa.torque), rel=1e-12)
+    assert arc.centre == pose["O2"] + _shift(fa, "link 2", pose, "O2") and fa.torque != 0.0
+    assert arc.moment == fa.torque                                  # its sense is the torque's
+    span = math.copysign(1.5 * math.pi, arc.moment)
+    end = arc.start_angle + span
     # the crank's direction lies in the quarter the arc leaves open
-    off = (math.atan2(arm.y, arm.x) - arc.end_angle) % (2 * math.pi) if span > 0 else \
-        (arc.end_angle - math.atan2(arm.y, arm.x)) % (2 * math.pi)
+    off = (math.atan2(arm.y, arm.x) - end) % (2 * math.pi) if span > 0 else \
+        (end - math.atan2(arm.y, arm.x)) % (2 * math.pi)
     assert off == pytest.approx(math.pi / 4, abs=1e-9)
 
 
@@ -112,13 +124,13 @@ def test_three_force_member_by_concurrency():
     from constructions.mechanisms.model import Attached
     m = four_bar((0, 0), (0.12, 0.01), 0.04, 0.13, 0.09, 1, (Attached("E", 2, "B", 0.08, -0.4),))
     fa = solve(m, 1.2, Effects(loads=(Load("P", 2, "E", Vec(10.0, -30.0)),)))
-    lines = [e for e in fa.construction.entities() if isinstance(e, TrialLine) and e.diagram.kind == "free-body"
-             and e.diagram.name == "link 2"]
-    meet = next(e for e in fa.construction.entities() if isinstance(e, Point) and e.label == "I_2")
-    assert len(lines) == 3
+    lines = [e for e in _free_body(fa, "link 2") if isinstance(e, Segment)]
+    meet = next(e for e in fa.construction.entities() if isinstance(e, Point) and e.label == "I (link 2)")
+    assert len(lines) == 3 and meet.diagram.kind == "free-body"
     for ln in lines:          # the load's line, the two-force line and the third force all pass through I
-        d = ln.direction.unit()
-        assert abs(d.cross(meet.at - ln.through)) < 1e-12
+        d = (ln.end - ln.start).unit()
+        assert abs(d.cross(meet.at - ln.start)) < 1e-12
+        assert (meet.at - ln.start).dot(d) > 0 and (ln.end - meet.at).dot(d) > 0      # and run past it
     words = " ".join(s.words for s in fa.construction.steps)
     assert "three-force member" in words and "Link 3 carries no load" in words
 
@@ -298,9 +310,10 @@ def test_slotted_lever_checked_by_hand(block):
     if block:
         assert got["F_21"].distance_to(n * 20.0) < 1e-12     # the block on the crank pin: the same push
     assert fa.conditions["links 3, 2" if block else "link 3"] == pytest.approx(1.0, rel=1e-12)   # arm = O2A
-    fbd = [e for e in fa.construction.entities() if e.diagram.kind == "free-body" and e.diagram.name == "link 3"]
+    fbd = _free_body(fa, "link 3")
     h = next(e for e in fbd if isinstance(e, Dimension))
-    assert h.start == Vec(0.0, 0.0) and h.end.distance_to(Vec(0.05, 0.1)) < 1e-15      # O2 to the foot at A
+    shift = _shift(fa, "link 3", locate(m, 0.0), "O2")       # O2 to the foot at A, moved with the free body
+    assert h.start == Vec(0.0, 0.0) + shift and (h.end - shift).distance_to(Vec(0.05, 0.1)) < 1e-15
     assert any(isinstance(e, Segment) and "slot" in e.name for e in fbd)
     step = next(s for s in fa.construction.steps if "Moments about O2 on link 3" in s.words)
     assert dict(step.values)["f"].value == pytest.approx(20.0, rel=1e-12)

@@ -5,18 +5,13 @@ handed it, and the driving torque is their resultant times its perpendicular dis
 
 from __future__ import annotations
 
-import math
 
 from ..mechanisms.assembly import CrankTip
-from ..entities import AngleMark, Arrow, Diagram, Dimension, Point, Role, ScaleBar, TrialLine
+from ..entities import Arrow, Diagram, Dimension, Point, Role, ScaleBar, TrialLine
 from ..record import StepKind, Value
 from ..tolerance import DEAD_CENTRE_ARM, DEAD_CENTRE_SINE, DECISION
 from .bodies import force_name, torque_name
 from .board import ORIGIN, Drawing, body_label, force_value, resultant
-
-
-TORQUE_ARC = 0.35
-"""The radius of the driving torque's arc on the crank's free body, as a fraction of the crank."""
 
 
 def driving_crank(d: Drawing, crank: CrankTip) -> None:
@@ -70,14 +65,6 @@ def driving_crank(d: Drawing, crank: CrankTip) -> None:
                  + (" (with the couples on the crank)" if cpl else "")
                  + f" = $r \u00d7 $h = $t {sense}.")
         vals = {"r": force_value(r.norm()), "h": Value("length", h), "t": Value("torque", abs(torque))}
-        arm = pos[crank.tip] - pos[o]
-        if torque and arm.norm() > 0:
-            # on the crank's free body, an arc about its pivot turning the torque's way, open around the crank
-            a = math.atan2(arm.y, arm.x)
-            start = a + math.copysign(math.pi / 4, torque)
-            ents.append(AngleMark(f"fbd {body_label(m, n)}: {t_name}", Role.RESULT, fb, pos[o],
-                                  TORQUE_ARC * arm.norm(), start, start + math.copysign(1.5 * math.pi, torque),
-                                  t_name))
     d.steps.append((words, tuple(ents), None, vals, StepKind.ANSWER))
     d.torque = torque
     d.record_pin(o, d.frame, n, -r)

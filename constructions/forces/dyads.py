@@ -57,12 +57,12 @@ def rrr(d: Drawing, step: TwoCircles) -> None:
                 fb = Diagram("free-body", body_label(d.m, loaded))
                 d.steps.append((
                     f"Link {loaded} is a three-force member: the line of its load and the line of the force "
-                    f"from link {free} (along {f_outer}{j}) meet at I_{loaded}, so {l_name} passes through "
-                    f"{l_outer} and I_{loaded}.",
+                    f"from link {free} (along {f_outer}{j}) meet at one point, I (link {loaded}), so {l_name} passes "
+                    f"through {l_outer} and I.",
                     (TrialLine(f"fbd {body_label(d.m, loaded)}: load line", Role.TRIAL, fb, at, r, None),
                      TrialLine(f"fbd {body_label(d.m, loaded)}: two-force line", Role.TRIAL, fb, pos[j], along, None),
                      TrialLine(f"fbd {body_label(d.m, loaded)}: third line", Role.TRIAL, fb, pos[l_outer], third, None),
-                     Point(f"fbd {body_label(d.m, loaded)}: I", Role.LABEL, fb, conc, f"I_{loaded}")),
+                     Point(f"fbd {body_label(d.m, loaded)}: I", Role.LABEL, fb, conc, f"I (link {loaded})")),
                     None, {}, StepKind.CONSTRUCTION))
                 n_free_on_loaded = force_name(free, loaded)
                 c = close(d, key, what, [(x.label, x.vector) for x in d.known(loaded)],

@@ -103,7 +103,7 @@ class _Construction(BodyDrawing):
         self.then(f"Three forces hold the {b.name}: R, {other.name} and the pin force {pin.name}. R meets the line "
                   f"of {other.name} at I; three forces in equilibrium meet in one point, so {pin.name} acts along "
                   f"{pin.at}I.",
-                  Point("I", Role.LABEL, SPACE, I, "I"),
+                  Point("I", Role.LABEL, SPACE, I, f"I ({b.name})"),
                   TrialLine(f"line {pin.name}", Role.TRIAL, SPACE, A, I - A, pin.name))
         self.lay_off(VectorEquation((term("R", True, True), term(other.name, False, True),
                                      term(pin.name, False, True)), ()), ub)

@@ -38,14 +38,15 @@ from ..mechanisms.topology import Contact, Pin, frame_number
 from ..geometry import Vec
 from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines,
                                    assembly_plan)
-from ..mechanisms.model import Mechanism, slide_line
+from ..mechanisms.model import Mechanism
 from ..mechanisms.pose import Pose
 from ..quantities import Measured
-from ..entities import Arrow, Bar, Block, Curve, Diagram, Plate, Role, Segment
+from ..entities import Arrow, Curve, Diagram, Role, Segment
 from ..record import Construction, StepKind, Value
 from .bodies import force_name, torque_name
 from .board import Drawing, Force, ForcesNotDrawn, body_label, force_value, known_forces, resultant
 from .crank import driving_crank
+from .free_body_links import free_bodies
 from .dyads import rrp, rrr
 from .effects import Effects, Spring
 from .slotted import prp, rpr
@@ -126,48 +127,7 @@ def force_analysis(m: Mechanism, pose: Pose, effects: Effects, *, velocity=None,
     return _record(d)
 
 
-# -- free-body diagrams and the record ---------------------------------------------------------------
-
-FBD_LONGEST = 0.6
-"""The longest force arrow on a free-body diagram, as a fraction of the body's size (arrows are not to scale
-on a free body; their magnitudes are written on the force polygons)."""
-
-
-def _free_bodies(d: Drawing) -> list[tuple]:
-    m, pos = d.m, d.pos
-    blocks = m.blocks()
-    out = []
-    order = [k.number for k in m.links] + sorted(blocks)
-    for body in order:
-        forces = d.forces.get(body, [])
-        dg = Diagram("free-body", body_label(m, body))
-        ents: list = []
-        if body in blocks:
-            sl = blocks[body]
-            ents.append(Block(f"fbd {dg.name}: body", Role.GIVEN, dg, pos[sl.joint], slide_line(m, sl, pos).direction,
-                              body))
-        else:
-            pts = [pos[x] for x in m.points_of(body)]
-            if len(pts) == 2:
-                ents.append(Bar(f"fbd {dg.name}: body", Role.GIVEN, dg, pts[0], pts[1], body))
-            else:
-                ents.append(Plate(f"fbd {dg.name}: body", Role.GIVEN, dg, tuple(pts), body))
-        big = max((x.vector.norm() for x in forces), default=0.0)
-        pts = [pos[p] for p in (m.points_of(body) if body not in blocks else ())]
-        extent = max((p.distance_to(q) for p in pts for q in pts), default=0.0)
-        size = max(extent, 0.25 * m.size)
-        for i, x in enumerate(forces):
-            mag = x.vector.norm()
-            if mag == 0.0 or big == 0.0:
-                continue
-            length = size * FBD_LONGEST * max(0.35, mag / big)
-            role = Role.LOAD if x.kind in ("load", "weight", "inertia", "spring") else Role.RESULT
-            tail = x.at - x.vector.unit() * length
-            ents.append(Arrow(f"fbd {dg.name}: {x.label} {i}", role, dg, tail, x.at, x.label))
-        labels = ", ".join(x.label for x in forces) or "no force"
-        out.append((f"Free-body diagram of {dg.name}: {labels} (arrows not to scale).", tuple(ents)))
-    return out
-
+# -- the record ---------------------------------------------------------------------------------------
 
 SPRING_COILS = 6
 """The zigzags of a spring drawn on the space diagram."""
@@ -236,9 +196,10 @@ def _record(d: Drawing) -> ForceAnalysis:
                 rec = rec.then(f"Inertia of {body_label(m, ms.body)} (D'Alembert): neither its centre of gravity "
                                f"{ms.centre} nor its turning accelerates: no inertia force or couple.",
                                kind=StepKind.GIVEN)
+    bodies = free_bodies(d)                       # (moves the lines the constructions drew on the free bodies)
     for words, entities, eq, values, kind in d.steps:
         rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
-    for words, ents in _free_bodies(d):
+    for words, ents in bodies:
         rec = rec.then(words, *ents, kind=StepKind.CONSTRUCTION)
     acc_cond = d.acceleration.worst_condition if d.acceleration is not None else 1.0
     return ForceAnalysis(rec, dict(d.pins), dict(d.contacts), d.torque, dict(d.cond), tuple(d.warnings),
