@@ -26,6 +26,7 @@ from .style import area_style_for, line_style_for
 from .symbols import BLOCK_H, BLOCK_L, ground_side, ground_symbol, hatching
 from .transform import Transform
 from . import annotations  # noqa: F401  (registers the drawers of dimensions, angle marks and notes)
+from . import machine_drawers  # noqa: F401  (registers the drawers of rotation arrows and followers)
 
 TRIAL_EXT = 10.0        # trial lines run 10 mm past the furthest point of their diagram on them
 TRIAL_LONE = 20.0
