@@ -283,7 +283,7 @@ def _translating_steps(rec, f, program, cp, th, ev, step, opposite):
         if i % label_every == 0:
             q = Vec(float(foot[0, i] + ux[i] * reach * 1.25), float(foot[1, i] + uy[i] * reach * 1.25))
             if i == 0:                             # beside the follower's stem drawn on line 0
-                q = Vec(q.x - sg * (0.5 * (rr if f.kind == ROLLER else 0.12 * rb) + 0.1 * reach), q.y)
+                q = Vec(q.x - sg * (0.5 * (rr if f.kind == ROLLER else 0.12 * rb) + 0.15 * reach), q.y)
             notes.append(Note(f"station {i}", Role.LABEL, CAM, q, f"{i}"))
     kind_lines = "radial lines from O" if not e or f.kind == FLAT else "lines tangent to the offset circle"
     rec = rec.then(f"Draw the {n} follower lines ({kind_lines}) every $d, laid out {opposite} -- opposite to the "
