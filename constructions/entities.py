@@ -286,3 +286,35 @@ class MomentArc(Entity):
     start_angle: float
     moment: float
     label: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class RotationArrow(Entity):
+    """A body's sense of rotation: an arc of ``radius`` about ``center`` from ``start_angle`` through
+    ``sweep`` (radians; positive counter-clockwise, the sense of the rotation), its arrowhead at the end,
+    and its ``label`` (omega)."""
+
+    center: Vec
+    radius: float
+    start_angle: float
+    sweep: float
+    label: str = "\u03c9"
+
+
+@dataclass(frozen=True, slots=True)
+class FollowerBody(Entity):
+    """A translating cam follower as drawn at one station, in true size: its end at ``at`` (a roller's
+    centre, a knife's edge, the middle of a flat face) on its axis ``direction`` (from the cam out), of
+    ``kind`` "knife", "roller" or "flat" (``radius``: the roller's; ``face``: half the flat face), its stem
+    ``width`` wide running ``stem`` from the end, guided over ``guide`` centred ``guide_at`` along the axis
+    from the end."""
+
+    at: Vec
+    direction: Vec
+    kind: str
+    stem: float
+    width: float
+    guide_at: float
+    guide: float
+    radius: float = 0.0
+    face: float = 0.0

@@ -13,7 +13,8 @@ import math
 
 import numpy as np
 
-from ..entities import Chart, Diagram, Role, Series
+from ..entities import Chart, Curve, Diagram, Note, Point, Role, Segment, Series
+from ..geometry import Vec
 from ..tolerance import ONE_SIDED_INSET, SVAJ_JUMP_REL
 from .laws import Program
 from .search import segment_breaks
@@ -90,4 +91,39 @@ def _fill(x, y):
     return tuple(xx), tuple(yy)
 
 
-__all__ = ["svaj_charts", "svaj_series", "chart_diagram"]
+
+
+def displacement_diagram(program: Program, stations, table, scale: float, label_every: int, length: float,
+                         origin: Vec, diagram: Diagram, axis_x: float | None = None) -> list:
+    """The displacement diagram as the notes draw it beside the cam: the cam angle laid out from
+    ``origin`` along an abscissa ``length`` long, divided into the construction's stations and numbered as
+    on the cam (every ``label_every``-th), the lift ``table`` (times ``scale``: 1 for a translating
+    follower, the arm's length for a swing) set up on each station's line and the curve of the program
+    through their tops.  With ``axis_x`` (the follower's line at station 0, parallel to the station lines)
+    the largest lift is projected across to it."""
+    n = len(stations)
+    x_of = length / (2 * math.pi)
+    tick = 0.02 * length
+    ox, oy = origin.x, origin.y
+    out: list = [Segment("displacement axis", Role.PATH, diagram, origin, Vec(ox + length, oy))]
+    for i in range(n + 1):
+        x, y = ox + i * length / n, float(table[i % n]) * scale
+        out.append(Segment(f"station tick {i}", Role.PATH, diagram, Vec(x, oy), Vec(x, oy - tick)))
+        if abs(y) > 1e-9 * length:
+            out.append(Segment(f"station line {i}", Role.AUXILIARY, diagram, Vec(x, oy), Vec(x, oy + y)))
+            out.append(Point(f"lift {i}", Role.PATH, diagram, Vec(x, oy + y)))
+        if i % label_every == 0:
+            out.append(Note(f"station number {i}", Role.LABEL, diagram, Vec(x, oy - 3.5 * tick), f"{i}"))
+    xs, ys = svaj_series(program, None)
+    pts = tuple(Vec(ox + a * x_of, oy + b * scale) for a, b in zip(xs, ys[0]) if math.isfinite(b))
+    out.append(Curve("displacement curve", Role.RESULT, diagram, pts))
+    out.append(Note("displacement title", Role.LABEL, diagram, Vec(ox + length / 2, oy - 8 * tick),
+                    "displacement diagram"))
+    k = int(np.argmax(np.asarray(table)))
+    top = float(table[k]) * scale
+    if axis_x is not None and top > 0:
+        out.append(Segment("lift projection", Role.AUXILIARY, diagram, Vec(ox + k * length / n, oy + top),
+                           Vec(axis_x, oy + top)))
+    return out
+
+__all__ = ["svaj_charts", "svaj_series", "chart_diagram", "displacement_diagram"]

@@ -27,15 +27,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..entities import Circle, Curve, Diagram, Note, Pivot, Point, Role, Segment
+from ..entities import Circle, Curve, Diagram, Note, Pivot, Point, Role, RotationArrow, Segment
 from ..geometry import Vec
 from ..quantities import Measured
 from ..record import Construction, StepKind, Value
 from ..tolerance import STATION_REL
-from .charts import svaj_charts
+from .charts import displacement_diagram, svaj_charts
 from .laws import DWELL, TAU, Program
 from .envelope import evaluate
-from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
+from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower, drawn_follower
 from .profile import CamProfile, analyse
 
 CAM = Diagram("cam", "profile")
@@ -159,6 +159,16 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
                FLAT: "tangent to every face line (their envelope; its contact points marked)",
                OSC_FLAT: "tangent to every face line (their envelope; its contact points marked)"}[f.kind]
     rec = rec.then(f"Draw the cam profile {tangent}.", curve, *marks)
+    rec = _follower_step(rec, f, program, cp, centres, turn)
+    label_every = max(1, n // 12)
+    ell = f.arm_length if osc else f.pivot_distance if swing else 1.0
+    rec = rec.then("Draw the displacement diagram: lay the cam angle off along a line, divide it into the same "
+                   f"{n} portions numbered as the stations on the cam, and set up on each station's line the "
+                   + ("swing drawn as the arc it sweeps at radius $l" if swing else "tabulated lift s_i")
+                   + "; the curve through their tops is the follower's motion, and the lift at each numbered "
+                   "station is the one marked on the cam's follower line of the same number.",
+                   *_displacement(program, f, th, ev.s, ell, label_every * math.ceil(n / (7 * label_every))),
+                   values={"l": Value("length", ell)} if swing else None)
 
     # answers read off the construction
     measured: list[Measured] = []
@@ -224,6 +234,37 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     return CamConstruction(rec, th, ev.s, centres, contacts, cp, measured, names)
 
 
+def _displacement(program, f, th, s, ell, label_every):
+    """The displacement diagram beside the cam, to the right of everything drawn round it: a translating
+    follower's on the level of its end at zero lift (so a lift projects straight across to the follower's
+    line at station 0), a swing's beyond the pivot circle."""
+    if f.kind in (OSCILLATING, OSC_FLAT):          # beyond the pivot circle's numbers, a little above O
+        a = f.pivot_distance
+        return displacement_diagram(program, th, s, ell, label_every, 1.3 * a, Vec(1.15 * a, 0.1 * a), CAM)
+    reach = (f.base_radius if f.kind == FLAT else f.prime_radius) + program.lift
+    y0 = f.base_radius if f.kind == FLAT else f.d0
+    return displacement_diagram(program, th, s, ell, label_every, 1.8 * reach, Vec(1.35 * reach, y0), CAM,
+                                0.0 if f.kind == FLAT else f.offset)
+
+
+def _follower_step(rec, f, program, cp, centres, turn):
+    """The follower drawn in place at station 0 and the cam's sense of rotation about O."""
+    rb, sg = f.base_radius, f.sense
+    reach = (f.prime_radius if f.kind in (ROLLER, OSCILLATING, KNIFE) else rb) + program.lift
+    face = None
+    if f.kind == FLAT:
+        face = 1.1 * max(abs(v) for v in cp.face_width)
+    elif f.kind == OSC_FLAT:
+        f0 = next(e for e in rec.entities() if e.name == "face 0")
+        face = (f0.start, f0.end)
+    parts = drawn_follower(f, CAM, centres[:, 0], reach, pivot=(f.pivot_distance, 0.0), face=face)
+    start = math.radians(200.0 if sg > 0 else 290.0)
+    arrow = RotationArrow("cam rotation", Role.GIVEN, CAM, Vec(0.0, 0.0), 0.5 * rb, start, sg * math.radians(90.0))
+    what = "on its arm about the pivot A" if f.kind in (OSCILLATING, OSC_FLAT) else "on its stem in its guide"
+    return rec.then(f"Draw the follower in place at station 0, {what}, in true size, and the cam's rotation "
+                    f"\u03c9 ({turn}) about O.", *parts, arrow)
+
+
 def _translating_steps(rec, f, program, cp, th, ev, step, opposite):
     n, sg = len(th), f.sense
     rb, rr, e = f.base_radius, f.roller_radius, f.offset
@@ -240,12 +281,14 @@ def _translating_steps(rec, f, program, cp, th, ev, step, opposite):
         p1 = Vec(float(foot[0, i] + ux[i] * reach * 1.12), float(foot[1, i] + uy[i] * reach * 1.12))
         lines.append(Segment(f"line {i}", Role.AUXILIARY, CAM, p0, p1))
         if i % label_every == 0:
-            q = Vec(float(foot[0, i] + ux[i] * reach * 1.2), float(foot[1, i] + uy[i] * reach * 1.2))
-            notes.append(Note(f"station {i}", Role.LABEL, CAM, q, f"{_deg(th[i])}\u00b0"))
+            q = Vec(float(foot[0, i] + ux[i] * reach * 1.25), float(foot[1, i] + uy[i] * reach * 1.25))
+            if i == 0:                             # beside the follower's stem drawn on line 0
+                q = Vec(q.x - sg * (0.5 * (rr if f.kind == ROLLER else 0.12 * rb) + 0.15 * reach), q.y)
+            notes.append(Note(f"station {i}", Role.LABEL, CAM, q, f"{i}"))
     kind_lines = "radial lines from O" if not e or f.kind == FLAT else "lines tangent to the offset circle"
     rec = rec.then(f"Draw the {n} follower lines ({kind_lines}) every $d, laid out {opposite} -- opposite to the "
-                   f"cam's rotation, the cam held still and the follower walked round it; station 0 is the "
-                   f"follower's line at 0 deg.", *lines, *notes, values={"d": Value("angle", step)})
+                   f"cam's rotation, the cam held still and the follower walked round it; the stations are numbered "
+                   f"0 to {n - 1} from the follower's line at 0 deg.", *lines, *notes, values={"d": Value("angle", step)})
 
     # 7: roller circles / face lines / edges
     centres = ev.pitch if f.kind != FLAT else np.stack([(rb + ev.s) * ux, (rb + ev.s) * uy])
@@ -305,7 +348,7 @@ def _pivots(rec, f, th, step, opposite):
     for i in range(n):
         pts.append(Point(f"A{i}", Role.PATH, CAM, _v(A[:, i])))
         if i % label_every == 0:
-            notes.append(Note(f"station {i}", Role.LABEL, CAM, _v(A[:, i] * 1.08), f"{_deg(th[i])}\u00b0"))
+            notes.append(Note(f"station {i}", Role.LABEL, CAM, _v(A[:, i] * 1.08), f"{i}"))
     rec = rec.then(f"Draw the pivot circle of radius $a about O and mark the arm's pivot A_i on it every $d, laid out "
                    f"{opposite} -- opposite to the cam's rotation; A_0 is the pivot at 0 deg.",
                    Circle("pivot circle", Role.CENTRE_LINE, CAM, Vec(0.0, 0.0), f.pivot_distance, "pivot circle"),

@@ -12,6 +12,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..entities import Circle, FollowerBody, Pivot, Role, Segment
+from ..geometry import Vec
+
 KNIFE, ROLLER, FLAT, OSCILLATING = "knife-edge", "roller", "flat-faced", "oscillating roller"
 OSC_FLAT = "oscillating flat-faced"
 FOLLOWERS = (KNIFE, ROLLER, FLAT, OSCILLATING, OSC_FLAT)
@@ -113,3 +116,28 @@ def face_terms(f: Follower, s, d1, d2=None):
         rho = c + a * (sg * cb * d2 - sb * d1 * d1 * k) / (k * k * k)
     return beta, c, t, rho, -k
 
+
+
+def drawn_follower(f: Follower, diagram, end, reach: float, pivot=None, face=None) -> list:
+    """The follower as drawn at station 0, in true size: a translating one's stem, end and guide with its
+    end (roller centre, knife edge, foot of the face) at ``end``; an oscillating one's arm about its pivot
+    ``pivot`` to the roller centre ``end`` or along the face ``face`` (its two ends, Vecs).  ``reach`` is the
+    furthest the follower's end gets from the cam centre (the stem and its guide stand beyond it)."""
+    end = Vec(float(end[0]), float(end[1]))
+    if f.kind == OSCILLATING:
+        A = Vec(float(pivot[0]), float(pivot[1]))
+        return [Pivot("follower pivot", Role.GIVEN, diagram, A, "A"),
+                Segment("follower arm", Role.GIVEN, diagram, A, end),
+                Circle("follower roller", Role.GIVEN, diagram, end, f.roller_radius)]
+    if f.kind == OSC_FLAT:
+        A = Vec(float(pivot[0]), float(pivot[1]))
+        p0, p1 = face
+        return [Pivot("follower pivot", Role.GIVEN, diagram, A, "A"),
+                Segment("follower arm", Role.GIVEN, diagram, A, p0),
+                Segment("follower face", Role.GIVEN, diagram, p0, p1)]
+    kind = {ROLLER: "roller", KNIFE: "knife", FLAT: "flat"}[f.kind]
+    width = f.roller_radius if f.kind == ROLLER else 0.12 * f.base_radius
+    top = 1.5 * reach - end.y
+    return [FollowerBody("follower", Role.GIVEN, diagram, end, Vec(0.0, 1.0), kind, top, width,
+                         1.3 * reach - end.y, 0.22 * reach, radius=f.roller_radius,
+                         face=0.0 if face is None else face)]

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 from ..geometry import Vec
 from ..quantities import Measured
-from ..entities import AngleMark, Arc, Circle, Curve, Diagram, Dimension, Pivot, Point, Role, Segment
+from ..entities import AngleMark, Arc, Circle, Curve, Diagram, Dimension, Pivot, Point, Role, RotationArrow, Segment
 from ..record import Construction, StepKind, Value
 from .contact import AT_LIMIT, CLEAR, INTERFERENCE, ContactGeometry, Pair, contact_geometry
 from .flank import FLANK_POINTS
@@ -85,6 +85,13 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
         words = (f"Given: gear 1 ({p1.teeth} teeth, the driver, turning clockwise) and {name2} ({g2.teeth} teeth), module "
                  f"$m, pressure angle $phi, centre distance O1O2 = $C"
                  + (" (the standard distance)." if pair.centre_distance is None else "."))
+    given.append(RotationArrow("rotation 1", Role.GIVEN, SPACE, O1, 0.55 * p1.pitch_radius, math.radians(250.0),
+                               -math.radians(80.0), "ω_1"))
+    if not pair.rack:            # an external pair turns in opposite senses, an internal one in the same
+        s2 = -1.0 if pair.internal else 1.0
+        given.append(RotationArrow("rotation 2", Role.GIVEN, SPACE, pts["O2"], 0.55 * g2.pitch_radius,
+                                   math.radians(250.0 if pair.internal else 290.0), s2 * math.radians(80.0),
+                                   "ω_2"))
     rec = rec.then(words, *given, values=vals, kind=StepKind.GIVEN)
     # 2 pitch circles and the pitch point
     r1w, r2w = geo.working_radii
@@ -121,8 +128,11 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     mark_r = 0.45 * h
     tangent_len = min(tangent_len, 0.9 * h)
     ents = [Segment("common tangent", Role.AUXILIARY, DETAIL, P + Vec(0, -tangent_len), P + Vec(0, tangent_len)),
-            Segment("line of action", Role.PATH, SPACE, P + d * lo, P + d * hi, "line of action"),
-            Segment("detail line of action", Role.PATH, DETAIL, P + d * (min(near) - 0.1 * h), P + d * (max(near) + 0.1 * h)),
+            # labelled in the detail, where the line is long enough to carry its name (at 1:5 the label of a
+            # line a few mm long lands by the line of centres)
+            Segment("line of action", Role.PATH, SPACE, P + d * lo, P + d * hi),
+            Segment("detail line of action", Role.PATH, DETAIL, P + d * (max(near) + 0.1 * h),
+                    P + d * (min(near) - 0.1 * h), "line of action"),
             AngleMark("pressure angle", Role.DIMENSION, DETAIL, P, mark_r, -math.pi / 2, -math.pi / 2 + phi_w,
                       "\u03c6'" if pair.centre_distance is not None and not pair.rack else "\u03c6")]
     vals = {"phiw": _v("angle", phi_w)}

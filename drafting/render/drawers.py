@@ -29,6 +29,7 @@ from .transform import Transform
 from . import annotations  # noqa: F401  (registers the drawers of dimensions, angle marks and notes)
 from . import body_drawers  # noqa: F401  (registers the drawers of free bodies and couples)
 from . import link_drawers  # noqa: F401  (registers the drawers of bars, plates and link numbers)
+from . import machine_drawers  # noqa: F401  (registers the drawers of rotation arrows and followers)
 
 TRIAL_EXT = 10.0        # trial lines run 10 mm past the furthest point of their diagram on them
 TRIAL_LONE = 20.0
