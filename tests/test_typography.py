@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from drafting.layout.sheet import scale_cell
+from drafting.layout.title_block import scale_cell
 from drafting.render.style import rich
 from drafting.scene.units import format_value, trimmed, with_unit
 from drafting.study.study import display_name

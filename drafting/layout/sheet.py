@@ -44,7 +44,7 @@ from .page_plans import PagePlan
 from .pages import Document, plan_document, slots_of
 from .panel import Panel, PanelCache
 from .panels import VectorPanel, panels_for
-from .title_block import title_block, title_block_height
+from .title_block import scale_cell, title_block, title_block_height
 
 __all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheets", "compose_sheet", "LayoutError"]
 
@@ -312,14 +312,6 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     first = info.sheet if m == 1 else None
     return tuple(_render_page(pp, info, pg, i, m, text_cmds, size, tb_fields, first)
                  for i, pg in enumerate(doc.pages))
-
-
-def scale_cell(scales: Sequence[str]) -> str:
-    """The title block's scale: the one scale of the sheet's drawings, "As shown" when each of several
-    carries its own (in its heading or scale bar), a dash on a sheet of text."""
-    if not scales:
-        return "\u2014 (no drawing on this sheet)"
-    return scales[0] if len(scales) == 1 else "As shown"
 
 
 def _probe_scale(p: Panel) -> str:

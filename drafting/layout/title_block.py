@@ -124,3 +124,11 @@ def title_block(frame: Rect, width: float, title: str, fields: Sequence[Sequence
         out.extend(translated(c, rect.x, y, region) for c in cmds)
         y += h
     return TitleBlock(tuple(out), rect)
+
+
+def scale_cell(scales: Sequence[str]) -> str:
+    """The title block's scale: the one scale of the sheet's drawings, "As shown" when each of several
+    carries its own (in its heading or scale bar), a dash on a sheet of text."""
+    if not scales:
+        return "\u2014 (no drawing on this sheet)"
+    return scales[0] if len(scales) == 1 else "As shown"
