@@ -117,13 +117,13 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     rec = Construction("Cam profile").then(
         f"Given: the follower's motion program -- {'; '.join(parts)}; {what}{off}; base circle radius $rb; the "
         f"cam turns {turn}.", values=vals, kind=StepKind.GIVEN)
-    rec = rec.then(f"Divide the cam angle (360 deg) into N = {n} equal portions of $d.",
+    rec = rec.then(f"Divide the cam angle (360\u00b0) into N = {n} equal portions of $d.",
                    values={"d": Value("angle", step)})
 
     # 2: the table of s
     tvals = {f"s{i}": Value(lk, float(ev.s[i])) for i in range(n)}
     rows = "; ".join(f"{_deg(th[i])}: $s{i}" for i in range(n))
-    rec = rec.then(f"Calculate and tabulate s at every station (cam angle in deg: s) -- {rows}.", values=tvals)
+    rec = rec.then(f"Calculate and tabulate s at every station (cam angle in degrees: s) -- {rows}.", values=tvals)
 
     # 3-5: circles
     rec = rec.then("Draw the base circle of radius $rb about the cam centre O.",
@@ -288,7 +288,7 @@ def _translating_steps(rec, f, program, cp, th, ev, step, opposite):
     kind_lines = "radial lines from O" if not e or f.kind == FLAT else "lines tangent to the offset circle"
     rec = rec.then(f"Draw the {n} follower lines ({kind_lines}) every $d, laid out {opposite} -- opposite to the "
                    f"cam's rotation, the cam held still and the follower walked round it; the stations are numbered "
-                   f"0 to {n - 1} from the follower's line at 0 deg.", *lines, *notes, values={"d": Value("angle", step)})
+                   f"0 to {n - 1} from the follower's line at 0\u00b0.", *lines, *notes, values={"d": Value("angle", step)})
 
     # 7: roller circles / face lines / edges
     centres = ev.pitch if f.kind != FLAT else np.stack([(rb + ev.s) * ux, (rb + ev.s) * uy])
@@ -350,7 +350,7 @@ def _pivots(rec, f, th, step, opposite):
         if i % label_every == 0:
             notes.append(Note(f"station {i}", Role.LABEL, CAM, _v(A[:, i] * 1.08), f"{i}"))
     rec = rec.then(f"Draw the pivot circle of radius $a about O and mark the arm's pivot A_i on it every $d, laid out "
-                   f"{opposite} -- opposite to the cam's rotation; A_0 is the pivot at 0 deg.",
+                   f"{opposite} -- opposite to the cam's rotation; A_0 is the pivot at 0\u00b0.",
                    Circle("pivot circle", Role.CENTRE_LINE, CAM, Vec(0.0, 0.0), f.pivot_distance, "pivot circle"),
                    *pts, *notes, values={"a": Value("length", f.pivot_distance), "d": Value("angle", step)})
     return rec, A

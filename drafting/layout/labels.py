@@ -11,7 +11,7 @@ import math
 
 from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
 from ..render.errors import LayoutError
-from ..render.paper import Command, Rect, Rectangle, Text
+from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
 
 LABEL_PAD = 0.4         # white margin of a label's background
@@ -185,7 +185,29 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         y = centre[1] - (ext.top + ext.bottom) / 2
         out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
+        leader = _leader(req, box)
+        if leader is not None:
+            out.append(leader)
     return out
+
+
+SHORT_ARROW = 5.0
+"""mm: an arrow shorter than this cannot carry its label along it; a leader ties the label to it."""
+
+
+def _leader(req: LabelReq, box: Rect) -> Line | None:
+    """A thin leader from the middle of a short arrow to the nearest point of its label's box, or None for
+    a label that needs none (not an arrow, long enough, or touching it)."""
+    if req.kind != "arrow" or req.other is None:
+        return None
+    (ax, ay), (bx, by) = req.anchor, req.other
+    if math.hypot(ax - bx, ay - by) >= SHORT_ARROW:
+        return None
+    mx, my = (ax + bx) / 2, (ay + by) / 2
+    qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
+    if math.hypot(qx - mx, qy - my) < 0.3:
+        return None
+    return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],

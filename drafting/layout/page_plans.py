@@ -219,7 +219,11 @@ def diagram_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> 
     if fl is not None:
         best = (fl.quality() + (F.h - h_tb - fl.used,), [(fl, F.x, F.top, F.h - h_tb)], tbw, h_tb)
     if paper.orientation == "landscape" and len(panels) >= 2:
-        for wt in dict.fromkeys((min(tbw, 0.5 * F.w), TEXT_COL_MIN)):
+        # the right column half the frame, the narrowest a title block takes, or as wide as the left
+        # column's drawings leave it (a tall mechanism keeps a narrow column, the polygons get the rest)
+        narrowest_left = min(min(min_width(a) for a in arrangements(panels[:k])) for k in range(1, len(panels)))
+        widths = (min(tbw, 0.5 * F.w), TEXT_COL_MIN, min(tbw, F.w - narrowest_left))
+        for wt in dict.fromkeys(w for w in widths if w >= TEXT_COL_MIN):
             h2 = tb_height(wt, panels)
             for k in range(1, len(panels)):
                 left = _best_fill(arrangements(panels[:k]), F.w - wt, F.h, climb=True)

@@ -339,8 +339,9 @@ def rich(markup: str, size: float, *, pivot_digits: bool = False, italic_symbols
     return tuple(_merge([n for sp in spans for n in _names(sp)]))
 
 
-_DASHES = (("->", "\u2192"), (" -- ", " \u2013 "))
-"""ASCII a scene or a step may write, set as the sign it stands for: an arrow, a dash between clauses."""
+_DASHES = ((re.compile(r"->"), "\u2192"), (re.compile(r"(?<![-!])--(?![->])"), "\u2013"))
+"""ASCII a scene or a step may write, set as the sign it stands for: an arrow, a dash between clauses
+(a word of its own when the text is wrapped word by word)."""
 
 
 def _names(span: Span) -> list[Span]:
@@ -351,7 +352,7 @@ def _names(span: Span) -> list[Span]:
     if "-" in span.text:
         text = span.text
         for ascii_, sign in _DASHES:
-            text = text.replace(ascii_, sign)
+            text = ascii_.sub(sign, text)
         span = Span(text, span.size, span.shift, span.italic)
     if not any(c.isdigit() or c == "'" for c in span.text):
         return [span]

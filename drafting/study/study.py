@@ -19,6 +19,7 @@ from constructions.record import Construction
 
 from ..families.registry import Family, family
 from ..scene.reader import Scene, SceneError
+from ..scene.units import with_unit
 from ..scene.unitset import direction_deg
 
 
@@ -177,7 +178,7 @@ class Study:
     def difference_text(self, c: Comparison) -> str:
         if c.difference is None:
             return "n/a"
-        return f"{self.scene.units.convert(c.kind, c.difference):.1e} {self.scene.units.symbol(c.kind)}".rstrip()
+        return with_unit(f"{self.scene.units.convert(c.kind, c.difference):.1e}", self.scene.units.symbol(c.kind))
 
     def table(self) -> list[tuple[str, str, str, str]]:
         return [(display_name(c.name), self.value_text(c, c.graphical), self.value_text(c, c.analytic),

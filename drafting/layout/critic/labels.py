@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from collections import defaultdict
 
-from ...render.paper import Circle, Command, Line, Polygon, Rect, Text
+from ...render.paper import Circle, Command, Line, Polygon, Polyline, Rect, Text
 from .geometry import (bounding, circle_box_distance, clip_length, fill_meets, is_black_fill, is_stroked, outline, point_box_distance,
                        segment_box_distance)
 from .parts import Finding, diagram_texts, owner, part
@@ -141,6 +141,31 @@ def _marks(sheet) -> list[tuple[float, float]]:
     return got
 
 
+NUMBER = "number "
+"""A link number's entity is named after its link ("number link 3" numbers the bars and plate "link 3",
+"link 3 AB", as the record names a link's parts)."""
+
+
+def _link_parts(sheet) -> dict[str, tuple[list, Rect]]:
+    """Each link's drawn lines and outlines (its pins aside) as segments, and their bounds."""
+    parts: dict[str, list[Command]] = defaultdict(list)
+    for c in sheet.commands:
+        if type(c) in (Line, Polyline, Polygon) and part(c.name) == "" and owner(c.name).startswith("link "):
+            parts[owner(c.name)].append(c)
+    return {o: ([seg for c in cmds for seg in outline(c)], bounding(cmds)) for o, cmds in parts.items()}
+
+
+def _number_distances(box: Rect, link: str, links) -> tuple[float, float, str] | None:
+    """A link number's distance to its own link's parts and to the nearest part of another link, or None
+    when the link has no drawn part (the frame's number sits by a ground symbol)."""
+    own = [g for o, (segs, _) in links.items() if o == link or o.startswith(link + " ") for g in segs]
+    others = [(o, segs, bb) for o, (segs, bb) in links.items() if not (o == link or o.startswith(link + " "))]
+    got = _nearest(box, others) if own else None
+    if got is None:
+        return None
+    return _distance(box, own), got[0], got[1]
+
+
 def ambiguous_labels(sheet) -> list[Finding]:
     """label-ambiguous: a label ("<owner>:label") whose nearest other entity of the same kind is not
     clearly farther from the label's box than its own entity: other distance <= own distance +
@@ -152,12 +177,19 @@ def ambiguous_labels(sheet) -> list[Finding]:
     the joint) takes the nearest mark as its own and is ambiguous when the second nearest is within the
     margin.  Value: the other distance minus the own distance, mm."""
     ents = _entities(sheet)
-    marks = None
+    marks = links = None
     out = []
     for t in (c for c in diagram_texts(sheet.commands) if part(c.name) == "label"):
         mine = owner(t.name)
         kind, geometry, _ = ents.get(mine, ("point", [], None))
-        if kind == "point" and not geometry:
+        if mine.startswith(NUMBER):
+            links = _link_parts(sheet) if links is None else links
+            got = _number_distances(t.box, mine[len(NUMBER):], links)
+            if got is None:
+                continue
+            d_own, d_other, other = got
+            kind = "link"
+        elif kind == "point" and not geometry:
             marks = _marks(sheet) if marks is None else marks
             if len(marks) < 2:
                 continue
