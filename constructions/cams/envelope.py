@@ -162,6 +162,10 @@ def _oscillating_face(f: Follower, th, s, d1, d2, d3) -> Evaluation:
 
 def convex_curvature_pitch(program: Program, f: Follower, theta) -> np.ndarray:
     """The pitch curve's curvature, positive where convex (finite through inflections)."""
-    ev = evaluate(program, f, theta)
+    return convex_curvature(evaluate(program, f, theta))
+
+
+def convex_curvature(ev: Evaluation) -> np.ndarray:
+    """:func:`convex_curvature_pitch` read off an evaluation."""
     with np.errstate(divide="ignore"):
         return np.where(np.isfinite(ev.rho_pitch), 1.0 / ev.rho_pitch, 0.0)
