@@ -52,3 +52,49 @@ def test_in_a_checkout_the_peers_load_from_the_benchmarks_folder():
     peers = benchmark("peers")
     assert peers is benchmark("peers") and peers.__file__ == str(BENCHMARKS / "peers.py")
     assert benchmark("matplotlib_peer").__file__ == str(BENCHMARKS / "matplotlib_peer.py")
+
+
+def _small_gallery(tmp_path, monkeypatch):
+    """Two of the gallery's scenes (a linkage and a cam) in a gallery of their own: the command's run, not
+    its figures, is what a test can check."""
+    from drafting.app import bench
+    for name in ("notes-velocity-example-1.toml", "notes-harmonic-example.toml"):
+        (tmp_path / name).write_text((bench.GALLERY / name).read_text())
+    monkeypatch.setattr(bench, "GALLERY", tmp_path)
+    return ("notes-velocity-example-1", "notes-harmonic-example")
+
+
+def test_the_gallery_table_names_every_scene_and_every_stage(tmp_path, monkeypatch, capsys):
+    """``drafting bench --gallery``: a row for every gallery scene, a column for every stage, the slowest
+    sheet named; no time is asserted."""
+    from drafting.app.cli import main
+    scenes = _small_gallery(tmp_path, monkeypatch)
+    assert main(["bench", "--gallery", "--quick"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    head = next(line for line in out if line.lstrip().startswith("scene"))
+    assert head.split() == ["scene", "pages", "solve", "layout", "SVG", "total", "worst"]
+    rows = {line.split()[0]: line.split()[1:] for line in out if line.split() and line.split()[0] in scenes}
+    assert set(rows) == set(scenes) and all(len(r) == 6 for r in rows.values())
+    assert any(line.lstrip().startswith("slowest: ") for line in out)
+    assert out[-1].startswith("Machine speed in this run")
+
+
+def test_the_gallery_figures_as_json(tmp_path, monkeypatch, capsys):
+    """``--json``: every scene with every stage in ms, the total the median of the runs' sums (no larger
+    than the worst run's)."""
+    import json
+    from drafting.app.cli import main
+    scenes = _small_gallery(tmp_path, monkeypatch)
+    assert main(["bench", "--gallery", "--quick", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["repeats"] == 3 and data["unit"] == "ms"
+    assert [s["scene"] for s in data["sheets"]] == sorted(scenes)
+    for s in data["sheets"]:
+        assert s["pages"] == 1 and all(s[k] > 0 for k in ("solve", "layout", "svg", "total"))
+        assert s["total"] <= s["worst"]
+
+
+def test_json_without_the_gallery_is_one_sentence(capsys):
+    from drafting.app.cli import main
+    assert main(["bench", "--json"]) == 2
+    assert capsys.readouterr().err == "drafting: error: bench --json goes with --gallery\n"

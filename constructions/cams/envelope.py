@@ -63,7 +63,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .follower import FLAT, OSC_FLAT, OSCILLATING, Follower, face_terms
-from .frames import quarter_turn as _J, rotate as _rot
+from .frames import pair as _pair, quarter_turn as _J, rotate as _rot, rotated as _rotated
 from .laws import Program
 
 
@@ -94,8 +94,9 @@ def evaluate(program: Program, f: Follower, theta) -> Evaluation:
     a = -sg * th
     if f.kind == FLAT:
         r = f.base_radius + s
-        u = _rot(a, np.zeros_like(th), np.ones_like(th))
-        w = _rot(a, np.ones_like(th), np.zeros_like(th))
+        ca, sa = np.cos(a), np.sin(a)
+        u = _rotated(ca, sa, np.zeros_like(th), np.ones_like(th))
+        w = _rotated(ca, sa, np.ones_like(th), np.zeros_like(th))
         prof = r * u + sg * d1 * w
         return Evaluation(th, s, d1, d2, d3, None, prof, np.zeros_like(th), None, f.base_radius + s + d2, u)
     if f.kind == OSC_FLAT:
@@ -104,21 +105,22 @@ def evaluate(program: Program, f: Follower, theta) -> Evaluation:
         # the roller centre B = A + l u(gamma0 - psi): the swing psi = s lifts it away from O
         g = f.gamma0 - s
         L = f.arm_length
-        u = np.stack([np.cos(g), np.sin(g)])
-        q = np.stack([f.pivot_distance + L * u[0], L * u[1]])
+        u = _pair(np.cos(g), np.sin(g))
+        q = _pair(f.pivot_distance + L * u[0], L * u[1])
         bpsi = -L * _J(u)                      # dB/dpsi
         q1 = bpsi * d1
         q2 = -L * u * d1 ** 2 + bpsi * d2
     else:
         e, d0 = f.offset, f.d0
-        q = np.stack([np.full_like(th, e), d0 + s])
-        q1 = np.stack([np.zeros_like(th), d1])
-        q2 = np.stack([np.zeros_like(th), d2])
-    P = _rot(a, q[0], q[1])
+        q = _pair(np.full_like(th, e), d0 + s)
+        q1 = _pair(np.zeros_like(th), d1)
+        q2 = _pair(np.zeros_like(th), d2)
+    ca, sa = np.cos(a), np.sin(a)                  # one turn for the point and its derivatives
+    P = _rotated(ca, sa, q[0], q[1])
     v1 = q1 - sg * _J(q)
     v2 = q2 - 2 * sg * _J(q1) - q
-    P1 = _rot(a, v1[0], v1[1])
-    P2 = _rot(a, v2[0], v2[1])
+    P1 = _rotated(ca, sa, v1[0], v1[1])
+    P2 = _rotated(ca, sa, v2[0], v2[1])
     speed = np.hypot(P1[0], P1[1])
     cross = P1[0] * P2[1] - P1[1] * P2[0]
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -145,12 +147,13 @@ def _oscillating_face(f: Follower, th, s, d1, d2, d3) -> Evaluation:
     curvature is ``rho = c + d2c/dphi2 = c + a (sigma cos(beta) s'' - sin(beta) s'^2 (sigma + s')) / (sigma + s')^3``."""
     sg = f.sense
     beta, c, t, rho, _ = face_terms(f, s, d1, d2)
-    n = np.stack([np.sin(beta), np.cos(beta)])
+    n = _pair(np.sin(beta), np.cos(beta))
     jn = _J(n)
     cf = c * n + t * jn                               # the contact in the fixed frame
     a = -sg * th
-    N = _rot(a, n[0], n[1])
-    prof = _rot(a, cf[0], cf[1])
+    ca, sa = np.cos(a), np.sin(a)
+    N = _rotated(ca, sa, n[0], n[1])
+    prof = _rotated(ca, sa, cf[0], cf[1])
     # the pressure angle: between the common normal n and the way the follower's point at the contact is
     # driven (the swing turns the arm clockwise about A in the fixed frame: v ~ -J (C - A))
     rx, ry = cf[0] - f.pivot_distance, cf[1]
@@ -162,6 +165,10 @@ def _oscillating_face(f: Follower, th, s, d1, d2, d3) -> Evaluation:
 
 def convex_curvature_pitch(program: Program, f: Follower, theta) -> np.ndarray:
     """The pitch curve's curvature, positive where convex (finite through inflections)."""
-    ev = evaluate(program, f, theta)
+    return convex_curvature(evaluate(program, f, theta))
+
+
+def convex_curvature(ev: Evaluation) -> np.ndarray:
+    """:func:`convex_curvature_pitch` read off an evaluation."""
     with np.errstate(divide="ignore"):
         return np.where(np.isfinite(ev.rho_pitch), 1.0 / ev.rho_pitch, 0.0)

@@ -208,6 +208,7 @@ class Program:
             raise ValueError(f"the segments cover {math.degrees(total):.6g} deg; they must cover one turn (360 deg)")
         starts = np.cumsum([0.0] + [s.beta for s in self.segments[:-1]])
         self.starts = tuple(float(a) for a in starts)
+        self._snapped = np.asarray(self.starts) - START_SNAP * TAU     # the starts _index looks a cam angle up in
         lifts = [0.0]
         for s in self.segments:
             lifts.append(lifts[-1] + s.sign * s.lift)
@@ -228,23 +229,24 @@ class Program:
     def _index(self, theta: np.ndarray) -> np.ndarray:
         # a cam angle within rounding of a segment's start belongs to that segment (a station at 150 deg
         # built as 10 x 15 deg must not read the end of the segment before as 3e-14 above zero lift)
-        idx = np.searchsorted(np.asarray(self.starts) - START_SNAP * TAU, theta, side="right") - 1
-        return np.clip(idx, 0, len(self.segments) - 1)
+        idx = np.searchsorted(self._snapped, theta, side="right") - 1
+        return np.minimum(np.maximum(idx, 0), len(self.segments) - 1)     # np.clip's, without its wrapper
 
     def derivatives(self, theta) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(s, s', s'', s''') at ``theta`` (rad): SI length, length/rad, length/rad^2, length/rad^3."""
         th = np.mod(np.asarray(theta, dtype=float), TAU)
         th = np.where(th >= TAU, 0.0, th)
         idx = self._index(th)
-        out = [np.zeros_like(th) for _ in range(4)]
+        out = [np.zeros(th.shape) for _ in range(4)]
         for i, seg in enumerate(self.segments):
             m = idx == i
-            if not np.any(m):
+            if not m.any():
                 continue
             out[0][m] = self.levels[i]
             if seg.kind == DWELL:
                 continue
-            u = np.clip((th[m] - self.starts[i]) / seg.beta, 0.0, 1.0)
+            # np.clip's result without its wrapper (a NaN stays NaN either way)
+            u = np.minimum(np.maximum((th[m] - self.starts[i]) / seg.beta, 0.0), 1.0)
             f = normalised(seg.law, u)
             k = seg.sign * seg.lift
             out[0][m] = self.levels[i] + k * f[0]

@@ -12,11 +12,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .envelope import Evaluation, convex_curvature_pitch, evaluate
+from .envelope import Evaluation, convex_curvature, convex_curvature_pitch, evaluate
 from .follower import FACES, FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
 from ..tolerance import CUSP_REL, FACE_TURN_MIN, VELOCITY_JUMP_REL
 from .laws import TAU, Program
-from .search import extremum, spans
+from .search import extrema, extremum, spans
 from .trimming import trim_envelope
 
 @dataclass
@@ -60,42 +60,49 @@ def analyse(program: Program, f: Follower, samples: int = 2048) -> CamProfile:
     th = np.linspace(0.0, TAU, samples, endpoint=False)
     ev = evaluate(program, f, th)
     size = cam_size(program, f)
-    phi_t, phi = extremum(program, lambda x: np.abs(evaluate(program, f, x).pressure_angle))
-    phi = float(evaluate(program, f, np.array([phi_t])).pressure_angle[0])
-    if f.kind == OSC_FLAT:
-        check_face(program, f)
-    def profile_rho(x):
-        e = evaluate(program, f, x)
+    at = lambda x: evaluate(program, f, x)                  # noqa: E731
+    # the searches along the turn, as many as can be at once in one batch (an oscillating face is checked
+    # after its pressure angle and before anything else is searched: as it always was)
+    def profile_rho(e):
         return e.rho_profile if f.kind in FACES else np.where(e.rho_pitch > 0, e.rho_profile, np.inf)
 
-    rp_t, rp = extremum(program, profile_rho, largest=False)
+    searches = {"phi": (lambda e: np.abs(e.pressure_angle), True), "rho": (profile_rho, False)}
+    if f.kind == FLAT:
+        searches["negq"] = (lambda e: -sum([e.s, e.d2s]), True)    # rho = rb + s + s'' > 0: rb > max(-(s + s''))
+        searches["lo"] = (lambda e: f.sense * e.ds, False)
+        searches["hi"] = (lambda e: f.sense * e.ds, True)
+    elif f.kind == OSC_FLAT:
+        searches["lo"] = (lambda e: e.along, False)
+        searches["hi"] = (lambda e: e.along, True)
+    elif f.kind in (ROLLER, OSCILLATING):
+        searches["k"] = (convex_curvature, True)
+    found = {}
+    if f.kind == OSC_FLAT:
+        found["phi"] = extrema(program, at, [searches.pop("phi")])[0]
+        check_face(program, f)
+    found.update(zip(searches, extrema(program, at, list(searches.values()))))
+    phi_t = found["phi"][0]
+    phi = float(evaluate(program, f, np.array([phi_t])).pressure_angle[0])
+    rp_t, rp = found["rho"]
     undercut: list[tuple[float, float]] = []
     cusps: list[float] = []
     min_pitch = None
     rb_min = width = None
     if f.kind in FACES:
-        # rho = rb + s + s'' must stay positive: rb > max(-(s + s'')) (a translating face)
         if f.kind == FLAT:
-            q_t, negq = extremum(program, lambda x: -sum(program.derivatives(x)[0:3:2]))
-            rb_min = max(negq, 0.0)
+            rb_min = max(found["negq"][1], 0.0)
         tol = CUSP_REL * size
         g = lambda x: -evaluate(program, f, x).rho_profile      # noqa: E731
         if abs(rp) <= tol:
             cusps.append(rp_t)
         elif rp < 0:
             undercut = spans(program, g)
-        if f.kind == FLAT:
-            lo = float(np.min(f.sense * ev.ds)); hi = float(np.max(f.sense * ev.ds))
-            lo = min(lo, extremum(program, lambda x: f.sense * program.derivatives(x)[1], largest=False)[1])
-            hi = max(hi, extremum(program, lambda x: f.sense * program.derivatives(x)[1])[1])
-        else:
-            # along the face from the foot of the pivot: a cos(beta) sigma / (sigma + s')
-            lo = min(float(np.min(ev.along)), extremum(program, lambda x: evaluate(program, f, x).along,
-                                                       largest=False)[1])
-            hi = max(float(np.max(ev.along)), extremum(program, lambda x: evaluate(program, f, x).along)[1])
-        width = (lo, hi)
+        # a flat face: the contact's reach sigma s' either side of the axis; an oscillating face: along it
+        # from the foot of the pivot, a cos(beta) sigma / (sigma + s')
+        reach = f.sense * ev.ds if f.kind == FLAT else ev.along
+        width = (min(float(np.min(reach)), found["lo"][1]), max(float(np.max(reach)), found["hi"][1]))
     elif f.kind in (ROLLER, OSCILLATING):
-        kt, kmax = extremum(program, lambda x: convex_curvature_pitch(program, f, x))
+        kt, kmax = found["k"]
         min_pitch = (kt, 1.0 / kmax) if kmax > 0 else None
         if min_pitch is not None:
             d = f.roller_radius * kmax - 1.0          # > 0: the roller is bigger than the tightest convex bend

@@ -27,29 +27,43 @@ def extremum(program: Program, fn, *, per_piece: int = 256, largest: bool = True
     """The cam angle and value of the largest (or smallest) of ``fn(theta)`` (a vectorised function)
     over the turn: a grid in every piece of the program, refined by narrowing grids round each piece's best
     (every piece at once: one call of ``fn`` per round)."""
-    sgn = 1.0 if largest else -1.0
+    return extrema(program, lambda x: x, [(fn, largest)], per_piece=per_piece)[0]
 
-    def f(x: np.ndarray) -> np.ndarray:
-        w = sgn * np.asarray(fn(x.ravel()), dtype=float).reshape(x.shape)
+
+def extrema(program: Program, at, searches, *, per_piece: int = 256) -> list[tuple[float, float]]:
+    """:func:`extremum` of several functions of one costly quantity at once: ``at(theta)`` computes it
+    (an evaluation of the profile) on a flat array of cam angles, and each search is ``(fn, largest)``
+    with ``fn`` reading a vectorised function off it.  Every search narrows its own brackets exactly as
+    :func:`extremum` does, and all of them share one call of ``at`` per round (the cost of a round is in
+    the number of array operations, not in their length); the answers are the same, point for point."""
+    k = len(searches)
+    sgn = np.array([1.0 if largest else -1.0 for _, largest in searches])
+
+    def f(x: np.ndarray) -> np.ndarray:               # x: searches x pieces x points
+        q = at(x.ravel())
+        w = np.stack([s * np.asarray(fn(q), dtype=float).reshape(x.shape)[i]
+                      for i, (s, (fn, _)) in enumerate(zip(sgn, searches))])
         return np.where(np.isfinite(w), w, -math.inf)
 
-    g = np.array(_grid(program, per_piece))                 # pieces x per_piece
-    v = f(g)
-    rows = np.arange(len(g))
-    k = np.argmax(v, axis=1)
-    cand_x, cand_v = g[rows, k], v[rows, k]
-    lo, hi = g[rows, np.maximum(k - 1, 0)], g[rows, np.minimum(k + 1, per_piece - 1)]
+    g1 = np.array(_grid(program, per_piece))                # pieces x per_piece
+    g = np.broadcast_to(g1, (k,) + g1.shape)
+    v = f(np.ascontiguousarray(g))
+    rows = np.arange(len(g1))[None, :]
+    srch = np.arange(k)[:, None]
+    j = np.argmax(v, axis=2)
+    cand_x, cand_v = g[srch, rows, j], v[srch, rows, j]
+    lo, hi = g[srch, rows, np.maximum(j - 1, 0)], g[srch, rows, np.minimum(j + 1, per_piece - 1)]
     u = np.linspace(0.0, 1.0, 33)
     for _ in range(8):                  # each round narrows every bracket 16-fold
-        x = lo[:, None] + (hi - lo)[:, None] * u[None, :]
+        x = lo[..., None] + (hi - lo)[..., None] * u
         w = f(x)
-        j = np.argmax(w, axis=1)
-        better = w[rows, j] >= cand_v
-        cand_x = np.where(better, x[rows, j], cand_x)
-        cand_v = np.where(better, w[rows, j], cand_v)
-        lo, hi = x[rows, np.maximum(j - 1, 0)], x[rows, np.minimum(j + 1, 32)]
-    b = int(np.argmax(cand_v))
-    return float(cand_x[b]), float(sgn * cand_v[b])
+        j = np.argmax(w, axis=2)
+        better = w[srch, rows, j] >= cand_v
+        cand_x = np.where(better, x[srch, rows, j], cand_x)
+        cand_v = np.where(better, w[srch, rows, j], cand_v)
+        lo, hi = x[srch, rows, np.maximum(j - 1, 0)], x[srch, rows, np.minimum(j + 1, 32)]
+    b = np.argmax(cand_v, axis=1)
+    return [(float(cand_x[i, b[i]]), float(sgn[i] * cand_v[i, b[i]])) for i in range(k)]
 
 
 def _boundaries(g, a: np.ndarray, b: np.ndarray, ga: np.ndarray) -> np.ndarray:

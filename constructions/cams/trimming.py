@@ -57,27 +57,23 @@ def trim_envelope(f: Follower, ev: Evaluation, size: float) -> np.ndarray:
         hull = MultiPoint(C[:, keep].T).convex_hull
         xy = np.asarray(hull.exterior.coords)[:-1][::-1] if f.sense < 0 else np.asarray(hull.exterior.coords)[:-1]
         return xy.T
-    # rotate so that index 0 is kept, then walk the runs
+    # rotate so that index 0 is kept, then take the runs: each run kept whole, each run cut away replaced by
+    # the crossing of the chords either side of it
     k0 = int(np.argmax(keep))
     idx = np.roll(np.arange(n), -k0)
     kp = keep[idx]
-    pts: list[np.ndarray] = []
+    cut_from = np.flatnonzero(kp[:-1] & ~kp[1:]) + 1              # first point of each run cut away
+    cut_to = np.append(np.flatnonzero(~kp[:-1] & kp[1:]) + 1, n)[:len(cut_from)]   # first point kept after it
+    pieces: list[np.ndarray] = []
     i = 0
-    while i < n:
-        if kp[i]:
-            pts.append(C[:, idx[i]])
-            i += 1
-            continue
-        j = i
-        while j < n and not kp[j]:
-            j += 1
-        a0, a1 = C[:, idx[i - 1]], C[:, idx[i]]
-        b0, b1 = C[:, idx[(j - 1) % n]], C[:, idx[j % n]]
-        x = _cross_point(a0, a1, b0, b1)
+    for a, b in zip(cut_from, cut_to):
+        pieces.append(C[:, idx[i:a]].T)
+        x = _cross_point(C[:, idx[a - 1]], C[:, idx[a]], C[:, idx[b - 1]], C[:, idx[b % n]])
         if x is not None:
-            pts.append(x)
-        i = j
-    return np.array(pts).T
+            pieces.append(x[None, :])
+        i = b
+    pieces.append(C[:, idx[i:]].T)
+    return np.concatenate(pieces).T
 
 
 def _cross_point(a0, a1, b0, b1):

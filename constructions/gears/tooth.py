@@ -37,7 +37,8 @@ def involute_point(rb: float, theta0: float, u: float, centre: Vec = Vec(0.0, 0.
     """The involute point of roll angle ``u`` (>= 0) off the base circle (centre, rb), its thread
     leaving the circle at polar angle ``theta0``; ``sense`` +1 unwinds counter-clockwise, -1 clockwise."""
     a = theta0 + sense * u
-    return centre + Vec(rb * (math.cos(a) + sense * u * math.sin(a)), rb * (math.sin(a) - sense * u * math.cos(a)))
+    c, s = math.cos(a), math.sin(a)
+    return Vec(centre.x + rb * (c + sense * u * s), centre.y + rb * (s - sense * u * c))
 
 
 def roll_angle(rb: float, radius: float) -> float:
@@ -167,8 +168,9 @@ class Gear:
         r_start = max(rb, rd) if cut is None else cut.involute_from
         u_start = roll_angle(rb, r_start)
         us = [u_start + (u_tip - u_start) * i / (flank_points - 1) for i in range(flank_points)]
+        t1 = self.flank_start(centre_angle, +1)
         right = [involute_point(rb, t0, u, centre, +1) for u in us]
-        left = [involute_point(rb, self.flank_start(centre_angle, +1), u, centre, -1) for u in us]
+        left = [involute_point(rb, t1, u, centre, -1) for u in us]
         out: list[Vec] = []
         if cut is not None:          # the fillet from the root up to the involute (its last point is on it)
             out += [centre + Vec.polar(r, centre_angle - a) for r, a in reversed(cut.fillet[1:])]
@@ -184,7 +186,7 @@ class Gear:
         if cut is not None:
             out += [centre + Vec.polar(r, centre_angle + a) for r, a in cut.fillet[1:]]
         elif rd < rb:
-            out.append(centre + Vec.polar(rd, self.flank_start(centre_angle, +1)))
+            out.append(centre + Vec.polar(rd, t1))
         return out
 
     def teeth_outline(self, centre: Vec, first_centre_angle: float, count: int, flank_points: int,

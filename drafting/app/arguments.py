@@ -93,6 +93,9 @@ def parser() -> argparse.ArgumentParser:
                        description="Time the default sheet to SVG/PDF/PNG and the analytic sweep over "
                                    "1e3..1e7 crank angles, side by side in one run.")
     b.add_argument("--quick", action="store_true", help="fewer repeats and sizes up to 1e6")
+    b.add_argument("--gallery", action="store_true",
+                   help="instead: every gallery scene's sheet, solve / layout / SVG and their total, side by side")
+    b.add_argument("--json", action="store_true", help="with --gallery: the figures as JSON (ms)")
     b.add_argument("--peers", action="store_true",
                    help="also the four-bar sweep against pylinkage, mechanism (pip install .[bench]) and "
                         "plain numpy")

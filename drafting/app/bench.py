@@ -1,6 +1,7 @@
 """Benchmarks, side by side in one run: the default sheet to SVG, PDF and PNG, and the analytic sweep.
 
-Run with ``drafting bench`` (or ``python benchmarks/run_all.py``).  The figures are written into the
+Run with ``drafting bench`` (or ``python benchmarks/run_all.py``); ``drafting bench --gallery`` times every
+gallery sheet stage by stage instead (:mod:`.bench_gallery`).  The figures are written into the
 README; they are never asserted in tests.  The peers (matplotlib drawing the same sheets; pylinkage,
 mechanism and plain numpy sweeping the four-bar) live in the checkout's ``benchmarks/`` folder, never inside
 drafting/, and are loaded from there by :func:`benchmark`.
@@ -17,6 +18,7 @@ from pathlib import Path
 from types import ModuleType
 from typing import Callable
 
+from .bench_gallery import format_gallery_rows, gallery_json, gallery_rows, gallery_scenes
 from .bench_sweep import format_table, sweep_rows
 from .parallel import GC_YOUNG
 from ..backends import cairo as cairo_out
@@ -200,3 +202,16 @@ def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
         lines.append("The four-bar sweep against its peers (positions checked against this engine first):")
         lines.append(peer_sweep.format_rows(*peer_sweep.rows(sizes)))
     return "\n".join(lines)
+
+
+def run_gallery(quick: bool = False, as_json: bool = False) -> str:
+    """Every gallery sheet's stages (:mod:`.bench_gallery`) as a table with the machine's speed beside it,
+    or as JSON; :class:`BenchmarksMissing` outside a checkout (the gallery is not installed)."""
+    if not GALLERY.is_dir():
+        raise BenchmarksMissing(f"the gallery lives in a source checkout, and {GALLERY} is not there")
+    repeats = 3 if quick else 7
+    speed = machine_speed(repeats)
+    rows = gallery_rows(gallery_scenes(GALLERY), repeats)
+    if as_json:
+        return gallery_json(rows, repeats)
+    return "\n".join([format_gallery_rows(rows, repeats), format_machine_speed(speed)])

@@ -9,6 +9,7 @@
     drafting batch SCENE --variants N --seed S -o DIR   N lab-sheet variants from the scene's [vary]
     drafting bench [--peers]      timings of rendering and of the analytic sweep (and its peers)
     drafting lint SCENE... [--json]   the sheet critic's findings; exit 1 when there are any
+    drafting bench --gallery      every gallery sheet's solve, layout and SVG times (--json)
 
 Exit codes: 0 fine, 1 graphical and analytic disagree, 2 bad input (one sentence on stderr).
 """
@@ -192,12 +193,14 @@ def cmd_batch(path: Path, variants: int, seed: int, out: Path, formats: Sequence
 MAX_VARIANTS = 10_000
 
 
-def cmd_bench(quick: bool, peers: bool = False) -> int:
-    from .bench import BenchmarksMissing, run_benchmarks
+def cmd_bench(quick: bool, peers: bool = False, gallery: bool = False, as_json: bool = False) -> int:
+    from .bench import BenchmarksMissing, run_benchmarks, run_gallery
+    if as_json and not gallery:
+        raise UserError("bench --json goes with --gallery")
     try:
-        print(run_benchmarks(quick=quick, peers=peers))
+        print(run_gallery(quick=quick, as_json=as_json) if gallery else run_benchmarks(quick=quick, peers=peers))
     except BenchmarksMissing as e:             # installed without the checkout: one sentence, exit 2
-        raise UserError(f"bench --peers: {e}") from None
+        raise UserError(f"bench {'--gallery' if gallery else '--peers'}: {e}") from None
     return 0
 
 
@@ -261,7 +264,7 @@ def _main(argv: Sequence[str] | None) -> int:
             from .lint_cmd import cmd_lint
             return cmd_lint(args.scenes, args.json)
         if args.command == "bench":
-            return cmd_bench(args.quick, args.peers)
+            return cmd_bench(args.quick, args.peers, args.gallery, args.json)
         if args.command == "export":
             from .cam_export import run_export
             return run_export(args)
