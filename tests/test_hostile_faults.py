@@ -119,12 +119,20 @@ def test_a_final_name_that_is_a_folder(tmp_path, capsys):
 
 # -- interrupts ---------------------------------------------------------------------------------------------
 
+def _lowest_priority() -> None:
+    """The run at the lowest CPU priority (nice 19): on a loaded machine the watching test, polling every
+    millisecond, is scheduled before the run makes progress, so a short moment (a page's temporary file
+    before the renames) is seen, not run past."""
+    os.nice(19)
+
+
 def _start(out: Path, scenes: list[Path], *extra: str, text: bool = True) -> subprocess.Popen:
-    """``drafting render`` in a process group of its own (it and its workers can be stopped together)."""
+    """``drafting render`` in a process group of its own (it and its workers can be stopped together), at
+    the lowest priority (:func:`_lowest_priority`)."""
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
     return subprocess.Popen([sys.executable, "-m", "drafting.app.cli", "render", *map(str, scenes), "-o", str(out), *extra],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=text, env=env, cwd=ROOT,
-                            start_new_session=True)
+                            start_new_session=True, preexec_fn=_lowest_priority)
 
 
 def _empty(folder: Path) -> bool:
@@ -255,7 +263,7 @@ def _start_batch(out: Path, scene: Path, variants: int = 8) -> subprocess.Popen:
     return subprocess.Popen([sys.executable, "-m", "drafting.app.cli", "batch", str(scene), "--variants", str(variants),
                              "--seed", "1", "-o", str(out), "--format", ",".join(BATCH_FORMATS), "--workers", "2"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=ROOT,
-                            start_new_session=True)
+                            start_new_session=True, preexec_fn=_lowest_priority)
 
 
 def _batch_moment(p: subprocess.Popen, out: Path, moment: str):
