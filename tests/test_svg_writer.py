@@ -26,13 +26,13 @@ def test_text_and_attributes_read_back_exactly():
     cmds = [Text(10, 20, spans, "text", Rect(10, 17, 40, 4), "r", "t"), Line(0, 0, 5, 5, "link", "l")]
     svg = sheet_to_svg(_sheet(cmds), attrs=lambda c: {"data-e": 'name "with" <quotes>\nand a line'})
     root = ET.fromstring(svg)
-    text = root.find(f"{NS}text")
+    text = root.find(f".//{NS}text")
     assert text.text == tricky
     tspans = text.findall(f"{NS}tspan")
     assert [t.text for t in tspans] == [None, "x_1 & <y>"]
     assert tspans[1].get("font-style") == "italic" and tspans[0].get("dy") == "0.875"
     assert text.get("data-e") == 'name "with" <quotes>\nand a line'
-    line = root.find(f"{NS}line")
+    line = root.find(f".//{NS}line")
     assert (line.get("x2"), line.get("stroke-width"), line.get("data-e")) == ("5", "0.5", text.get("data-e"))
 
 
@@ -46,7 +46,7 @@ def test_an_empty_text_is_an_empty_element():
 def test_a_hatching_is_one_path_of_separate_strokes():
     from drafting.render.paper import Strokes
     svg = sheet_to_svg(_sheet([Strokes((((0.0, 0.0), (1.0, 1.5)), ((2.25, -0.5), (3.0, 4.0))), "hatch", "h")]))
-    paths = ET.fromstring(svg).findall(f"{NS}path")
+    paths = ET.fromstring(svg).findall(f".//{NS}path")
     assert len(paths) == 1 and paths[0].get("d") == "M0 0L1 1.5 M2.25 -0.5L3 4"
     assert paths[0].get("fill") == "none" and paths[0].get("stroke-width") == "0.25"
 
@@ -127,7 +127,7 @@ def test_the_writer_writes_what_svgwrite_writes_for_hostile_text_and_every_eleme
     svg = sheet_to_svg(_sheet(cmds))
     assert len(written) == 2
     root = ET.fromstring(written[0])
-    text = root.find(f"{NS}text")
+    text = root.find(f".//{NS}text")
     assert "\ufffd" in text.text and "\x00" not in text.text and text.get("data-e").startswith("tab\there, cr\rlf\n")
     assert "data-n" not in text.attrib and "data-x" not in text.attrib    # empty and None: left out, as in svgwrite
     assert "\ud800" not in svg and "\U0001f600" in svg

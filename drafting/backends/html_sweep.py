@@ -77,7 +77,7 @@ def _build(card: SweepCanvas) -> SweepSection:
             ident, cls = card.ids[cmd.name]
             return {"id": ident, "class": cls}
         return {}
-    svg = sheet_to_svg(Sheet(Paper("sweep", "landscape", WIDTH, HEIGHT), commands), attrs)
+    svg = sheet_to_svg(Sheet(Paper("sweep", "landscape", WIDTH, HEIGHT), commands), attrs, grouped=False)
     dot = " \u00b7 "
     marks = "".join(f'<option value="{i}"></option>' for i in merged)
     jumps = "".join(f'<button data-i="{i}">{html.escape(dot.join(t))}</button>' for i, t in merged.items())

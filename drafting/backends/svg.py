@@ -18,6 +18,20 @@ is made safe as it is written, so characters XML 1.0 forbids become U+FFFD where
 and ``&``, ``<``, ``>``, quotes and (in attributes) tabs and line ends are escaped as ElementTree
 escapes them.  The document stays inert: plain shapes and text only, no scripts, no links or external
 references, no DOCTYPE or entities.
+
+Each drawn thing is a group, so that a sheet can be styled, searched and read aloud: the commands are
+written in their order (the z-order is the sheet's, exactly), and each run of consecutive commands of one
+part (:func:`drafting.layout.parts.part_of`: an entity of the record, the label naming it, or a piece of
+the sheet's furniture -- frame, title block, results table, a step's words, a scale bar) is one
+``<g class="KIND" data-entity="ID">``.  ``KIND`` comes from the record's entity type (``vector``,
+``trial-line``, ``point``, ``link`` ...) or the furniture (``title-block``, ``table``, ``step-text`` ...);
+``ID`` is the entity's name as an XML id (:class:`drafting.layout.parts.Ids`: stable, unique).  An entity
+drawn on several layers (a link below the arrows, its pin above them) is several runs: every run has the
+same class and ``data-entity``; the first carries ``id="ID"`` and the ``<title>`` ("V_B -- known velocity
+vector"), the later ones neither, so each id is written once.  The label naming an entity is a run of its
+own (labels lie above every line): ``class="KIND label"`` and ``data-for="ID"``, the entity it names
+(and it is the one carrying the id and title when the entity draws nothing before its label, as a joint
+named on the space diagram).  Nothing of this changes what is drawn: groups carry no style.
 """
 
 from __future__ import annotations
@@ -28,10 +42,12 @@ from xml.etree import ElementTree
 
 import svgwrite
 from svgwrite import path as svg_path, shapes, text as svg_text
+from svgwrite.base import Title
 from svgwrite.utils import strlist
 
 from .fonts import css_for
 from ..render.paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
+from ..layout.parts import Ids, Part, part_of
 from ..layout.sheet import Sheet
 from ..render.style import FONT_FAMILY, style
 from ..scene.textsafe import xml_safe
@@ -85,13 +101,15 @@ def _circle(dwg, c: Circle):
     return shapes.Circle((fmt(c.cx), fmt(c.cy)), fmt(c.r), factory=dwg)
 
 
-def _element(dwg: svgwrite.Drawing, c: Command):
+def _element(dwg: svgwrite.Drawing, c: Command, attrs: Callable[[Command], dict[str, str]] | None = None):
     make = _MAKERS.get(type(c))
     if make is None:
         raise TypeError(f"not a drawing command: {c!r}")
     el = make(dwg, c)
     if make is not _text:
         el.attribs.update(_paint(c.style))
+    if attrs is not None:
+        el.attribs.update(attrs(c))
     return el
 
 
@@ -121,9 +139,12 @@ _MAKERS = {Line: _line, Polyline: _polyline, Polygon: _polygon, Strokes: _stroke
            Text: _text}
 
 
-def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None = None) -> str:
-    """The sheet as an SVG document, 1 user unit = 1 mm; ``attrs(command)`` adds attributes to each
-    element (the step-through page tags each with its entity)."""
+def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None = None, *,
+                 grouped: bool = True, ids: Ids | None = None) -> str:
+    """The sheet as an SVG document, 1 user unit = 1 mm, each part a group (see the module's words);
+    ``attrs(command)`` adds attributes to each element; ``grouped=False`` writes the elements bare (the
+    sweep card, which names its own); ``ids`` shares the ids of several documents on one page (each id is
+    then written once over all of them)."""
     w, h = sheet.width, sheet.height
     dwg = svgwrite.Drawing(size=(f"{fmt(w)}mm", f"{fmt(h)}mm"), profile="full", debug=False)
     dwg.attribs["viewBox"] = f"0 0 {fmt(w)} {fmt(h)}"
@@ -132,12 +153,67 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
     page.attribs.update({"x": "0", "y": "0", "width": fmt(w), "height": fmt(h), "fill": "white", "stroke": "none"})
     dwg.add(page)
     dwg.defs.add(dwg.style(css_for(s.text for c in sheet.commands if isinstance(c, Text) for s in c.spans)))
+    if not grouped:
+        for c in sheet.commands:
+            dwg.add(_element(dwg, c, attrs))
+        return _document(dwg)
+    entities = sheet.entities
+    ids = Ids(entities) if ids is None else ids
+    run, key, name = None, None, None
     for c in sheet.commands:
-        el = _element(dwg, c)
-        if attrs is not None:
-            el.attribs.update(attrs(c))
-        dwg.add(el)
+        if c.name != name:
+            name = c.name
+            part = part_of(name, entities)
+            if (part.owner, part.label) != key:
+                key = (part.owner, part.label)
+                run = _run(part, ids)
+                dwg.elements.append(run)
+        run.elements.append(_element(dwg, c, attrs))
     return _document(dwg)
+
+
+class _Run:
+    """One group of the document: a run of one part's commands (see the module's words).  It is
+    written as :func:`_run_head` and its elements; ``get_xml`` is svgwrite's tree of the same (a
+    ``Group`` holding a ``Title``), which a test holds the writer to."""
+
+    __slots__ = ("attribs", "title", "elements")
+
+    def __init__(self, attribs: dict[str, str], title: str | None) -> None:
+        self.attribs, self.title, self.elements = attribs, title, []
+
+    def get_xml(self):
+        xml = ElementTree.Element("g", dict(sorted(self.attribs.items())))
+        if self.title is not None:
+            xml.append(Title(self.title).get_xml())
+        for el in self.elements:
+            xml.append(el.get_xml())
+        return xml
+
+
+def _run(part: Part, ids: Ids) -> _Run:
+    """The group of one run of ``part``'s commands: its class and entity; the id and title on the
+    part's first run in the document."""
+    owner = ids(part.owner)
+    if part.label:
+        attribs = {"class": f"{part.kind} label", "data-entity": owner, "data-for": owner}
+    else:
+        attribs = {"class": part.kind, "data-entity": owner}
+    if ids.claim(owner):
+        attribs["id"] = owner
+        return _Run(attribs, part.title)
+    return _Run(attribs, None)
+
+
+@functools.lru_cache(maxsize=4096)
+def _run_head(attribs: tuple[tuple[str, str], ...], title: str | None) -> str:
+    """A group's start tag and title, as ElementTree writes them (the same few for every sheet)."""
+    out: list[str] = []
+    _start("g", dict(attribs), out)
+    out.append(">")
+    if title is not None:
+        out.append(f"<title>{_escaped(title, attribute=False)}</title>" if title else "<title />")
+    return "".join(out)
 
 
 def svg_inline(sheet: Sheet, width: str = "100%") -> str:
@@ -188,6 +264,12 @@ def _start(tag: str, attribs: dict, out: list[str]) -> None:
 def _write(el, out: list[str]) -> None:
     """One element and what it holds (ElementTree's layout: ``<x a="1" />`` when empty)."""
     kind = type(el)
+    if kind is _Run:
+        out.append(_run_head(tuple(el.attribs.items()), el.title))
+        for sub in el.elements:
+            _write(sub, out)
+        out.append("</g>")
+        return
     if kind in _POINTS:
         el.attribs["points"] = el.points_to_string(el.points)
     elif kind is svg_path.Path:

@@ -44,6 +44,7 @@ from .page_plans import PagePlan
 from .pages import Document, plan_document, slots_of
 from .panel import Panel, PanelCache
 from .panels import VectorPanel, panels_for
+from .parts import entity_kinds
 from .title_block import scale_cell, title_block, title_block_height
 
 __all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheets", "compose_sheet", "LayoutError"]
@@ -139,6 +140,7 @@ class Sheet:
     """This page's sheet number n of m."""
     diagram_scales: Mapping[str, DiagramScale] = field(default_factory=dict, compare=False)
     """The scale each diagram on this page is drawn at (SI units per mm and as written)."""
+    entities: Mapping[str, tuple[str, str]] = field(default_factory=dict, compare=False)  # name -> (kind, title): .parts
 
     @property
     def width(self) -> float:
@@ -310,7 +312,8 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     text_cmds, size = _reflow(real, doc, text_cache)
     m = doc.count
     first = info.sheet if m == 1 else None
-    return tuple(_render_page(pp, info, pg, i, m, text_cmds, size, tb_fields, first)
+    kinds = MappingProxyType(entity_kinds(construction))
+    return tuple(replace(_render_page(pp, info, pg, i, m, text_cmds, size, tb_fields, first), entities=kinds)
                  for i, pg in enumerate(doc.pages))
 
 
