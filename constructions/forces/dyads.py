@@ -66,7 +66,7 @@ def rrr(d: Drawing, step: TwoCircles) -> None:
                     None, {}, StepKind.CONSTRUCTION))
                 n_free_on_loaded = force_name(free, loaded)
                 c = close(d, key, what, [(x.label, x.vector) for x in d.known(loaded)],
-                           (l_name, third, f"\u2225 {l_outer}I"),
+                           (l_name, third, f"\u2225 {l_outer}I (link {loaded})"),
                            (n_free_on_loaded, along, f"\u2225 {f_outer}{j}"),
                            f"Force triangle of link {loaded}.")
                 f_loaded, f_on_loaded = c.last, c.first

@@ -107,7 +107,7 @@ class _Construction(BodyDrawing):
                   TrialLine(f"line {pin.name}", Role.TRIAL, SPACE, A, I - A, pin.name))
         self.lay_off(VectorEquation((term("R", True, True), term(other.name, False, True),
                                      term(pin.name, False, True)), ()), ub)
-        x = self.close("pin", (other.name, ub, self.along(other)), (pin.name, I - A, f"\u2225 {pin.at}I"),
+        x = self.close("pin", (other.name, ub, self.along(other)), (pin.name, I - A, f"\u2225 {pin.at}I ({b.name})"),
                        self.tip, "its end", "x")
         self.answer([(other.name, self.tip, x), (pin.name, x, ORIGIN)])
 

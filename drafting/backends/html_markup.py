@@ -8,18 +8,18 @@ from __future__ import annotations
 import functools
 import html
 import json
-import re
 from importlib.resources import files
 
-_SUB = re.compile(r"_(\{[^}]*\}|[A-Za-z0-9]+)")
-_SUP = re.compile(r"\^(\{[^}]*\}|[A-Za-z0-9]+)")
-
+from ..render.style import rich
 
 def markup_html(text: str) -> str:
-    """A step's words as HTML: escaped, the notes' V_CB and A_CB^t written as sub- and superscripts."""
-    def part(tag):
-        return lambda m: f"<{tag}>{m.group(1).strip('{}')}</{tag}>"
-    return _SUP.sub(part("sup"), _SUB.sub(part("sub"), html.escape(text)))
+    """A step's words as HTML, set as the sheet sets them (:func:`~drafting.render.style.rich`): escaped,
+    the notes' V_CB and A_CB^t, O4 and F14 with their sub- and superscripts, b' with its prime."""
+    out = []
+    for s in rich(text, 1.0):
+        t = html.escape(s.text)
+        out.append(f"<sub>{t}</sub>" if s.shift > 0 else f"<sup>{t}</sup>" if s.shift < 0 else t)
+    return "".join(out)
 
 
 def script_json(data, **options) -> str:
