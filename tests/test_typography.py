@@ -36,6 +36,8 @@ def test_point_names_take_subscripts_and_primes_and_words_stay_as_written():
     assert runs("F14 and I02") == [("F", False), ("14", True), (" and I", False), ("02", True)]
     assert runs("From b' draw; meet at c'.") == [("From b\u2032 draw; meet at c\u2032.", False)]
     assert runs("C''") == [("C\u2033", False)]
+    assert runs("O2G2 = 30 mm, AG3") == [("O", False), ("2", True), ("G", False), ("2", True), (" = 30 mm, AG", False),
+                                         ("3", True)]
     for words in ("D'Alembert force", "Kennedy's theorem", "TOM-A-001", "2026-11-23", "3-4-5 law", "4.4e-13 mm",
                   "Example 1", "step 10.5"):
         assert runs(words) == [(words, False)], words

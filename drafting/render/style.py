@@ -290,12 +290,12 @@ _TOKEN = re.compile(
     r"(?<![A-Za-z0-9\u0370-\u03ff])(?P<base>[A-Za-z\u0370-\u03ff]+)_(?P<sub>" + _GROUP + r")"
     r"(?:\^(?P<sup>" + _GROUP + r"))?")
 _PIVOT = re.compile(r"^(?P<base>[A-Za-z])(?P<sub>[0-9]+)$")
-_NAMED = re.compile(r"(?<![A-Za-z0-9\u0370-\u03ff'\-/.])(?P<base>[A-Za-z\u0370-\u03ff])(?P<sub>[0-9]{1,2})?"
-                    r"(?P<primes>'{1,2})?(?![0-9A-Za-z\u0370-\u03ff])|"
-                    r"(?<![A-Za-z0-9\u0370-\u03ff'\-/.])(?P<base2>[A-Z\u0370-\u03ff])(?P<sub2>[0-9]{1,2})(?=[A-Z])")
-"""A point or member name inside running text, set as the notes print it: the digits of "O4", "F14",
-"omega2" ... as a subscript ("O4I" -> O with 4 below, then I), and a prime as a prime (b' -> b\u2032, C'' ->
-C\u2033); "D'Alembert" and "Kennedy's" are words and stay as written."""
+_NAMED = re.compile(r"(?<![A-Za-z0-9\u0370-\u03ff'\-/.])(?P<chain>(?:[A-Za-z\u0370-\u03ff][0-9]{0,2})+)"
+                    r"(?P<primes>'{1,2})?(?![0-9A-Za-z\u0370-\u03ff])")
+_PAIR = re.compile(r"([A-Za-z\u0370-\u03ff])([0-9]*)")
+"""Point and member names inside running text, set as the notes print them: the digits of "O4", "F14",
+"O2G2", "omega2" ... as subscripts ("O4I" -> O with 4 below, then I), and a prime as a prime (b' ->
+b\u2032, C'' -> C\u2033); words without digits or primes ("D'Alembert", "Kennedy's") stay as written."""
 _PRIMES = {"'": "\u2032", "''": "\u2033"}
 
 
@@ -359,12 +359,12 @@ def _names(span: Span) -> list[Span]:
     out: list[Span] = []
     pos = 0
     for m in _NAMED.finditer(span.text):
-        base, sub = (m["base"], m["sub"]) if m["base"] else (m["base2"], m["sub2"])
-        primes = m["primes"] if m["base"] else None
-        if not sub and not primes:
+        chain, primes = m["chain"], m["primes"]
+        if not primes and not any(c.isdigit() for c in chain):
             continue
         out.append(Span(span.text[pos:m.start()], span.size, 0.0, span.italic))
-        out.extend(_symbol(base, sub or "", "", span.size, span.italic))
+        for base, sub in _PAIR.findall(chain):
+            out.extend(_symbol(base, sub, "", span.size, span.italic))
         if primes:
             out.append(Span(_PRIMES[primes], span.size, 0.0, span.italic))
         pos = m.end()
