@@ -263,3 +263,20 @@ def intersect_circles(c1: Circle, c2: Circle, tol: Tolerance) -> Intersection:
     foot = c1.center + u * a
     n = u.perp()
     return Intersection(Contact.CROSSING, (foot + n * h, foot - n * h), d * h / (r1 * r2), gap)
+
+
+def sqrt_nonneg(x: float) -> float:
+    """The square root of a computed quantity that is >= 0 by the geometry (r_a^2 - r_b^2, a tangent's
+    length) but may come out a rounding below 0 at its limit (a contact on the base circle): 0 there, not a
+    math domain error.  A value far below 0 is an input the readers refuse before it gets here."""
+    return math.sqrt(x) if x > 0.0 else 0.0
+
+
+def acos_clamped(c: float) -> float:
+    """acos of a cosine computed from lengths, which rounding may push a hair past +-1 at a limit."""
+    return math.acos(1.0 if c > 1.0 else -1.0 if c < -1.0 else c)
+
+
+def asin_clamped(s: float) -> float:
+    """asin of a sine computed from lengths, which rounding may push a hair past +-1 at a limit."""
+    return math.asin(1.0 if s > 1.0 else -1.0 if s < -1.0 else s)

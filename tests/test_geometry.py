@@ -413,3 +413,14 @@ def test_a_nearly_unit_direction_is_normalised_before_it_measures_distances():
     hit = intersect_line_circle(line, Circle(Vec(0.3, y), r), Tolerance(1.0, **FINE))
     h_exact = exact_sqrt(F(r) ** 2 - F(y) ** 2)   # the line is y = 0 whatever the direction's length
     assert hit.condition * r == pytest.approx(h_exact, rel=1e-12, abs=0)
+
+
+def test_roots_and_inverse_trig_of_computed_values_hold_at_their_limits():
+    """A computed cosine a rounding past 1 (a contact on the base circle, C exactly r_b1 + r_b2) or a
+    squared length a rounding below 0 gives the limit's value, not a math domain error (issue 22)."""
+    from constructions.geometry import acos_clamped, asin_clamped, sqrt_nonneg
+    assert sqrt_nonneg(-1e-18) == 0.0 and sqrt_nonneg(4.0) == 2.0
+    assert acos_clamped(1.0 + 2e-16) == 0.0 and acos_clamped(-1.0 - 2e-16) == math.pi
+    assert asin_clamped(1.0 + 2e-16) == math.pi / 2 and asin_clamped(0.5) == math.asin(0.5)
+    r, e = 0.03, 0.03 * (1 + 1e-16)
+    assert sqrt_nonneg(r * r - e * e) == 0.0

@@ -22,6 +22,7 @@ import math
 
 import numpy as np
 
+from ..geometry import acos_clamped, asin_clamped, sqrt_nonneg
 from .laws import TAU, Program
 from .follower import FLAT, OSC_FLAT, OSCILLATING, Follower
 
@@ -44,7 +45,7 @@ def closed_form_point(program: Program, f: Follower, theta: float) -> dict[str, 
     if f.kind == OSC_FLAT:
         return _oscillating_face(f, theta, s, ds)
     e = f.offset
-    d0 = math.sqrt(f.prime_radius ** 2 - e * e)
+    d0 = sqrt_nonneg(f.prime_radius ** 2 - e * e)
     phi = math.atan((ds - sg * e) / (d0 + s))
     P = _turn_back(theta, sg, e, d0 + s)
     rr = f.roller_radius
@@ -58,7 +59,7 @@ def _oscillating(f: Follower, theta: float, s: float, ds: float) -> dict:
     cam and follower, on the line of centres OA where both move alike: sigma x_I = -s' (x_I - a), so
     x_I = s' a / (sigma + s')."""
     a, L, rp, sg = f.pivot_distance, f.arm_length, f.prime_radius, f.sense
-    g0 = math.acos((rp * rp - a * a - L * L) / (2 * a * L))
+    g0 = acos_clamped((rp * rp - a * a - L * L) / (2 * a * L))
     g = g0 - s
     B = (a + L * math.cos(g), L * math.sin(g))
     xi = ds * a / (sg + ds)
@@ -79,7 +80,7 @@ def _oscillating_face(f: Follower, theta: float, s: float, ds: float) -> dict:
     of cam and arm where both move alike on the line of centres, and the contact where the normal to the
     face through I meets it.  ``P`` is the foot of the perpendicular from O to the face."""
     a, sg = f.pivot_distance, f.sense
-    beta = math.asin((f.base_radius + f.face_offset) / a) + s
+    beta = asin_clamped((f.base_radius + f.face_offset) / a) + s
     nx, ny = math.sin(beta), math.cos(beta)            # the face's normal, away from the cam centre
     c = a * math.sin(beta) - f.face_offset             # the face's distance from O
     xi = ds * a / (sg + ds)

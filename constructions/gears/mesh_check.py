@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..geometry import acos_clamped, sqrt_nonneg
 from .contact import Pair
 
 
@@ -51,7 +52,7 @@ def closed_form(pair: Pair) -> ClosedForm:
     phi = g1.system.pressure_angle
     pb = math.pi * m * math.cos(phi)
     rb1, ra1 = g1.base_radius, g1.addendum_radius
-    tip1 = math.sqrt((ra1 - rb1) * (ra1 + rb1))
+    tip1 = sqrt_nonneg((ra1 - rb1) * (ra1 + rb1))
     if pair.rack:
         C = pair.distance
         r1 = g1.pitch_radius
@@ -65,11 +66,11 @@ def closed_form(pair: Pair) -> ClosedForm:
         # the ring's addendum circle r2 - a is cut between T2 and P: AP = PT2 - sqrt(r_a2^2 - r_b2^2), and
         # T1 lies between T2 and P (PT1 = r1' sin phi' < PT2 = r2' sin phi'); no interference point past P
         rb2, ra2 = g2.base_radius, g2.pitch_radius - g2.system.a
-        phiw = phi if pair.centre_distance is None else math.acos((rb2 - rb1) / C)
+        phiw = phi if pair.centre_distance is None else acos_clamped((rb2 - rb1) / C)
         r1w = C * g1.teeth / (g2.teeth - g1.teeth)
         r2w = C + r1w
         pt1, pt2 = r1w * math.sin(phiw), r2w * math.sin(phiw)
-        ap = pt2 - math.sqrt((ra2 - rb2) * (ra2 + rb2))
+        ap = pt2 - sqrt_nonneg((ra2 - rb2) * (ra2 + rb2))
         pbr = tip1 - pt1
         return ClosedForm(phiw, ap, pbr, ap + pbr, pb, pt1, math.inf)
     rb2, ra2 = g2.base_radius, g2.addendum_radius
@@ -77,11 +78,11 @@ def closed_form(pair: Pair) -> ClosedForm:
         phiw = phi
         r1w, r2w = g1.pitch_radius, g2.pitch_radius
     else:
-        phiw = math.acos((rb1 + rb2) / C)
+        phiw = acos_clamped((rb1 + rb2) / C)
         r1w = C * g1.teeth / (g1.teeth + g2.teeth)
         r2w = C - r1w
     pt1, pt2 = r1w * math.sin(phiw), r2w * math.sin(phiw)
-    tip2 = math.sqrt((ra2 - rb2) * (ra2 + rb2))
+    tip2 = sqrt_nonneg((ra2 - rb2) * (ra2 + rb2))
     ap, pbr = tip2 - pt2, tip1 - pt1
     return ClosedForm(phiw, ap, pbr, ap + pbr, pb, pt1, pt2)
 
@@ -89,5 +90,5 @@ def closed_form(pair: Pair) -> ClosedForm:
 def notes_contact_ratio(r1: float, r2: float, a1: float, a2: float, phi: float, pb: float) -> float:
     """The notes' contact-ratio formula as printed (standard centre distance)."""
     c = math.cos(phi) ** 2
-    return ((math.sqrt((r2 + a2) ** 2 - r2 ** 2 * c) - r2 * math.sin(phi)) / pb
-            + (math.sqrt((r1 + a1) ** 2 - r1 ** 2 * c) - r1 * math.sin(phi)) / pb)
+    return ((sqrt_nonneg((r2 + a2) ** 2 - r2 ** 2 * c) - r2 * math.sin(phi)) / pb
+            + (sqrt_nonneg((r1 + a1) ** 2 - r1 ** 2 * c) - r1 * math.sin(phi)) / pb)
