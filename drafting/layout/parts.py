@@ -33,6 +33,9 @@ ENTITY_KINDS: dict[type, tuple[str, str]] = {
     ent.Arc: ("arc", "arc"), ent.ScaleBar: ("scale-bar", "scale bar"), ent.Circle: ("circle", "circle"),
     ent.Curve: ("curve", "curve"), ent.Segment: ("segment", "line"), ent.Dimension: ("dimension", "dimension"),
     ent.AngleMark: ("angle", "angle"), ent.Note: ("note", "note"), ent.Chart: ("chart", "chart"),
+    ent.LinkNumber: ("link-number", "link number"), ent.BodyOutline: ("body", "free body"),
+    ent.MomentArc: ("couple", "couple"), ent.RotationArrow: ("rotation", "sense of rotation"),
+    ent.FollowerBody: ("follower", "follower"),
 }
 
 #: Roles a title names before the noun ("V_C -- result vector"); the others say nothing the noun does not.
