@@ -210,7 +210,8 @@ def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[K
     info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
 
     def held(panels):
-        return [p if p.key == "space" else blank_panel(p, scales.get(p.key)) for p in panels]
+        return [_at_scale(p, scales.get(p.key)) if p.key == "space" else blank_panel(p, scales.get(p.key))
+                for p in panels]
 
     def free(panels):
         return [p if p.key == "space" else blank_panel(p) for p in panels]
@@ -218,6 +219,20 @@ def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[K
         return compose_sheets(c, info, rows, values=_hook(shown), panel_hook=held, given=given)
     except LayoutError:                       # the worked sheet's scales do not fit beside the givens
         return compose_sheets(c, info, rows, values=_hook(shown), panel_hook=free, given=given)
+
+
+def _at_scale(panel, scale):
+    """The space diagram's panel held to the worked sheet's ISO scale (its one rung), so a length read off
+    the problem sheet is the length read off the worked one; the panel itself when that scale is not one of
+    its rungs."""
+    if scale is None:
+        return panel
+    for r in range(panel.rungs()):
+        if math.isclose(1.0 / panel.k(r), scale.units_per_mm, rel_tol=1e-9):
+            held = copy.copy(panel)
+            held.ratios = (panel.ratios[r],)
+            return held
+    return panel
 
 
 # ---- the given data ------------------------------------------------------------------------------------
