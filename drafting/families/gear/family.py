@@ -70,7 +70,7 @@ def _pair_notes(study) -> tuple[str, ...]:
     out.append(f"Interference: {verdict}.")
     lim = _pair_limits(pair)
     phi_deg = math.degrees(pair.pinion.system.pressure_angle)
-    words = (("External gears: least" if pair.internal else "Least") + f" pinion free of interference at {phi_deg:g} deg, addendum {pair.pinion.system.addendum:g} module: "
+    words = (("External gears: least" if pair.internal else "Least") + f" pinion free of interference at {phi_deg:g}\u00b0, addendum {pair.pinion.system.addendum:g} module: "
              f"{lim['pinion_with_rack']} teeth with a rack, {lim['equal_gears']} with an equal gear")
     if "pinion_with_this_gear" in lim:
         words += f", {lim['pinion_with_this_gear']} with this {pair.gear.teeth}-tooth gear"
