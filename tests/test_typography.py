@@ -57,3 +57,13 @@ def test_the_scale_cell_says_as_shown_when_each_drawing_carries_its_own():
     assert scale_cell([]).startswith("\u2014")
     assert scale_cell(["Space 1:2"]) == "Space 1:2"
     assert scale_cell(["Space 1:2", "velocity 1 mm = 10 mm/s"]) == "As shown"
+
+
+def test_a_number_keeps_its_unit_on_its_line():
+    from drafting.layout.wrap import words_of, wrap_words
+    assert words_of("T = 10.7 N × 59.99 mm = 0.6417 N m CW.") == ("T", "=", "10.7 N", "×", "59.99 mm", "=",
+                                                                  "0.6417 N m", "CW.")
+    assert words_of("V = 500 mm/s, at 70° (12.65 mm)") == ("V", "=", "500 mm/s,", "at", "70°", "(12.65 mm)")
+    for width in range(20, 80, 3):                        # however narrow the line, "N m" is never cut
+        lines = ["".join(s.text for s in line) for line in wrap_words("so T = 0.6417 N m CW", width, 3.5)]
+        assert not any(t.endswith(("N", "0.6417")) for t in lines), lines

@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Sequence
 
-from constructions.entities import Entity, Point
+from constructions.entities import BodyOutline, Entity, Point
 
 from ..render.errors import LayoutError
 from ..render.paper import Command, Rect, Rectangle
@@ -68,8 +68,13 @@ class Figure:
     @property
     def label_gap(self) -> float:
         """The least distance between two labelled points at different places (model units; inf when
-        fewer than two)."""
+        fewer than two): points with a label, and a free body's lettered pins and points and its caption."""
         pts = {(e.at.x, e.at.y) for e in self.entities if isinstance(e, Point) and e.label}
+        for e in self.entities:
+            if isinstance(e, BodyOutline):          # a free body's lettered pins and points, and its caption
+                pts.update((q.x, q.y) for _, q in e.pins + e.points)
+                if e.caption and e.caption_at is not None:
+                    pts.add((e.caption_at.x, e.caption_at.y))
         if len(pts) < 2:
             return math.inf
         tiny = 1e-9 * max(self.size, 1e-300)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import re
 from typing import Sequence
 
 from ..render.paper import Span, Text
@@ -72,7 +73,7 @@ def _plain_words(markup: str, size: float) -> list[str | None]:
 def _words(markup: str, size: float) -> tuple[tuple[tuple[Span, ...], float, float, float], ...]:
     """Each word of ``markup`` at ``size``: (spans, width, top, bottom), its extent as :func:`measure`
     takes it (from the baseline, 0 included)."""
-    return tuple(_word(w, size) for w in markup.split())
+    return tuple(_word(w, size) for w in words_of(markup))
 
 
 @functools.lru_cache(maxsize=4096)
@@ -115,7 +116,7 @@ def _wrap_splitting(markup: str, width: float, size: float) -> list[tuple[Span, 
     lines: list[list[list]] = []
     cur: list[list] = []
     cur_w = 0.0
-    for word in markup.split():
+    for word in words_of(markup):
         spans, w, _, _ = _word(word, size)
         if w > width:
             for piece in _split_long(word, width, size):
@@ -138,6 +139,28 @@ def _wrap_splitting(markup: str, width: float, size: float) -> list[tuple[Span, 
     if cur:
         lines.append(cur)
     return [tuple(Span(*r) for r in line) for line in lines]
+
+
+_NUMBER = re.compile(r"^[(\[]?[-\u2212]?\d[\d.]*(?:e[-+]?\d+)?$")
+_UNIT = re.compile(r"^(?:mm|cm|m|km|\u00b5m|um|in|ft|N|kN|lbf|kg|g|s|rad|rpm|deg|Hz)(?:/[a-z]+)?[\u00b2\u00b3]?"
+                   r"(?:/s[\u00b2]?)?[.,;:)\]]*$")
+_PRODUCT = re.compile(r"^(?:m|mm|in|ft)(?:[\u00b2]|/s)?[.,;:)\]]*$")
+
+
+@functools.lru_cache(maxsize=4096)
+def words_of(markup: str) -> tuple[str, ...]:
+    """The words a line may break between: the text's words, but a number kept with its unit and a
+    unit's parts together ("0.6417 N m", "500 mm/s"), as ISO 80000-1 sets them (never a unit alone at a
+    line's start)."""
+    out: list[str] = []
+    for w in markup.split():
+        if out and _UNIT.match(w) and _NUMBER.match(out[-1]):
+            out[-1] += " " + w
+        elif out and _PRODUCT.match(w) and re.search(r"\d (?:N|kN|lbf)$", out[-1]):
+            out[-1] += " " + w
+        else:
+            out.append(w)
+    return tuple(out)
 
 
 @functools.lru_cache(maxsize=16384)
