@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -398,3 +399,12 @@ def test_the_command_tunes_the_collector_of_its_own_process_only(tmp_path):
                          check=True).stdout.split()
     from drafting.app.parallel import GC_YOUNG
     assert out[-3:] == [str(GC_YOUNG), "True", "0"]
+
+
+def test_version(capsys):
+    """`drafting --version` names the installed version (issue 24)."""
+    with pytest.raises(SystemExit) as e:
+        main(["--version"])
+    assert e.value.code == 0
+    out = capsys.readouterr().out.strip()
+    assert re.fullmatch(r"drafting \d+\.\d+\.\d+\S*", out), out

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import argparse
+import importlib.metadata
 from pathlib import Path
 
 from .cam_export import add_export_arguments
@@ -46,11 +47,20 @@ PAGE = "html"
 """The step-through page (drafting.backends.html_page): asked for by --format html beside the sheets' formats."""
 
 
+def _version() -> str:
+    """The installed distribution's version (pyproject.toml's), or "unknown" when run from a bare tree."""
+    try:
+        return importlib.metadata.version("tom-drafting")
+    except importlib.metadata.PackageNotFoundError:
+        return "unknown"
+
+
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="drafting", description=(
         "Draw the graphical methods of the theory of machines step by step on true-scale sheets, "
         "checked against the analytic answer. With no command, renders the built-in example "
         "(the notes' slider-crank velocity Example 1) into ./drafting-output."))
+    p.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
     sub = p.add_subparsers(dest="command")
     r = sub.add_parser("render", help="render scene files to sheets (SVG, PDF, PNG)",
                        description="Render each scene to a sheet and print its results table.")
