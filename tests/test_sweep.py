@@ -261,3 +261,18 @@ def test_sweep_draws_the_cycle_sheet_on_request(tmp_path, capsys):
     assert cli.main(["sweep", str(FOUR_BAR), "--sheet", str(bad / "sub")]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--sheet" in err and "Traceback" not in err
+
+
+def test_the_csv_goes_round_one_turn_from_the_scene_angle_without_float_noise(tmp_path, capsys):
+    """From the scene's crank angle (60 deg) round one turn in 45 deg steps, written within the turn (375 ->
+    15), and every number to 12 significant digits: 60.0, not 59.99999999999999 (issue 24)."""
+    dest = tmp_path / "cycle.csv"
+    code, _, _ = _run(capsys, GALLERY / "cycle-four-bar.toml", "--steps", 8, "--csv", dest)
+    assert code == 0
+    body = list(csv.reader(dest.open(newline="", encoding="utf-8")))[1:]
+    assert [r[0] for r in body] == ["60.0", "105.0", "150.0", "195.0", "240.0", "285.0", "330.0", "15.0"]
+    cells = [c for r in body for c in r if c]
+    assert all(len(c.lstrip("-").replace(".", "").lstrip("0").split("e")[0]) <= 12 for c in cells), cells
+    from drafting.app.sweep_cmd import significant
+    assert significant(np.array([59.99999999999999, 10.000000000000007, 0.0, -1e-300, np.nan])).tolist()[:4] == \
+        [60.0, 10.0, 0.0, -1e-300]
