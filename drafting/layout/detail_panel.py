@@ -80,7 +80,7 @@ class DetailPanel(Panel):
         w, h = w + 2 * VIEW_PAD + 2, h + 2 * VIEW_PAD + 2
         if w > width + 1e-9:
             return None
-        hh = self.cache.header_height(width, self.heading(rung), self.ppu(rung), self.unit)
+        hh = self.cache.header_height(w, self.heading(rung), self.ppu(rung), self.unit)   # (as narrow as given)
         return None if hh is None else (w, h + hh)
 
     def min_width(self) -> float:
