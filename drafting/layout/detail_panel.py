@@ -56,18 +56,21 @@ class DetailPanel(Panel):
         d = 2.0 * max(x.radius for x in self.details) * 1000.0
         fits = [r for r in reversed(ISO_5455) if DETAIL_MIN_MM <= d * ratio_factor(r) <= DETAIL_MAX_MM]
         self.ratios = tuple(fits) or (min(ISO_5455, key=lambda r: abs(d * ratio_factor(r) - DETAIL_MIN_MM)),)
+        self.ks = tuple(1000.0 * ratio_factor(r) for r in self.ratios)       # paper mm per metre, by rung
+        self.headings = tuple(f"{self.title} {ratio_text(r)}" for r in self.ratios)
 
     def rungs(self) -> int:
-        return len(self.ratios)
+        return len(self.ks)
 
     def k(self, rung: int) -> float:
-        return 1000.0 * ratio_factor(self.ratios[rung])
+        return self.ks[rung]
 
     def heading(self, rung: int) -> str:
-        return f"{self.title} {ratio_text(self.ratios[rung])}"
+        return self.headings[rung]
 
     def ppu(self, rung: int) -> float:
-        return self.k(rung) / self.per_m
+        """Paper mm per display length unit."""
+        return self.ks[rung] / self.per_m
 
     def drawn_size(self, rung: int) -> Size:
         """The circles one over the other on paper, mm."""
