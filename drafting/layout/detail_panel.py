@@ -130,7 +130,7 @@ class DetailPanel(Panel):
             drawn.labels.extend(part.labels)
             a = math.radians(45.0)
             drawn.labels.append(LabelReq("point", det.letter, (disc.cx + disc.r * math.cos(a), disc.cy - disc.r * math.sin(a)),
-                                         True, det.name))
+                                         True, f"{det.name}: boundary"))
             drawn.hard.extend(part.hard)
         cmds.extend(drawn.commands)
         cmds.extend(place_labels(drawn, plot, region))
