@@ -205,7 +205,7 @@ class DetailsBeside:
         main, side, r = self.split(rung, rect)
         cmds, T = draw_space(main)
         dcmds, _ = self.details.render(r, side, region)
-        cmds.append(Line(side.x, side.y, side.x, side.bottom, "separator", f"{self.details.key}: separator"))
+        cmds.append(Line(side.x, side.y, side.x, side.bottom, "separator", "separator"))
         return cmds + dcmds, T
 
 

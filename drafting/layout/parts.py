@@ -33,6 +33,7 @@ ENTITY_KINDS: dict[type, tuple[str, str]] = {
     ent.Arc: ("arc", "arc"), ent.ScaleBar: ("scale-bar", "scale bar"), ent.Circle: ("circle", "circle"),
     ent.Curve: ("curve", "curve"), ent.Segment: ("segment", "line"), ent.Dimension: ("dimension", "dimension"),
     ent.AngleMark: ("angle", "angle"), ent.Note: ("note", "note"), ent.Chart: ("chart", "chart"),
+    ent.Detail: ("detail", "detail"),
 }
 
 #: Roles a title names before the noun ("V_C -- result vector"); the others say nothing the noun does not.
