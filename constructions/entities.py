@@ -236,6 +236,21 @@ class Note(Entity):
 
 
 @dataclass(frozen=True, slots=True)
+class Detail(Entity):
+    """A region of a diagram drawn again enlarged in a panel of its own (ISO 128: "Detail A"): its
+    ``centre`` and ``radius`` in model units and its ``letter``; the diagram marks the region with a thin
+    circle and the letter, the detail draws the diagram's own entities clipped to it."""
+
+    centre: Vec
+    radius: float
+    letter: str
+
+    @property
+    def title(self) -> str:
+        return f"Detail {self.letter}"
+
+
+@dataclass(frozen=True, slots=True)
 class Series:
     """One curve of a chart: y against x, both SI values of the named quantity kinds; NaN marks a gap."""
 

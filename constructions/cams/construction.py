@@ -37,6 +37,7 @@ from .laws import DWELL, TAU, Program
 from .envelope import evaluate
 from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower, drawn_follower
 from .profile import CamProfile, analyse
+from .details import details_words, profile_details
 
 CAM = Diagram("cam", "profile")
 
@@ -158,7 +159,9 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
                KNIFE: "through every knife-edge point (the pitch curve itself)",
                FLAT: "tangent to every face line (their envelope; its contact points marked)",
                OSC_FLAT: "tangent to every face line (their envelope; its contact points marked)"}[f.kind]
-    rec = rec.then(f"Draw the cam profile {tangent}.", curve, *marks)
+    details = profile_details(cp, CAM)
+    rec = rec.then(f"Draw the cam profile {tangent}{details_words(details)}.", curve, *marks,
+                   *(d for _, d in details))
     rec = _follower_step(rec, f, program, cp, centres, turn)
     label_every = max(1, n // 12)
     ell = f.arm_length if osc else f.pivot_distance if swing else 1.0

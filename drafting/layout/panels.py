@@ -29,6 +29,7 @@ from ..render.scales import ISO_5455, nice_values, number_text, ratio_factor, ra
 from ..render.style import LABEL
 from ..scene.unitset import Units
 from .chart import CHART_MIN, AxisUnits, draw_chart
+from .detail_panel import DetailsBeside, detail_panels
 from .formats import DiagramScale, per_si, symbol_of
 from .header import Header, viewport_header
 from .panel import Figure, Panel, PanelCache, Size, render_drawing
@@ -42,10 +43,12 @@ POLYGON_AIM_MM = 50.0   # ... and aims at a known vector at least this long
 
 
 class SpacePanel(Panel):
-    """A diagram drawn to a length scale (the space diagram) at an ISO 5455 scale."""
+    """A diagram drawn to a length scale (the space diagram) at an ISO 5455 scale (with its enlarged
+    details beside it when it has some: :class:`~drafting.layout.detail_panel.DetailsBeside`)."""
 
     kind = "space"
     priority = 0
+    beside: DetailsBeside | None = None
 
     def __init__(self, key: str, title: str, entities: Sequence[Entity], units, cache: PanelCache,
                  text: TextFn | None = None) -> None:
@@ -88,6 +91,11 @@ class SpacePanel(Panel):
         return self.k(rung) / self.per_m                      # paper mm per display length unit
 
     def need(self, rung: int, width: float) -> Size | None:
+        if self.beside is not None:
+            return self.beside.need(rung, width, self.own_need(rung, width - self.beside.min_width(rung)))
+        return self.own_need(rung, width)
+
+    def own_need(self, rung: int, width: float) -> Size | None:
         got = self.figure.fit(self.k(rung), width)
         if got is None:
             return None
@@ -114,6 +122,11 @@ class SpacePanel(Panel):
     def draw(self, rung: int, rect: Rect, region: str, header: Header):
         return render_drawing(self.figure, self.k(rung), header, rect, region,
                                self.heading(rung))
+
+    def render(self, rung: int, rect: Rect, region: str):
+        if self.beside is None or self.blank:
+            return super().render(rung, rect, region)
+        return self.beside.render(rung, rect, region, lambda main: super(SpacePanel, self).render(rung, main, region))
 
 
 VECTOR_TITLES = {"velocity": "Velocity polygon", "acceleration": "Acceleration polygon", "force": "Force polygon"}
@@ -275,6 +288,8 @@ def panels_for(construction, units, cache: PanelCache, text: TextFn | None = Non
         if quantity not in VECTOR_TITLES:          # drawn to a length scale: space, free body ...
             title = "Space diagram" if dg.kind == "space" and not dg.name else _title(dg.kind, dg.name)
             panels.append(SpacePanel(dg.key, title, drawn, units, cache, text))
+            for d in detail_panels(drawn, units, cache, text):
+                panels[-1].beside = DetailsBeside(panels[-1], d)
         else:
             upm = bar.units_per_mm if bar is not None else None
             fixed = upm if upm is not None and upm > 0 and math.isfinite(upm) else None

@@ -35,7 +35,7 @@ ENTITY_KINDS: dict[type, tuple[str, str]] = {
     ent.AngleMark: ("angle", "angle"), ent.Note: ("note", "note"), ent.Chart: ("chart", "chart"),
     ent.LinkNumber: ("link-number", "link number"), ent.BodyOutline: ("body", "free body"),
     ent.MomentArc: ("couple", "couple"), ent.RotationArrow: ("rotation", "sense of rotation"),
-    ent.FollowerBody: ("follower", "follower"),
+    ent.FollowerBody: ("follower", "follower"), ent.Detail: ("detail", "detail"),
 }
 
 #: Roles a title names before the noun ("V_C -- result vector"); the others say nothing the noun does not.

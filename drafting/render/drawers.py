@@ -28,6 +28,7 @@ from .symbols import BLOCK_H, BLOCK_L, ground_side, ground_symbol, hatching
 from .transform import Transform
 from . import annotations  # noqa: F401  (registers the drawers of dimensions, angle marks and notes)
 from . import body_drawers  # noqa: F401  (registers the drawers of free bodies and couples)
+from . import detail_mark  # noqa: F401  (registers the mark of a detail on its diagram)
 from . import link_drawers  # noqa: F401  (registers the drawers of bars, plates and link numbers)
 from . import machine_drawers  # noqa: F401  (registers the drawers of rotation arrows and followers)
 
