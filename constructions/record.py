@@ -119,18 +119,28 @@ class Step:
     entities: tuple[Entity, ...] = ()
     values: tuple[tuple[str, Value], ...] = ()
     kind: StepKind = StepKind.CONSTRUCTION
+    table: tuple[tuple[str, ...], ...] = ()     # a table the step sets out (its header row first), cells
+    # with $name placeholders like the words (the tabular method of a planetary train)
 
     def __post_init__(self) -> None:
         names = {k for k, _ in self.values}
-        for m in _PLACEHOLDER.finditer(self.words):
-            key = m["braced"] or m["plain"]
-            if key not in names:
-                raise ValueError(f"step words name ${key}, which has no value: {self.words!r}")
+        for text in (self.words, *(c for row in self.table for c in row)):
+            for m in _PLACEHOLDER.finditer(text):
+                key = m["braced"] or m["plain"]
+                if key not in names:
+                    raise ValueError(f"step words name ${key}, which has no value: {text!r}")
 
     def text(self, fmt: ValueFormatter = si_value_text) -> str:
         """The words with every value written by ``fmt``."""
+        return self._filled(self.words, fmt)
+
+    def table_text(self, fmt: ValueFormatter = si_value_text) -> tuple[tuple[str, ...], ...]:
+        """The step's table with every value written by ``fmt`` (empty when it sets out none)."""
+        return tuple(tuple(self._filled(c, fmt) for c in row) for row in self.table)
+
+    def _filled(self, text: str, fmt: ValueFormatter) -> str:
         vals = dict(self.values)
-        return _PLACEHOLDER.sub(lambda m: fmt(vals[m["braced"] or m["plain"]]), self.words)
+        return _PLACEHOLDER.sub(lambda m: fmt(vals[m["braced"] or m["plain"]]), text)
 
     @property
     def caption(self) -> str:
@@ -152,9 +162,10 @@ class Construction:
     steps: tuple[Step, ...] = ()
 
     def then(self, words: str, *entities: Entity, equation: VectorEquation | None = None,
-             values: Mapping[str, Value] | None = None, kind: StepKind = StepKind.CONSTRUCTION) -> "Construction":
+             values: Mapping[str, Value] | None = None, kind: StepKind = StepKind.CONSTRUCTION,
+             table: tuple[tuple[str, ...], ...] = ()) -> "Construction":
         """A new construction with one more step."""
-        return self.with_step(Step(words, equation, tuple(entities), tuple((values or {}).items()), kind))
+        return self.with_step(Step(words, equation, tuple(entities), tuple((values or {}).items()), kind, table))
 
     def with_step(self, step: Step) -> "Construction":
         names = {e.name for e in self.entities()}

@@ -50,6 +50,22 @@ class TrainAnalysis:
         return out
 
 
+def tabular_method(train: Train, sol, vals: dict) -> tuple[tuple[str, ...], ...]:
+    """The textbook's table of the tabular method, a column a member (the carrier first): row 1 the
+    carrier held and the reference member turned x (each member e_m x), row 2 everything locked and
+    turned with the carrier (n_c), the total n = n_c + e_m x as a value (its ``$t<i>`` added to ``vals``)."""
+    members = [train.carrier] + [m for m in train.members if m != train.carrier]
+    totals = []
+    for i, m in enumerate(members):
+        vals[f"t{i}"] = Value("angular velocity", sol.speeds[m])
+        totals.append(f"$t{i}")
+    return (("Operation", *(_member_label(train, m) for m in members)),
+            (f"{train.carrier} held, {sol.reference} turned x", *("0" if m == train.carrier else
+                                                                  f"{sol.values[m]:+.5g} x" for m in members)),
+            ("all locked, turned n_c", *("n_c" for _ in members)),
+            ("total n = n_c + e x", *totals))
+
+
 def _member_label(train: Train, m: str) -> str:
     gs = [g for g in train.gears if g.member == m]
     if not gs:
@@ -105,16 +121,16 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
         ref = sol.reference
         vals = {}
         if train.planetary:
-            rows = ", ".join(f"{m} {sol.values[m]:+.5g}x" for m in train.members)
-            words = (f"{case.name}: tabular method. Row 1, carrier {train.carrier} held, {_member_label(train, ref)} "
-                     f"turned x: {rows}. Row 2, all locked and turned with the carrier n_c. Total n = n_c + e x; ")
+            words = (f"{case.name}: tabular method (the table). Row 1, carrier {train.carrier} held, "
+                     f"{_member_label(train, ref)} turned x; row 2, all locked and turned with the carrier n_c; "
+                     f"the total n = n_c + e x. ")
             gv = "; ".join(f"{g.member} = $g{i}" for i, g in enumerate(case.givens))
             for i, g in enumerate(case.givens):
                 vals[f"g{i}"] = Value("angular velocity", g.speed)
-            words += f"given {gv}: n_c = $nc, x = $x."
+            words += f"Given {gv}: n_c = $nc, x = $x."
             vals["nc"] = Value("angular velocity", sol.carrier_speed)
             vals["x"] = Value("angular velocity", sol.x)
-            rec = rec.then(words, values=vals)
+            rec = rec.then(words, values=vals, table=tabular_method(train, sol, vals))
             held = [g.member for g in case.givens if g.speed == 0.0]
             driven = [g.member for g in case.givens if g.speed != 0.0]
             central = [m for m in train.members if m != train.carrier
