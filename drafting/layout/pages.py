@@ -149,6 +149,23 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     if picked is not None:
         return picked
     _check_blocks(paper, panels, sections, tb_height, cache)
+    # several pages, each with the same title block: planned with the widest block, then again with the
+    # narrowest a page took (a text column narrower than the block narrows it) until all agree
+    width = paper.title_block_max_width
+    for _ in range(3):
+        doc = _several_pages(plans, panels, sections, cache, prune)
+        widths = {round(pg.title_block.w, 6) for pg in doc.pages if pg.title_block is not None}
+        if len(widths) <= 1 or min(widths) >= width - 1e-6:
+            break
+        width = min(widths)
+        plans = _GroupPlans(BlockPaper(paper.name, paper.orientation, paper.width, paper.height, width),
+                            tb_height)
+    return doc
+
+
+def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache, prune: bool) -> Document:
+    """The best document of two or more pages (see :func:`plan_document`)."""
+    paper = plans.paper
     # several pages: the panels in order over the pages; text on the first, all, the last or no
     # diagram page, and pages of text only after them as needed
     best: tuple | None = None
@@ -185,6 +202,17 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     if best is None:
         raise LayoutError(f"the content does not fit on {MAX_PAGES} sheets of {paper.name} {paper.orientation}")
     return best[1]
+
+
+@dataclass(frozen=True, slots=True)
+class BlockPaper(Paper):
+    """A paper whose pages all take a title block ``block_width`` wide (one block for a document)."""
+
+    block_width: float = 0.0
+
+    @property
+    def title_block_max_width(self) -> float:
+        return self.block_width
 
 
 class _GroupPlans:
