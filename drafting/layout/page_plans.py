@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
-from ..render.paper import Paper, Rect
+from ..render.paper import TITLE_BLOCK_MAX_WIDTH, Paper, Rect
 from .fills import Fill, arrangements, fill, min_width, quality
 from .panel import Panel
 from .panels import SpacePanel
@@ -44,6 +44,13 @@ class PagePlan:
 
 
 TbHeight = Callable[[float, Sequence[Panel]], float]
+
+
+def widest_column(paper: Paper) -> float:
+    """The widest right-hand column a page gives text or diagrams over the title block: as wide as the
+    widest title block (the block itself may be narrower: ``paper.title_block_max_width``, one width
+    for a document's pages)."""
+    return min(TITLE_BLOCK_MAX_WIDTH, paper.frame.w)
 
 
 def _place_rows(fl: Fill, x: float, top: float, bottom: float, *, from_bottom: bool, space_top: bool,
@@ -132,7 +139,7 @@ def landscape_text_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeig
     F = paper.frame
     if not panels:
         return text_page(paper, panels, tb_height)
-    pref = min(paper.title_block_max_width, 0.5 * F.w) if text_width is None else text_width
+    pref = min(widest_column(paper), 0.5 * F.w) if text_width is None else text_width
     best = None
     for a in arrangements(panels):
         need_w = max(min_width(a), 100.0 if isinstance(panels[0], SpacePanel) else 0.0)
@@ -220,11 +227,13 @@ def diagram_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> 
         best = (fl.quality() + (F.h - h_tb - fl.used,), [(fl, F.x, F.top, F.h - h_tb)], tbw, h_tb)
     if paper.orientation == "landscape" and len(panels) >= 2:
         # the right column half the frame, the narrowest a title block takes, or as wide as the left
-        # column's drawings leave it (a tall mechanism keeps a narrow column, the polygons get the rest)
+        # column's drawings leave it (a tall mechanism keeps a narrow column, the polygons get the rest);
+        # the title block under it at most as wide
         narrowest_left = min(min(min_width(a) for a in arrangements(panels[:k])) for k in range(1, len(panels)))
-        widths = (min(tbw, 0.5 * F.w), TEXT_COL_MIN, min(tbw, F.w - narrowest_left))
+        col = widest_column(paper)
+        widths = (min(col, 0.5 * F.w), TEXT_COL_MIN, min(col, F.w - narrowest_left))
         for wt in dict.fromkeys(w for w in widths if w >= TEXT_COL_MIN):
-            h2 = tb_height(wt, panels)
+            h2 = tb_height(min(tbw, wt), panels)
             for k in range(1, len(panels)):
                 left = _best_fill(arrangements(panels[:k]), F.w - wt, F.h, climb=True)
                 right = _best_fill(arrangements(panels[k:]), wt, F.h - h2, climb=True) if left else None
@@ -233,7 +242,8 @@ def diagram_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> 
                 q = quality([(p, f.rungs[p.key]) for f in (left, right) for row in f.rows for p in row])
                 key = q + (F.h - left.used + F.h - h2 - right.used,)
                 if best is None or key > best[0]:
-                    best = (key, [(left, F.x, F.top, F.h), (right, F.right - wt, F.top, F.h - h2)], wt, h2)
+                    best = (key, [(left, F.x, F.top, F.h), (right, F.right - wt, F.top, F.h - h2)], min(tbw, wt),
+                            h2)
     if best is None:
         return None
     _, cols, tbw, h_tb = best

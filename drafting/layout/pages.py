@@ -24,11 +24,11 @@ from dataclasses import dataclass
 from typing import Callable, Sequence
 
 from ..render.errors import LayoutError
-from ..render.paper import Paper, Rect
+from ..render.paper import Paper, Rect, Text
 from ..render.scales import ratio_factor
-from .flow import TEXT_SIZES, FlowText, flow, flow_shrinking, page_slot, slot_page
+from .flow import TEXT_SIZES, FlowText, flow, flow_shrinking, item_height, layout_item, page_slot, slot_page
 from .fills import quality, smallest_fill
-from .items import Section
+from .items import Section, TooWide
 from .page_plans import PagePlan, TbHeight, diagram_page, text_page, text_page_options
 from .panel import Panel
 from .panels import SpacePanel, VectorPanel
@@ -36,6 +36,13 @@ from .panels import SpacePanel, VectorPanel
 COMFORTABLE_LETTERING = 3.0
 """Lettering below this is taken only when nothing else fits."""
 MAX_PAGES = 12
+MOST_BARE = 0.55
+"""A page of a document with more of its frame than this left blank, as planned, is *bare* (the critic's
+blank page is over half blank; the plan's measure, :func:`blank_shares`, leaves out the white between
+items of text and so runs up to 0.05 higher): of two documents of as many pages, the one with fewer
+bare pages is taken."""
+TEXT_MARGIN = 2.0
+"""The white each side of a block of text that reads as part of it (the critic's block margin), mm."""
 
 
 @dataclass
@@ -142,6 +149,23 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
     if picked is not None:
         return picked
     _check_blocks(paper, panels, sections, tb_height, cache)
+    # several pages, each with the same title block: planned with the widest block, then again with the
+    # narrowest a page took (a text column narrower than the block narrows it) until all agree
+    width = paper.title_block_max_width
+    for _ in range(3):
+        doc = _several_pages(plans, panels, sections, cache, prune)
+        widths = {round(pg.title_block.w, 6) for pg in doc.pages if pg.title_block is not None}
+        if len(widths) <= 1 or min(widths) >= width - 1e-6:
+            break
+        width = min(widths)
+        plans = _GroupPlans(BlockPaper(paper.name, paper.orientation, paper.width, paper.height, width),
+                            tb_height)
+    return doc
+
+
+def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache, prune: bool) -> Document:
+    """The best document of two or more pages (see :func:`plan_document`)."""
+    paper = plans.paper
     # several pages: the panels in order over the pages; text on the first, all, the last or no
     # diagram page, and pages of text only after them as needed
     best: tuple | None = None
@@ -164,17 +188,31 @@ def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: Tb
                 doc = _document(plans, groups, mode, sections, cache)
                 if doc is None:
                     continue
-                # fewest pages; then the drawings kept together on as few pages as hold them (a reader
-                # compares the polygons with the space diagram), then comfortable lettering, the largest
+                # fewest pages; then no page left mostly blank (the text beside the diagrams it
+                # speaks of, rather than a last page of a few lines); then the drawings kept together
+                # on as few pages as hold them (a reader compares the polygons with the space
+                # diagram), then comfortable lettering, the largest
                 # diagrams, the largest lettering
                 drawing_pages = sum(1 for pg in doc.pages if pg.panels)
-                key = (-doc.count, -drawing_pages, doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
+                bare = _bare_pages(paper, doc, sections, cache)
+                key = (-doc.count, -bare, -drawing_pages, doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
                     doc.size, -doc.empty_columns(), -m)
                 if best is None or key > best[0]:
                     best = (key, doc)
     if best is None:
         raise LayoutError(f"the content does not fit on {MAX_PAGES} sheets of {paper.name} {paper.orientation}")
     return best[1]
+
+
+@dataclass(frozen=True, slots=True)
+class BlockPaper(Paper):
+    """A paper whose pages all take a title block ``block_width`` wide (one block for a document)."""
+
+    block_width: float = 0.0
+
+    @property
+    def title_block_max_width(self) -> float:
+        return self.block_width
 
 
 class _GroupPlans:
@@ -209,7 +247,7 @@ def _best_possible(plans: _GroupPlans, groups, mode: str, has_text: bool) -> tup
     some group has no plan at all.  Each of its components bounds the real key's: the pages (at least
     the groups, one more for text when no group takes it), every group a drawing page, comfortable
     lettering, each panel at the largest scale any plan of its group draws it, the largest lettering,
-    no empty column."""
+    no empty column, no bare page."""
     m = len(groups)
     scales: dict[int, float] = {}
     sizes: dict[int, float] = {}
@@ -229,7 +267,7 @@ def _best_possible(plans: _GroupPlans, groups, mode: str, has_text: bool) -> tup
     best_quality = (round(min(space, 1.0), 9), round(min(free), 6) if free else 0.0, round(space, 9),
                     round(sum(free), 6))
     pages = m + (1 if has_text and mode == "none" else 0)
-    return (-pages, -m, True) + best_quality + (TEXT_SIZES[0], 0, -m)
+    return (-pages, 0, -m, True) + best_quality + (TEXT_SIZES[0], 0, -m)
 
 
 def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | None:
@@ -282,6 +320,50 @@ def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | N
                 if g2 is not None and g2[1] >= got[1] - 1e-9:
                     pages, got = cand, g2
     return Document(pages, got[0], got[1])
+
+
+def _bare_pages(paper: Paper, doc: Document, sections: FlowText, cache) -> int:
+    """How many of ``doc``'s pages leave more than :data:`MOST_BARE` of the frame blank (see
+    :func:`blank_shares`)."""
+    return sum(1 for b in blank_shares(paper, doc, sections, cache) if b > MOST_BARE)
+
+
+def blank_shares(paper: Paper, doc: Document, sections: FlowText, cache) -> list[float]:
+    """The share of the frame each of ``doc``'s pages leaves blank, as planned: the title block covers
+    its rectangle; a panel its width from the top of its heading to the foot of its drawing (the room the
+    drawing needs at its rung, centred in what the heading leaves); an item of text its height across
+    its lines' width (:func:`_text_width`); the rest is blank."""
+    F = paper.frame
+    covered = [0.0] * doc.count
+    for i, pg in enumerate(doc.pages):
+        if pg.title_block is not None:
+            covered[i] += pg.title_block.w * pg.title_block.h
+        for p, r, rect in pg.panels:
+            got = p.need(r, rect.w)
+            h = rect.h if got is None else (rect.h + min(got[1], rect.h)) / 2
+            covered[i] += rect.w * h
+    if doc.text:
+        slots = dict(slots_of(doc.pages))
+        items = [item for group in sections.groups for item in group]
+        for item, slot in zip(items, doc.text):
+            r = slots[slot]
+            try:
+                covered[int(slot_page(slot))] += (_text_width(item, r.w, doc.size, cache)
+                                                  * item_height(item, r.w, doc.size, cache))
+            except TooWide:             # (never placed so: the flow measured it)
+                continue
+    return [1.0 - c / (F.w * F.h) for c in covered]
+
+
+def _text_width(item, width: float, size: float, cache) -> float:
+    """The width ``item``'s lines cover set ``width`` wide at ``size`` (with :data:`TEXT_MARGIN` each
+    side, at most ``width``), remembered in ``cache``."""
+    key = ("text width", item, round(width, 6), size)
+    if key not in cache:
+        boxes = [c.box for c in layout_item(item, width, size, cache).commands if isinstance(c, Text)]
+        cache[key] = width if not boxes else min(width, max(b.right for b in boxes) - min(b.left for b in boxes)
+                                                 + 2 * TEXT_MARGIN)
+    return cache[key]
 
 
 def _check_blocks(paper, panels, sections, tb_height, cache) -> None:
