@@ -14,6 +14,8 @@ from constructions.gears.train_check import torque_check, velocity_check
 from constructions.gears.train_drawing import Case, train_analysis
 from constructions.gears.trains import Given, Train, TrainGear, TrainMesh, layout, solve_train
 
+from paths import GALLERY
+
 RPM = 2 * math.pi / 60
 DEG = math.pi / 180
 
@@ -149,3 +151,30 @@ def test_the_tabular_method_is_written_step_by_step():
     words = " ".join(s.caption for s in a.construction.steps)
     assert "tabular method" in words and "Row 1, carrier C held" in words and "n_S/n_C = 5" in words
     assert {m.name for m in a.measured()} == {"omega_S", "omega_P", "omega_R", "omega_C"}
+
+
+def test_the_tabular_method_is_set_out_as_the_textbook_table():
+    """Each planetary case's step carries the table (issue 23): a column a member, row 1 e_m x with the
+    carrier held, row 2 n_c for all, the total row each member's speed -- equal to the solved speeds -- and
+    the sheet sets it under its step as a table."""
+    import drafting
+    from drafting.layout.sections import text_sections
+    from drafting.layout.formats import SheetFormatter
+    study = drafting.load(GALLERY / "planetary-each-member-held.toml")
+    tabled = [s for s in study.construction.steps if s.table]
+    assert len(tabled) == 3
+    u = study.scene.units
+    for s in tabled:
+        head, held, locked, total = s.table
+        assert head[0] == "Operation" and head[1].startswith("carrier") and held[1] == "0"
+        assert all(c == "n_c" for c in locked[1:])
+        vals = dict(s.values)
+        speeds = [vals[c[1:]].value for c in total[1:]]
+        assert speeds[0] == pytest.approx(vals["nc"].value, abs=1e-12)
+        # e_m x + n_c is each member's speed
+        x = vals["x"].value
+        for e_text, speed in zip(held[2:], speeds[1:]):
+            assert float(e_text.split()[0]) * x + vals["nc"].value == pytest.approx(speed, rel=1e-4, abs=1e-9)
+    secs = text_sections(study.construction, (), (), SheetFormatter(u))
+    tables = [it for sec in secs for it in sec.items if getattr(it, "name", "").endswith(" table")]
+    assert len(tables) == 3 and tables[0].rows[-1][0].startswith("total")

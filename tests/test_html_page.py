@@ -143,7 +143,7 @@ def test_in_headless_chromium_no_value_shows_before_its_step(tmp_path):
     import html
     import json
     from drafting.layout.formats import SheetFormatter
-    from drafting.layout.sheet import step_text
+    from drafting.layout.sections import step_text
     scene = GALLERY / "notes-velocity-example-1.toml"
     assert main(["render", str(scene), "-o", str(tmp_path), "--format", "html"]) == 0
     page = tmp_path / "notes-velocity-example-1.html"

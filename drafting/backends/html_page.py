@@ -25,7 +25,8 @@ from .html_markup import asset, markup_html, script_json
 from .html_sweep import sweep_section
 from ..layout.formats import SheetFormatter
 from ..layout.parts import Ids, entity_of, part_of
-from ..layout.sheet import Sheet, step_text
+from ..layout.sections import step_text
+from ..layout.sheet import Sheet
 from .svg import sheet_to_svg
 
 #: What the sheet shows only with the last step: read off the finished construction.

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field, fields, replace
 from types import MappingProxyType
 from typing import Mapping, Sequence
 
-from constructions.entities import Entity, ScaleBar
+from constructions.entities import Entity
 from constructions.record import Construction, Step
 
 from ..render.errors import LayoutError
@@ -39,12 +39,12 @@ from ..scene.units import check_unit
 from ..scene.unitset import KEYS, Units
 from .flow import TEXT_SIZES, flow_shrinking, slot_page, slot_region
 from .formats import DiagramScale, SheetFormatter, ValueHook
-from .items import MARK_NO, MARK_YES, EquationItem, Item, Paragraph, Section, TableItem
 from .page_plans import PagePlan
 from .pages import Document, plan_document, slots_of
 from .panel import Panel, PanelCache
 from .panels import VectorPanel, panels_for
 from .parts import entity_kinds
+from .sections import step_formatter, text_sections
 from .title_block import scale_cell, title_block, title_block_height
 
 __all__ = ["ResultRow", "SheetInfo", "Sheet", "compose_sheets", "compose_sheet", "LayoutError"]
@@ -159,57 +159,6 @@ class Sheet:
 
 # ---- text -------------------------------------------------------------------------------------------
 
-def _step_formatter(fmt: SheetFormatter, step: Step) -> SheetFormatter:
-    """The formatter of one step: its scale and paper-length values prefer the step's own diagrams."""
-    keys = tuple(e.diagram.key for e in step.entities if isinstance(e, ScaleBar)) + \
-        tuple(dict.fromkeys(e.diagram.key for e in step.entities))
-    return fmt.preferring(keys) if keys else fmt
-
-
-def step_text(step: Step, fmt: SheetFormatter) -> str:
-    """A step's words with its values written by ``fmt`` (a step with no values is its words)."""
-    words = getattr(step, "words", None)
-    if words is None:                                  # a record without values apart
-        return step.caption
-    if not step.values:
-        return words
-    return step.text(_step_formatter(fmt, step))
-
-
-def _sections(construction: Construction, results: Sequence[ResultRow], notes: Sequence[str],
-              fmt: SheetFormatter, given: Sequence[str] = ()) -> list[Section]:
-    secs: list[Section] = []
-    if given:
-        secs.append(Section("Given", tuple(
-            Paragraph(t, label="\u2013", label_chars="\u2013", name=f"given {i + 1}") for i, t in enumerate(given))))
-    eqs = construction.equations
-    if eqs:
-        items: list[Item] = [EquationItem(eq, name=f"equation {i + 1}") for i, eq in enumerate(eqs)]
-        items.append(Paragraph(f"Marks over each vector: magnitude, then direction; "
-                                 f"{MARK_YES} known, {MARK_NO} unknown.", name="equation legend"))
-        secs.append(Section("Vector equations", tuple(items)))
-    texts = [t for t in (step_text(s, fmt).strip() for s in construction.steps) if t]
-    if texts:
-        n = len(texts)
-        secs.append(Section("Construction", tuple(
-            Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}")
-            for i, t in enumerate(texts))))
-    if results:
-        has_note = any(r.note for r in results)
-        header = ("Quantity", "Graphical", "Analytic", "Difference", "Note")
-        rows = [(r.quantity, r.graphical, r.analytic, r.difference, r.note) for r in results]
-        align = ("l", "r", "r", "r", "l")
-        # a column with nothing in it is not printed (a problem sheet leaves only the answer's column)
-        keep = [i for i in range(5) if i == 0 or any(row[i] for row in rows)]
-        secs.append(Section("Results", (TableItem(
-            tuple(header[i] for i in keep), tuple(tuple(row[i] for i in keep) for row in rows),
-            tuple(align[i] for i in keep), wrap_last=has_note),)))
-    if notes:
-        secs.append(Section("Notes", tuple(
-            Paragraph(t, label="\u2013", label_chars="\u2013", name=f"note {i + 1}") for i, t in enumerate(notes))))
-    return secs
-
-
 def _entity_text(construction: Construction, fmt: SheetFormatter):
     """Words of an entity (dimension, angle mark, note) with the values of the step that adds it."""
     step_of: dict[str, Step] = {}
@@ -222,7 +171,7 @@ def _entity_text(construction: Construction, fmt: SheetFormatter):
         if "$" not in words or s is None or not s.values:
             return words
         try:
-            return Step(words, values=s.values).text(_step_formatter(fmt, s))
+            return Step(words, values=s.values).text(step_formatter(fmt, s))
         except (ValueError, KeyError):
             return words
     return text
@@ -286,7 +235,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     if panel_hook is not None:
         panels = list(panel_hook(panels))
     probe = SheetFormatter(units, {}, values, probe=True)
-    sections = _sections(construction, results, info.notes, probe, given)
+    sections = text_sections(construction, results, info.notes, probe, given)
     summary = _units_summary(units, construction, panels, unit_kinds)
 
     def tb_fields(scale_text: str, n: int = 1, m: int = 1):
@@ -308,7 +257,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     doc = plan_document(pp, panels, sections, tb_height, cache=text_cache)
     scales = {p.key: p.scale(r) for pg in doc.pages for p, r, _ in pg.panels if p.scale(r) is not None}
     fmt = SheetFormatter(units, scales, values)
-    real = _sections(construction, results, info.notes, fmt, given)
+    real = text_sections(construction, results, info.notes, fmt, given)
     text_cmds, size = _reflow(real, doc, text_cache)
     m = doc.count
     first = info.sheet if m == 1 else None
