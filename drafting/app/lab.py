@@ -34,11 +34,10 @@ from constructions.record import Construction, Step, StepKind
 
 from .answers import KeyItem, key_items
 from ..render.errors import LayoutError
-from ..render.scales import ratio_factor
 from ..layout.sheet import ResultRow, Sheet, SheetInfo, compose_sheets, sheet_date
 from ..families.registry import family
 from ..study.study import Study
-from ..layout.panels import SpacePanel, VectorPanel
+from ..layout.panels import held_to
 
 BLANK = "________"
 """What a problem sheet writes for a value the student finds."""
@@ -97,7 +96,7 @@ def item_cells(i: KeyItem, units) -> list[str]:
 def _info(study: Study, date: str, title: str, number: str, notes: Sequence[str]) -> SheetInfo:
     s = study.scene
     return SheetInfo(title=title, drawing_number=number, paper=s.paper, orientation=s.orientation, date=date,
-                     units=s.units, notes=tuple(notes))
+                     units=s.units, notes=tuple(notes), scales=s.scales)
 
 
 def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
@@ -189,16 +188,8 @@ def _hook(shown: set):
 def blank_panel(panel, scale=None):
     """``panel`` framed empty (its heading, scale and scale bar; nothing drawn); held at ``scale`` (a
     DiagramScale of the worked sheet) when given."""
-    b = copy.copy(panel)
+    b = copy.copy(held_to(panel, scale.units_per_mm) if scale is not None else panel)
     b.blank = True
-    if scale is not None:
-        if isinstance(panel, VectorPanel) and panel.fixed is None:
-            b.values = (scale.per_mm,)
-        elif isinstance(panel, SpacePanel):
-            same = [r for r in panel.ratios
-                    if math.isclose(1.0 / (1000.0 * ratio_factor(r)), scale.units_per_mm, rel_tol=1e-9)]
-            if same:
-                b.ratios = (same[0],)
     return b
 
 
@@ -210,8 +201,8 @@ def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[K
     info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
 
     def held(panels):
-        return [_at_scale(p, scales.get(p.key)) if p.key == "space" else blank_panel(p, scales.get(p.key))
-                for p in panels]
+        return [(held_to(p, scales["space"].units_per_mm) if "space" in scales else p) if p.key == "space"
+                else blank_panel(p, scales.get(p.key)) for p in panels]
 
     def free(panels):
         return [p if p.key == "space" else blank_panel(p) for p in panels]
@@ -219,20 +210,6 @@ def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[K
         return compose_sheets(c, info, rows, values=_hook(shown), panel_hook=held, given=given)
     except LayoutError:                       # the worked sheet's scales do not fit beside the givens
         return compose_sheets(c, info, rows, values=_hook(shown), panel_hook=free, given=given)
-
-
-def _at_scale(panel, scale):
-    """The space diagram's panel held to the worked sheet's ISO scale (its one rung), so a length read off
-    the problem sheet is the length read off the worked one; the panel itself when that scale is not one of
-    its rungs."""
-    if scale is None:
-        return panel
-    for r in range(panel.rungs()):
-        if math.isclose(1.0 / panel.k(r), scale.units_per_mm, rel_tol=1e-9):
-            held = copy.copy(panel)
-            held.ratios = (panel.ratios[r],)
-            return held
-    return panel
 
 
 # ---- the given data ------------------------------------------------------------------------------------

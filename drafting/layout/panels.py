@@ -18,6 +18,7 @@ every kind is, and the placing of a drawing in its rectangle, are in :mod:`draft
 
 from __future__ import annotations
 
+import copy
 import math
 from typing import Sequence
 
@@ -314,3 +315,28 @@ def fit_space(entities: tuple[Entity, ...], w: float, h: float, units=None):
             return p.ratios[r], got[1]
     return None
 
+
+
+def held_to(panel: Panel, upm: float) -> Panel:
+    """``panel`` drawn at one scale only, ``upm`` SI units per paper mm: a scene's stated scale, or a problem
+    sheet held to its worked sheet's.  A length diagram takes the ISO 5455 ratio it names (or the ratio
+    itself, 1:2.5), a polygon that many units a millimetre; other panels are returned as they are."""
+    held = copy.copy(panel)
+    if isinstance(panel, SpacePanel):
+        same = [r for r in panel.ratios if math.isclose(1.0 / (1000.0 * ratio_factor(r)), upm, rel_tol=1e-9)]
+        if same:
+            held.ratios = (same[0],)
+        else:
+            factor = 1.0 / (1000.0 * upm)                    # paper per true length
+            held.ratios = ((_plain(factor), 1) if factor >= 1 else (1, _plain(1.0 / factor)),)
+        return held
+    if isinstance(panel, VectorPanel):
+        held.fixed, held.values = upm, (upm * panel.f,)
+        return held
+    return panel
+
+
+def _plain(x: float) -> float | int:
+    """A ratio's term as written: 2 not 2.0, 2.5 as it is."""
+    r = round(x, 9)
+    return int(r) if r == int(r) else r

@@ -42,7 +42,7 @@ from .formats import DiagramScale, SheetFormatter, ValueHook
 from .page_plans import PagePlan
 from .pages import Document, plan_document, slots_of
 from .panel import Panel, PanelCache
-from .panels import VectorPanel, panels_for
+from .panels import VectorPanel, held_to, panels_for
 from .parts import entity_kinds
 from .sections import step_formatter, text_sections
 from .title_block import scale_cell, title_block, title_block_height
@@ -95,6 +95,7 @@ class SheetInfo:
     units: Units = field(default_factory=Units)
     created_by: str = "drafting"
     notes: tuple[str, ...] = ()
+    scales: tuple[tuple[str, float], ...] = ()   # the scales the scene states: (diagram, SI units per paper mm)
 
     def __post_init__(self) -> None:
         n, m = self.sheet
@@ -231,7 +232,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     units = info.units
     cache = PanelCache()
     entity_fmt = SheetFormatter(units, {}, values)
-    panels = panels_for(construction, units, cache, _entity_text(construction, entity_fmt))
+    panels = stated(panels_for(construction, units, cache, _entity_text(construction, entity_fmt)), info.scales)
     if panel_hook is not None:
         panels = list(panel_hook(panels))
     probe = SheetFormatter(units, {}, values, probe=True)
@@ -264,6 +265,20 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
     kinds = MappingProxyType(entity_kinds(construction))
     return tuple(replace(_render_page(pp, info, pg, i, m, text_cmds, size, tb_fields, first), entities=kinds)
                  for i, pg in enumerate(doc.pages))
+
+
+def stated(panels: list[Panel], scales) -> list[Panel]:
+    """``panels``, each held to the scale the scene states for its diagram ("force" holds every force
+    polygon); a :class:`LayoutError` naming ``drawing.scale.<key>`` when the sheet draws no such diagram."""
+    out = list(panels)
+    for key, upm in scales:
+        hit = [i for i, p in enumerate(out) if p.key == key or p.key.startswith(key + ":")]
+        if not hit:
+            raise LayoutError(f"drawing.scale.{key}: the sheet draws no {key} diagram (it draws "
+                              f"{', '.join(p.key for p in panels)})")
+        for i in hit:
+            out[i] = held_to(out[i], upm)
+    return out
 
 
 def _probe_scale(p: Panel) -> str:

@@ -20,6 +20,7 @@ from ..families.registry import Family, families, family
 from .unitset import KEYS as UNIT_KEYS, Units
 from . import limits
 from .textsafe import cut, cut_middle, one_line, printable
+from .drawing_scales import read_scales
 from .units import UnitError, check_unit, to_si
 
 PLANNED_KINDS = (
@@ -63,6 +64,7 @@ class Scene:
     kind: str
     dimensions: bool | None          # [drawing] dimensions: the space diagram dimensioned as a drafter would
                                      # (None: not said; a problem sheet dimensions it then)
+    scales: tuple[tuple[str, float], ...]   # [drawing] scale: (diagram, SI units per paper mm) it states
 
     def _repr_html_(self) -> str:
         """Jupyter: what the scene is (a Study shows what it gives)."""
@@ -252,7 +254,7 @@ class SceneReader:
         unknown = sorted(set(self.data) - allowed)
         if unknown:
             raise self.fail(unknown[0], f"unknown key; a {kind} scene has {', '.join(sorted(allowed))}")
-        drawing = self.table("drawing", {"title", "number", "paper", "orientation", "dimensions"})
+        drawing = self.table("drawing", {"title", "number", "paper", "orientation", "dimensions", "scale"})
         title = self.text("drawing.title", drawing.get("title", self.path.stem))
         number = self.text("drawing.number", drawing.get("number", "TOM-000"))
         paper = drawing.get("paper", "A4")
@@ -265,6 +267,7 @@ class SceneReader:
         if dimensions is not None and not isinstance(dimensions, bool):
             raise self.fail("drawing.dimensions", "must be true or false (dimension the space diagram)")
         units = self.units()
+        scales = read_scales(self, drawing.get("scale"), units)
         self.ranges(fam, kind, units)
         state = fam.read(self, units)
         ask = self.table("ask", {"analyses", "find"})
@@ -281,7 +284,7 @@ class SceneReader:
         if find is not None and (not isinstance(find, list) or not all(isinstance(f, str) for f in find)):
             raise self.fail("ask.find", "must be a list of quantities, e.g. [\"V_C\", \"omega_2\"]")
         return fam.scene_type(self.path, title, number, paper, orientation, units, tuple(dict.fromkeys(analyses)),
-                              tuple(find) if find is not None else None, kind, dimensions, **state)
+                              tuple(find) if find is not None else None, kind, dimensions, scales, **state)
 
     def ranges(self, fam: Family, kind: str, units: Units) -> tuple:
         """The scene's ``[vary]`` ranges, read by its family (empty when it has none)."""
