@@ -126,11 +126,22 @@ def _lowest_priority() -> None:
     os.nice(19)
 
 
-def _start(out: Path, scenes: list[Path], *extra: str, text: bool = True) -> subprocess.Popen:
+SLOW_FSYNC = ("import os, sys, time\n_fsync = os.fsync\n"
+              "def _slow(*a, **k):\n    time.sleep({delay})\n    return _fsync(*a, **k)\n"
+              "os.fsync = _slow\nfrom drafting.app.cli import main\nsys.exit(main(sys.argv[1:]))")
+"""The command with every flush of a temporary file to the disk delayed (the test's own wrapper; drafting
+is not changed): a temporary file stands that long before the renames (which hold signals back until all
+are done), so a watcher sees the moment in wall time however loaded the machine."""
+
+
+def _start(out: Path, scenes: list[Path], *extra: str, text: bool = True,
+           slow_fsync: float = 0.0) -> subprocess.Popen:
     """``drafting render`` in a process group of its own (it and its workers can be stopped together), at
-    the lowest priority (:func:`_lowest_priority`)."""
+    the lowest priority (:func:`_lowest_priority`); each temporary file held ``slow_fsync`` seconds
+    before it is complete when given (:data:`SLOW_FSYNC`)."""
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONPATH": str(ROOT)}
-    return subprocess.Popen([sys.executable, "-m", "drafting.app.cli", "render", *map(str, scenes), "-o", str(out), *extra],
+    run = ["-c", SLOW_FSYNC.format(delay=slow_fsync)] if slow_fsync else ["-m", "drafting.app.cli"]
+    return subprocess.Popen([sys.executable, *run, "render", *map(str, scenes), "-o", str(out), *extra],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=text, env=env, cwd=ROOT,
                             start_new_session=True, preexec_fn=_lowest_priority)
 
@@ -393,7 +404,7 @@ def test_sigterm_while_the_page_is_written_leaves_no_sheet(tmp_path):
     stood under their final names when the page was cut off."""
     out = tmp_path / "out"
     scene = VELOCITY[0]
-    p = _start(out, [scene], "--format", "svg,html")
+    p = _start(out, [scene], "--format", "svg,html", slow_fsync=0.5)
     page_begun = lambda: any(n.endswith(".html") for n in temporaries(out)) and not _written(out, scene, "svg")  # noqa: E731
     _, stderr, _ = signal_at(p, page_begun, "the page's temporary file exists", signal.SIGTERM)
     assert p.returncode == 143, stderr
