@@ -13,6 +13,7 @@ from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident
 from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
+from .label_kin import Kin
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -144,9 +145,11 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     """
     placed: list[Rect] = []
     out: list[Command] = []
+    leaders: list[Command] = []
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
                                                         ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
     segs = _Segments(d.segments)
+    kin = Kin(d) if d.labels else None
     for i in order:
         req = d.labels[i]
         spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
@@ -160,9 +163,12 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
-        for relax in (0, 1):
-            best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
-                                   near_placed, near_hard, near_segs, req.mandatory)
+        for heavy_ok, clear in _tiers(req, kin.test(req, reach, LABEL_PAD)):
+            for relax in (0, 1):
+                best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
+                                       near_placed, near_hard, near_segs, heavy_ok, clear)
+                if best is not None:
+                    break
             if best is not None:
                 break
         if best is None:
@@ -187,8 +193,18 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
         leader = _leader(req, box)
         if leader is not None:
-            out.append(leader)
-    return out
+            leaders.append(leader)
+    return leaders + out            # the leaders first: under every label's white ground, never over a text
+
+
+def _tiers(req: LabelReq, clear):
+    """The searches a label's candidates go through, strictest first, as (heavy_ok, test): hiding no
+    heavy line and unambiguous; then hiding no heavy line; then (a mandatory label only) anything."""
+    if clear is not None:
+        yield False, clear
+    yield False, None
+    if req.mandatory:
+        yield True, None
 
 
 SHORT_ARROW = 5.0
@@ -211,10 +227,11 @@ def _leader(req: LabelReq, box: Rect) -> Line | None:
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
-                    near_hard: list[Rect], near_segs: "_Segments", mandatory: bool):
+                    near_hard: list[Rect], near_segs: "_Segments", heavy_ok: bool, clear=None):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
-    or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
-    part of a thick line.  A score is the candidate's cost plus what it hides of the lines (never
+    or None when every one leaves the plot, overlaps a label or a symbol, hides part of a thick line
+    (unless ``heavy_ok``) or fails ``clear(left, top, right, bottom)`` (the ambiguity test, see
+    :mod:`~drafting.layout.label_kin`; measured last, and only for a candidate that would win).  A score is the candidate's cost plus what it hides of the lines (never
     negative), so the candidates are tried cheapest first and the search stops at the first whose cost
     exceeds the best score found: most labels are placed by their first few candidates, and only their
     centres are made.  The arithmetic of a score is the exhaustive test's, operation for operation, so
@@ -251,10 +268,12 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
                     thick += got
                 else:
                     thin += got
-        if not mandatory and thick > 0:         # an optional label never hides part of a thick line
+        if not heavy_ok and thick > 0:          # it would hide part of a link or a vector
             continue
         total = cost + 3.0 * thin + 20.0 * thick
         if total < best_total or (total == best_total and i < best_i):
+            if clear is not None and not clear(le, to, ri, bo):
+                continue                        # as near another entity of its kind as its own
             best_total, best_i = total, i
     if best_i < 0:
         return None
