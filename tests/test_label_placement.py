@@ -84,6 +84,8 @@ def reference_candidates(req, hw, hh, incident, relax):
                     nn = (n[0] * side, n[1] * side)
                     yield (shifted(a, nn, dist + 0.3 + _edge(nn, hw, hh)),
                            3.0 * abs(f - 0.5) + 0.8 * dist + (side < 0) * 0.1)
+        for dist in dists[:3] if relax == 0 else dists:
+            yield shifted(tip, u, dist + 0.3 + _edge(u, hw, hh)), 1.7 + 0.8 * dist
     elif req.kind == "trial":
         end, start = req.anchor, req.other
         v = unit_vector((start[0] - end[0], start[1] - end[1]))
@@ -179,3 +181,24 @@ def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, se
         assert got is None
     else:
         assert got is not None and (got[0], got[1]) == want
+
+
+@settings(max_examples=300, deadline=None)
+@given(element, box)
+def test_the_ambiguity_distances_are_the_distances_shapely_measures(g, bx):
+    """A label's distance to a point, a circle's curve or a segment, against shapely's."""
+    from shapely.geometry import LineString, Point, box as sbox
+    from drafting.layout.label_kin import _distance
+    left, top, w, h = bx
+    got = _distance(g, left, top, left + w, top + h)
+    b = sbox(left, top, left + w, top + h)
+    if len(g) == 2 and not isinstance(g[0], tuple):
+        want = Point(g).distance(b)
+    elif len(g) == 3:
+        ring = Point(g[0], g[1]).buffer(g[2], quad_segs=512).exterior
+        want = ring.distance(b)
+    elif g[0] == g[1]:
+        want = Point(g[0]).distance(b)
+    else:
+        want = LineString(g).distance(b)
+    assert got == pytest.approx(want, abs=2e-4 * (1 + (g[2] if len(g) == 3 else 0)))

@@ -38,6 +38,7 @@ _DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in r
 _DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0))      # mm from the anchor, then relaxed
 _ARROW_F = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)                # where along an arrow, best first
 _TRIAL_S = (3.0, 6.0, 10.0, 15.0, 22.0)                       # mm in from either end of a trial line
+_BEYOND = 1.7                                                 # the cost of a place beyond an arrow's tip
 
 
 _TAU = 2 * math.pi
@@ -67,7 +68,8 @@ class _Candidates:
     goes cheapest first) and their centres, each made only when the search reaches it.
 
     In order: a polygon's own anchor first (when not relaxed); a point's 16 directions at each distance;
-    an arrow's places along it (middle first) at each distance, left of it then right; a trial line's
+    an arrow's places along it (middle first) at each distance, left of it then right, then its places
+    beyond its tip on its line; a trial line's
     places in from its near end then from its far end, at each distance and side.  The cost of a place is
     its distance, how far it strays from the widest gap between the lines at the anchor (a point), from
     the middle (an arrow) or from the end (a trial line)."""
@@ -108,9 +110,13 @@ class _Candidates:
         sides = ((-u[1], u[0]), (u[1], -u[0]))
         self.costs = [3.0 * abs(f - 0.5) + 0.8 * dist + side * 0.1
                       for dist in dists for f in _ARROW_F for side in (0, 1)]
+        self.costs += [_BEYOND + 0.8 * dist for dist in dists]
         n_f = len(_ARROW_F)
+        n_along = len(self.costs) - len(dists)
 
         def centre(i: int) -> Pt:
+            if i >= n_along:                    # beyond the tip, on the arrow's line
+                return shifted(tip, u, dists[i - n_along] + 0.3 + _edge(u, hw, hh))
             k, rest = divmod(i, 2 * n_f)
             f, side = divmod(rest, 2)
             nn = sides[side]
@@ -140,8 +146,12 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
 
     A small candidate search: positions around the anchor are scored by how much line they would
     cover (a white background hides it) and how well they sit in the widest gap between the lines at
-    the anchor; overlaps with labels, arrowheads, pins and dots are forbidden.  Optional labels
-    (on arrows, trial lines and images) are left out when no free place exists.
+    the anchor; overlaps with labels, arrowheads, pins and dots are forbidden.  A place that hides part
+    of a heavy line (a link, a vector, a load, a guide, a block) is taken only by a mandatory label with
+    no other place, and a place as near another entity of the label's kind as its own (see
+    :mod:`~drafting.layout.label_kin`) only when no clear one exists.  Optional labels (on arrows, trial
+    lines and images) are left out when no free place exists.  A leader ties a short arrow to its label;
+    the leaders are drawn first, under every label's white ground.
     """
     placed: list[Rect] = []
     out: list[Command] = []
