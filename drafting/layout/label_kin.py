@@ -60,6 +60,26 @@ def _element_bounds(g: tuple) -> tuple[float, float, float, float]:
     return min(a0, b0), min(a1, b1), max(a0, b0), max(a1, b1)
 
 
+def _clip(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
+          bottom: float) -> float:
+    """The fraction of the segment from (a0, a1) along (dx, dy) inside a box (Liang-Barsky)."""
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, a0 - left), (dx, right - a0), (-dy, a1 - top), (dy, bottom - a1)):
+        if abs(p) < 1e-12:                      # parallel to this edge: outside, or no limit
+            if q < 0:
+                return 0.0
+            continue
+        t = q / p
+        if p < 0:
+            if t > t0:
+                t0 = t
+        elif t < t1:
+            t1 = t
+        if t0 > t1:
+            return 0.0
+    return t1 - t0
+
+
 def _point_distance(x: float, y: float, le: float, to: float, ri: float, bo: float) -> float:
     return math.hypot(max(le - x, 0.0, x - ri), max(to - y, 0.0, y - bo))
 
@@ -68,20 +88,8 @@ def _segment_distance(a0: float, a1: float, b0: float, b1: float, le: float, to:
                       bo: float) -> float:
     """The least distance between a segment and a box (0 when they meet)."""
     dx, dy = b0 - a0, b1 - a1
-    t0, t1 = 0.0, 1.0                                   # Liang-Barsky: does any of it lie in the box?
-    for p, q in ((-dx, a0 - le), (dx, ri - a0), (-dy, a1 - to), (dy, bo - a1)):
-        if abs(p) < 1e-12:
-            if q < 0:
-                t0, t1 = 1.0, 0.0
-                break
-            continue
-        t = q / p
-        if p < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-    if t0 <= t1:
-        return 0.0
+    if _clip(a0, a1, dx, dy, le, to, ri, bo) > 0.0:
+        return 0.0                                      # it runs through the box
     n2 = dx * dx + dy * dy
     best = min(_point_distance(a0, a1, le, to, ri, bo), _point_distance(b0, b1, le, to, ri, bo))
     if n2 > 1e-18:

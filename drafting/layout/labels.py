@@ -13,7 +13,7 @@ from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident
 from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
-from .label_kin import Kin
+from .label_kin import Kin, _clip
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -318,26 +318,6 @@ class _Segments:
         sub = object.__new__(_Segments)
         sub.rows = [r for r in self.rows if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
         return sub
-
-
-def _clip(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
-          bottom: float) -> float:
-    """The fraction of the segment from (a0, a1) along (dx, dy) inside a box (Liang-Barsky)."""
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, a0 - left), (dx, right - a0), (-dy, a1 - top), (dy, bottom - a1)):
-        if abs(p) < 1e-12:                      # parallel to this edge: outside, or no limit
-            if q < 0:
-                return 0.0
-            continue
-        t = q / p
-        if p < 0:
-            if t > t0:
-                t0 = t
-        elif t < t1:
-            t1 = t
-        if t0 > t1:
-            return 0.0
-    return t1 - t0
 
 
 _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin
