@@ -84,6 +84,8 @@ def reference_candidates(req, hw, hh, incident, relax):
                     nn = (n[0] * side, n[1] * side)
                     yield (shifted(a, nn, dist + 0.3 + _edge(nn, hw, hh)),
                            3.0 * abs(f - 0.5) + 0.8 * dist + (side < 0) * 0.1)
+        for dist in dists[:3] if relax == 0 else dists:
+            yield shifted(tip, u, dist + 0.3 + _edge(u, hw, hh)), 1.7 + 0.8 * dist
     elif req.kind == "trial":
         end, start = req.anchor, req.other
         v = unit_vector((start[0] - end[0], start[1] - end[1]))
@@ -119,8 +121,9 @@ class Listed:
         self.centre = lambda i: (rows[i][0], rows[i][1])
 
 
-def exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory):
-    """Every candidate scored with the scalar clip, the first of the lowest score: the reference."""
+def exhaustive_best(cands, hw, hh, plot, placed, hard, segments, heavy_ok, clear=None):
+    """Every candidate scored with the scalar clip, the first of the lowest score among those that hide
+    no heavy line (unless ``heavy_ok``) and pass ``clear``: the reference."""
     best = None
     for x, y, cost in cands:
         left, top, right, bottom = x - hw, y - hh, x - hw + 2 * hw, y - hh + 2 * hh
@@ -137,7 +140,9 @@ def exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory):
                 thick += got
             else:
                 thin += got
-        if not mandatory and thick > 0:
+        if not heavy_ok and thick > 0:
+            continue
+        if clear is not None and not clear(left, top, right, bottom):
             continue
         total = cost + 3.0 * thin + 20.0 * thick
         if best is None or total < best[0]:
@@ -148,22 +153,52 @@ def exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory):
 rect = st.tuples(coord, coord, st.floats(0.5, 10).map(lambda v: round(v, 1)), st.floats(0.5, 10).map(lambda v: round(v, 1)))
 
 
+point = st.tuples(coord, coord)
+element = point | st.tuples(point, point) | st.tuples(coord, coord, st.floats(0.5, 20).map(lambda v: round(v, 1)))
+
+
 @settings(max_examples=300, deadline=None)
 @given(st.lists(st.tuples(coord, coord, st.sampled_from([0.0, 0.5, 1.0, 2.5]).flatmap(
            lambda c: st.just(c) | st.floats(0, 6).map(lambda v: round(v, 1)))), min_size=1, max_size=40),
        st.floats(0.5, 6.0).map(lambda v: round(v, 1)), st.floats(0.5, 3.0).map(lambda v: round(v, 1)),
-       st.lists(segment, max_size=25), st.lists(rect, max_size=4), st.lists(rect, max_size=4), st.booleans())
-def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, segments, placed, hard, mandatory):
+       st.lists(segment, max_size=25), st.lists(rect, max_size=4), st.lists(rect, max_size=4), st.booleans(),
+       st.none() | st.tuples(st.lists(element, min_size=1, max_size=3), st.lists(element, max_size=6)))
+def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, segments, placed, hard, heavy_ok,
+                                                                kin):
     """Clipping only the candidates that can still win (cheapest first, bounded by the first that
-    meets no line) chooses the same candidate with the same score, ties included, as scoring all."""
+    meets no line) and measuring the ambiguity only of one that would win chooses the same candidate
+    with the same score, ties included, as scoring all."""
+    from drafting.layout.label_kin import _Clear, _element_bounds
     from drafting.layout.labels import _best_candidate
     from drafting.render.paper import Rect
     plot = Rect(-40.0, -40.0, 80.0, 80.0)
     placed = [Rect(*r) for r in placed]
     hard = [Rect(*r) for r in hard]
-    got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, _Segments(segments), mandatory)
-    want = exhaustive_best(cands, hw, hh, plot, placed, hard, segments, mandatory)
+    clear = None if kin is None else _Clear(kin[0], [(*_element_bounds(g), g) for g in kin[1]], 0.4)
+    got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, _Segments(segments), heavy_ok, clear)
+    want = exhaustive_best(cands, hw, hh, plot, placed, hard, segments, heavy_ok, clear)
     if want is None:
         assert got is None
     else:
         assert got is not None and (got[0], got[1]) == want
+
+
+@settings(max_examples=300, deadline=None)
+@given(element, box)
+def test_the_ambiguity_distances_are_the_distances_shapely_measures(g, bx):
+    """A label's distance to a point, a circle's curve or a segment, against shapely's."""
+    from shapely.geometry import LineString, Point, box as sbox
+    from drafting.layout.label_kin import _distance
+    left, top, w, h = bx
+    got = _distance(g, left, top, left + w, top + h)
+    b = sbox(left, top, left + w, top + h)
+    if len(g) == 2 and not isinstance(g[0], tuple):
+        want = Point(g).distance(b)
+    elif len(g) == 3:
+        ring = Point(g[0], g[1]).buffer(g[2], quad_segs=512).exterior
+        want = ring.distance(b)
+    elif g[0] == g[1]:
+        want = Point(g[0]).distance(b)
+    else:
+        want = LineString(g).distance(b)
+    assert got == pytest.approx(want, abs=2e-4 * (1 + (g[2] if len(g) == 3 else 0)))

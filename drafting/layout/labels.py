@@ -13,6 +13,7 @@ from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident
 from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
+from .label_kin import Kin, _clip
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -37,6 +38,7 @@ _DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in r
 _DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0))      # mm from the anchor, then relaxed
 _ARROW_F = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)                # where along an arrow, best first
 _TRIAL_S = (3.0, 6.0, 10.0, 15.0, 22.0)                       # mm in from either end of a trial line
+_BEYOND = 1.7                                                 # the cost of a place beyond an arrow's tip
 
 
 _TAU = 2 * math.pi
@@ -66,7 +68,8 @@ class _Candidates:
     goes cheapest first) and their centres, each made only when the search reaches it.
 
     In order: a polygon's own anchor first (when not relaxed); a point's 16 directions at each distance;
-    an arrow's places along it (middle first) at each distance, left of it then right; a trial line's
+    an arrow's places along it (middle first) at each distance, left of it then right, then its places
+    beyond its tip on its line; a trial line's
     places in from its near end then from its far end, at each distance and side.  The cost of a place is
     its distance, how far it strays from the widest gap between the lines at the anchor (a point), from
     the middle (an arrow) or from the end (a trial line)."""
@@ -107,9 +110,13 @@ class _Candidates:
         sides = ((-u[1], u[0]), (u[1], -u[0]))
         self.costs = [3.0 * abs(f - 0.5) + 0.8 * dist + side * 0.1
                       for dist in dists for f in _ARROW_F for side in (0, 1)]
+        self.costs += [_BEYOND + 0.8 * dist for dist in dists]
         n_f = len(_ARROW_F)
+        n_along = len(self.costs) - len(dists)
 
         def centre(i: int) -> Pt:
+            if i >= n_along:                    # beyond the tip, on the arrow's line
+                return shifted(tip, u, dists[i - n_along] + 0.3 + _edge(u, hw, hh))
             k, rest = divmod(i, 2 * n_f)
             f, side = divmod(rest, 2)
             nn = sides[side]
@@ -139,14 +146,20 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
 
     A small candidate search: positions around the anchor are scored by how much line they would
     cover (a white background hides it) and how well they sit in the widest gap between the lines at
-    the anchor; overlaps with labels, arrowheads, pins and dots are forbidden.  Optional labels
-    (on arrows, trial lines and images) are left out when no free place exists.
+    the anchor; overlaps with labels, arrowheads, pins and dots are forbidden.  A place that hides part
+    of a heavy line (a link, a vector, a load, a guide, a block) is taken only by a mandatory label with
+    no other place, and a place as near another entity of the label's kind as its own (see
+    :mod:`~drafting.layout.label_kin`) only when no clear one exists.  Optional labels (on arrows, trial
+    lines and images) are left out when no free place exists.  A leader ties a short arrow to its label;
+    the leaders are drawn first, under every label's white ground.
     """
     placed: list[Rect] = []
     out: list[Command] = []
+    leaders: list[Command] = []
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
                                                         ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
     segs = _Segments(d.segments)
+    kin = Kin(d) if d.labels else None
     for i in order:
         req = d.labels[i]
         spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
@@ -160,9 +173,12 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
-        for relax in (0, 1):
-            best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
-                                   near_placed, near_hard, near_segs, req.mandatory)
+        for heavy_ok, clear in _tiers(req, kin.test(req, reach, LABEL_PAD)):
+            for relax in (0, 1):
+                best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
+                                       near_placed, near_hard, near_segs, heavy_ok, clear)
+                if best is not None:
+                    break
             if best is not None:
                 break
         if best is None:
@@ -187,8 +203,18 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
         leader = _leader(req, box)
         if leader is not None:
-            out.append(leader)
-    return out
+            leaders.append(leader)
+    return leaders + out            # the leaders first: under every label's white ground, never over a text
+
+
+def _tiers(req: LabelReq, clear):
+    """The searches a label's candidates go through, strictest first, as (heavy_ok, test): hiding no
+    heavy line and unambiguous; then hiding no heavy line; then (a mandatory label only) anything."""
+    if clear is not None:
+        yield False, clear
+    yield False, None
+    if req.mandatory:
+        yield True, None
 
 
 SHORT_ARROW = 5.0
@@ -211,10 +237,11 @@ def _leader(req: LabelReq, box: Rect) -> Line | None:
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
-                    near_hard: list[Rect], near_segs: "_Segments", mandatory: bool):
+                    near_hard: list[Rect], near_segs: "_Segments", heavy_ok: bool, clear=None):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
-    or None when every one leaves the plot, overlaps a label or a symbol, or (an optional label) hides
-    part of a thick line.  A score is the candidate's cost plus what it hides of the lines (never
+    or None when every one leaves the plot, overlaps a label or a symbol, hides part of a thick line
+    (unless ``heavy_ok``) or fails ``clear(left, top, right, bottom)`` (the ambiguity test, see
+    :mod:`~drafting.layout.label_kin`; measured last, and only for a candidate that would win).  A score is the candidate's cost plus what it hides of the lines (never
     negative), so the candidates are tried cheapest first and the search stops at the first whose cost
     exceeds the best score found: most labels are placed by their first few candidates, and only their
     centres are made.  The arithmetic of a score is the exhaustive test's, operation for operation, so
@@ -251,10 +278,12 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
                     thick += got
                 else:
                     thin += got
-        if not mandatory and thick > 0:         # an optional label never hides part of a thick line
+        if not heavy_ok and thick > 0:          # it would hide part of a link or a vector
             continue
         total = cost + 3.0 * thin + 20.0 * thick
         if total < best_total or (total == best_total and i < best_i):
+            if clear is not None and not clear(le, to, ri, bo):
+                continue                        # as near another entity of its kind as its own
             best_total, best_i = total, i
     if best_i < 0:
         return None
@@ -289,26 +318,6 @@ class _Segments:
         sub = object.__new__(_Segments)
         sub.rows = [r for r in self.rows if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
         return sub
-
-
-def _clip(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
-          bottom: float) -> float:
-    """The fraction of the segment from (a0, a1) along (dx, dy) inside a box (Liang-Barsky)."""
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, a0 - left), (dx, right - a0), (-dy, a1 - top), (dy, bottom - a1)):
-        if abs(p) < 1e-12:                      # parallel to this edge: outside, or no limit
-            if q < 0:
-                return 0.0
-            continue
-        t = q / p
-        if p < 0:
-            if t > t0:
-                t0 = t
-        elif t < t1:
-            t1 = t
-        if t0 > t1:
-            return 0.0
-    return t1 - t0
 
 
 _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin

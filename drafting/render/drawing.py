@@ -58,7 +58,7 @@ class LabelReq:
     pivot_digits: bool = False
 
 
-THICK_STYLES = frozenset({"vector", "link", "guide", "load"})
+THICK_STYLES = frozenset({"vector", "link", "guide", "load", "block"})
 NO_SEGMENT_STYLES = frozenset({"arrowhead", "dot", "note_bg", "label_bg", "band"})
 
 

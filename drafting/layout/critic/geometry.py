@@ -8,7 +8,7 @@ from typing import Iterable, Sequence
 
 from ...render.paper import Circle, Command, Line, Polygon, Polyline, Pt, Rect, Rectangle, Strokes, Text, \
     command_points
-from ...render.style import styles
+from ...render.style import THICK, styles
 
 Segment = tuple[Pt, Pt]
 
@@ -60,6 +60,15 @@ def is_black_fill(cmd: Command) -> bool:
     """True when the command's style fills its figure black (an arrowhead, a dot, a dark scale-bar cell)."""
     s = styles().get(cmd.style)
     return s is not None and s.fill == "black" and type(cmd) in (Polygon, Rectangle, Circle)
+
+
+def is_heavy(cmd: Command) -> bool:
+    """True for the drawing's objects: a stroke of the thick width (a link, a vector, a load, a guide, a
+    block, a pin) or a black fill (an arrowhead, a dot); thin construction lines are not heavy."""
+    s = styles().get(cmd.style)
+    if s is None or type(cmd) is Text:
+        return False
+    return (s.stroke is not None and s.width >= THICK) or is_black_fill(cmd)
 
 
 def clip_length(seg: Segment, box: Rect) -> float:

@@ -1,5 +1,5 @@
 """The critic's checks of a diagram's lettering: labels over labels, labels struck by other entities'
-lines, labels nearer another entity of their kind than their own, and short arrows labelled without a
+lines or hiding their heavy lines, labels nearer another entity of their kind than their own, and short arrows labelled without a
 leader.  Each check takes a :class:`~drafting.layout.sheet.Sheet` and returns its findings."""
 
 from __future__ import annotations
@@ -7,9 +7,9 @@ from __future__ import annotations
 import math
 from collections import defaultdict
 
-from ...render.paper import Circle, Command, Line, Polygon, Polyline, Rect, Text
-from .geometry import (bounding, circle_box_distance, clip_length, fill_meets, is_black_fill, is_stroked, outline, point_box_distance,
-                       segment_box_distance)
+from ...render.paper import Circle, Command, Line, Polygon, Polyline, Rect, Rectangle, Text
+from .geometry import (bounding, circle_box_distance, clip_length, fill_meets, is_black_fill, is_heavy, is_stroked, outline,
+                       point_box_distance, segment_box_distance)
 from .parts import Finding, diagram_texts, owner, part
 
 STRIKE_INSET = 0.15
@@ -48,17 +48,25 @@ def _intersection(a: Rect, b: Rect) -> Rect | None:
 
 def crossed_labels(sheet) -> list[Finding]:
     """label-crossed: a diagram text whose box, shrunk by :data:`STRIKE_INSET` each side, is entered by
-    the ink of a command of another owner.  Ink is a stroked path (Line, Polyline, the outline of a
-    stroked Polygon, Rectangle or Circle -- a circle as its inscribed polygon within 0.01 mm --, every
-    stroke of a Strokes) and a black fill (an arrowhead, a dot, a dark scale-bar cell): whether drawn
-    under the text's white ground (the line is cut) or over it (the letters are struck).  White and grey
-    fills (label and note grounds, chart bands, an image's tint) are not ink.  A command of the text's
-    own entity -- its own shaft, its dimension line, a leader drawn for it -- is not foreign.  One finding
-    per text and command, saying whether the command is drawn after the text (struck over its letters)
-    or before it (cut by its white ground); value: the length of the foreign path inside the box, mm."""
-    inked = [(i, c, *_edges(bounding([c]))) for i, c in enumerate(sheet.commands)
+    the ink of a command of another owner that a reader sees as struck text or a damaged drawing: ink
+    drawn over the text's white ground (struck over its letters; a text without a ground, "<text name>
+    bg", has all ink over it), or heavy ink under it (:func:`~drafting.layout.critic.geometry.is_heavy`:
+    a thick line -- link, vector, load, guide, block, pin -- or a black fill such as an arrowhead, cut by
+    the ground: a label never hides part of the mechanism or a vector).  A thin construction line (centre,
+    hidden, path, trial, dimension, an image's outline) under the ground is a halo, as textbooks letter
+    on a construction, and is fine.  Ink is a stroked path (Line, Polyline, the outline of a stroked
+    Polygon, Rectangle or Circle -- a circle as its inscribed polygon within 0.01 mm --, every stroke of a
+    Strokes) and a black fill (an arrowhead, a dot, a dark scale-bar cell).  White and grey fills (label
+    and note grounds, chart bands, an image's tint) are not ink.  A command of the text's own entity --
+    its own shaft, its dimension line, a leader drawn for it -- is not foreign.  One finding per text and
+    command, saying which of the two it is; value: the length of the foreign path inside the box, mm."""
+    inked = [(i, c, *_edges(bounding([c])), is_heavy(c)) for i, c in enumerate(sheet.commands)
              if type(c) is not Text and (is_stroked(c) or is_black_fill(c))]
     order = {id(c): i for i, c in enumerate(sheet.commands)}
+    grounds: dict[str, list[int]] = defaultdict(list)         # the white grounds by name, in drawing order
+    for i, c in enumerate(sheet.commands):
+        if type(c) is Rectangle and c.name.endswith(" bg"):
+            grounds[c.name].append(i)
     segments: dict[int, list] = {}                   # each command's path, made when a box meets it
     out = []
     for t in diagram_texts(sheet.commands):
@@ -66,17 +74,21 @@ def crossed_labels(sheet) -> list[Finding]:
         if box.w <= 0 or box.h <= 0:
             continue
         mine = owner(t.name)
+        ground = max((i for i in grounds.get(t.name + " bg", ()) if i < order[id(t)]), default=-1)
         le, to, ri, bo = _edges(box)
-        for i, c, c_le, c_to, c_ri, c_bo in inked:
+        for i, c, c_le, c_to, c_ri, c_bo, heavy in inked:
             if c_le > ri or c_ri < le or c_to > bo or c_bo < to or owner(c.name) == mine:
                 continue
+            under = i < ground
+            if under and not heavy:
+                continue                             # a thin line under the ground: a halo
             if type(c) is Circle and not is_black_fill(c) and circle_box_distance(c.cx, c.cy, c.r, box) > 0:
                 continue                             # its stroke stays clear of the box
             if i not in segments:
                 segments[i] = outline(c)
             inside = sum(clip_length(s, box) for s in segments[i]) if is_stroked(c) else 0.0
             if inside > 1e-6 or (is_black_fill(c) and fill_meets(c, box)):
-                how = "struck over its letters" if i > order[id(t)] else "cut by its white ground"
+                how = "cut by its white ground" if under else "struck over its letters"
                 out.append(Finding("label-crossed", sheet.number,
                                    f"{t.plain!r} ({t.name}) is crossed by {c.name or type(c).__name__} "
                                    f"({c.style}, {inside:.2f} mm inside, {how})", t.box, inside))
