@@ -133,9 +133,10 @@ def commands_for(kind: str) -> list[str]:
     return common
 
 
-def make_command(rng: random.Random, kind: str, hostile: float = 0.3) -> Command:
-    """One command for a scene of ``kind``; options hostile with probability ``hostile``."""
-    name = rng.choice(commands_for(kind))
+def make_command(rng: random.Random, kind: str, hostile: float = 0.3, name: str | None = None) -> Command:
+    """One command for a scene of ``kind`` (``name``, else one drawn from :func:`commands_for`); options
+    hostile with probability ``hostile``."""
+    name = name or rng.choice(commands_for(kind))
     if name.startswith("solve"):
         argv = ["solve", "{scene}"]
         if name == "solve --json":
