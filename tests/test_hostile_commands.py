@@ -83,3 +83,25 @@ def test_a_sheet_with_letters_outside_the_repertoire_leaves_no_font_file_open(tm
         gc.collect()
     assert css.count("@font-face") == 2
     assert not [w for w in seen if issubclass(w.category, ResourceWarning)], [str(w.message) for w in seen]
+
+
+def test_check_answers_for_a_scene_whose_sheet_has_no_room_is_one_sentence(tmp_path, capsys):
+    """The key's scales come from the laid-out worked sheet: its LayoutError escaped check --answers."""
+    text = (GALLERY / "notes-acceleration-example-1.toml").read_text()
+    pivots = "".join(f"Q{i} = [{i % 97}, {i % 89}]\n" for i in range(40))
+    scene = tmp_path / "crowded.toml"
+    scene.write_text(text.replace("[frame]\n", "[frame]\n" + pivots, 1))
+    answers = tmp_path / "answers.csv"
+    answers.write_text("V_C,1\n")
+    code, _, err = run(capsys, "check", scene, "--answers", answers)
+    assert code == 2
+    one_line(err, f"{scene}: drawing.paper: ")
+
+
+def test_check_answers_for_a_scene_without_a_key_names_what_it_asks(tmp_path, capsys):
+    answers = tmp_path / "answers.csv"
+    answers.write_text("omega_out,1\n")
+    scene = GALLERY / "planetary-each-member-held.toml"
+    code, _, err = run(capsys, "check", scene, "--answers", answers)
+    assert code == 2
+    one_line(err, f"{scene}: ask.analyses: ", "no answers to mark")
