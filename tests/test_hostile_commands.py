@@ -105,3 +105,12 @@ def test_check_answers_for_a_scene_without_a_key_names_what_it_asks(tmp_path, ca
     code, _, err = run(capsys, "check", scene, "--answers", answers)
     assert code == 2
     one_line(err, f"{scene}: ask.analyses: ", "no answers to mark")
+
+
+def test_an_empty_vary_key_is_named_as_toml_writes_it(tmp_path, capsys):
+    """``"" = [...]`` in [vary] was named ``vary.``: a key that reads as nothing."""
+    scene = tmp_path / "lab.toml"
+    scene.write_text((GALLERY / "lab-slider-crank.toml").read_text() + '"" = ["1 rad/s", "2 rad/s"]\n')
+    code, _, err = run(capsys, "batch", scene, "--variants", "1", "-o", tmp_path / "out", "--workers", "1")
+    assert code == 2
+    one_line(err, f'{scene}: vary."": unknown key')
