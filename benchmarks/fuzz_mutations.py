@@ -311,11 +311,28 @@ def m_bad_bytes(rng: random.Random, c: Case) -> None:
     c.notes.append(f"bytes {bad!r} at {at}")
 
 
+def m_vary(rng: random.Random, c: Case) -> None:
+    """An odd [vary] range: reversed, empty, a step of zero or of the smallest float, NaN, infinite, the wrong
+    unit, an unknown key, a list of one or of many."""
+    vary = c.data["vary"]                      # a scene without [vary]: KeyError, the mutation is skipped
+    key = rng.choice(sorted(vary))
+    odd = rng.choice([["150 deg", "30 deg"], {"from": "5 rad/s", "to": "15 rad/s", "step": "0 rad/s"},
+                      {"from": "5 rad/s", "to": "15 rad/s", "step": "1e-300 rad/s"},
+                      {"from": "nan rad/s", "to": "15 rad/s", "step": "1 rad/s"}, ["inf deg", "30 deg"],
+                      ["30 mm", "150 mm"], ["30 deg"], ["30 deg"] * 101, [], {"from": 1, "to": 2},
+                      {"from": "5 rad/s", "to": "15 rad/s", "step": "-1 rad/s"}, "30 deg", ["1e300 deg", "2e300 deg"]])
+    if rng.random() < 0.2:
+        key = rng.choice(["length", "link[1].length", "zzz", "crank angle", ""])
+    vary[key] = odd
+    c.must_refuse = True
+    c.notes.append(f"vary {key} = {odd!r:.60}")
+
+
 MUTATIONS: dict[str, Callable[[random.Random, Case], None]] = {
     "deep nesting": m_deep_nesting, "huge counts": m_huge_counts, "huge int": m_huge_int,
     "odd text": m_odd_text, "expression unit": m_expression_unit, "percent unit": m_percent_unit,
     "decimal comma": m_decimal_comma, "duplicate": m_duplicate, "giant coordinates": m_giant_coordinates,
-    "long string": m_long_string, "odd file name": m_odd_filename, "bad bytes": m_bad_bytes,
+    "long string": m_long_string, "vary": m_vary, "odd file name": m_odd_filename, "bad bytes": m_bad_bytes,
 }
 TEXT_LEVEL = ("deep nesting", "bad bytes")           # applied last: they turn the data into text
 
@@ -324,8 +341,11 @@ def gallery() -> dict[str, dict[str, Any]]:
     return {p.stem: tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted(GALLERY.glob("*.toml"))}
 
 
-def make_case(rng: random.Random, bases: dict[str, dict[str, Any]], kinds: list[str] | None = None) -> Case:
-    base = rng.choice(sorted(bases))
+def make_case(rng: random.Random, bases: dict[str, dict[str, Any]], kinds: list[str] | None = None,
+              base: str | None = None) -> Case:
+    """A case from ``base`` (else one drawn from ``bases``) with the mutations ``kinds`` (else one to three
+    drawn; ``[]``: none, the scene as it is, for the commands' own hostile options)."""
+    base = base if base is not None else rng.choice(sorted(bases))
     if kinds is None:
         kinds = rng.sample(sorted(MUTATIONS), rng.choice([1, 1, 2, 3]))
     kinds = sorted(kinds, key=lambda k: k in TEXT_LEVEL)

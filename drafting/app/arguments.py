@@ -55,8 +55,16 @@ def _version() -> str:
         return "unknown"
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser with its errors as the command's others: one line ``drafting: error: ...`` and
+    exit 2 (argparse prints the usage first, a second and third line)."""
+
+    def error(self, message: str):
+        self.exit(2, f"drafting: error: {' '.join(message.split())} (see {self.prog} --help)\n")
+
+
 def parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="drafting", description=(
+    p = _Parser(prog="drafting", description=(
         "Draw the graphical methods of the theory of machines step by step on true-scale sheets, "
         "checked against the analytic answer. With no command, renders the built-in example "
         "(the notes' slider-crank velocity Example 1) into ./drafting-output."))

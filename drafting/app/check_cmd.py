@@ -12,6 +12,7 @@ from .answers import AnswersError, mark, read_answers
 from .batch import variant_label, variant_study
 from .lab import dimensioned, lab_for
 from .solving import EXIT_DISAGREE, UserError, load_study, results_text, solve_study
+from ..render.errors import LayoutError
 from ..scene.reader import SceneError, _read_text, parse_scene
 from ..study.study import Study
 
@@ -56,14 +57,18 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
         except SceneError as e:
             raise UserError(str(e)) from None
         if study is None:
-            raise UserError(f"{path}: variant {variant} of seed {seed} was skipped by the batch (no draw could "
+            raise UserError(f"{path}: vary: variant {variant} of seed {seed} was skipped by the batch (no draw could "
                             f"be drawn)")
         label = variant_label(variant)
     else:
         study = solve_study(Study(dimensioned(load_study(path).scene)))
-    items = lab_for(study, label=label).items
+    try:
+        items = lab_for(study, label=label).items     # the key's scales are the worked sheet's: laid out
+    except LayoutError as e:                  # as render says it: the paper is what the user can change
+        raise UserError(f"{path}: drawing.paper: {e}") from None
     if not items:
-        raise UserError(f"{path}: the scene has no answers to mark (it asks for {', '.join(study.scene.analyses)})")
+        raise UserError(f"{path}: ask.analyses: the scene has no answers to mark (it asks for "
+                        f"{', '.join(study.scene.analyses)})")
     try:
         marks, unknown = mark(items, read_answers(answers), answers, study.scene.units)
     except AnswersError as e:

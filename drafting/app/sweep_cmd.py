@@ -44,10 +44,11 @@ def crank_angles(start: float, steps: int | None, every: str | None) -> np.ndarr
             raise SweepInputError(f"--every: {e}") from None
         if not step > 0:
             raise SweepInputError(f"--every: {printable(every)!r} is not a positive angle")
-        n = math.ceil(turn / step - 1e-9)
-        problem = limits.sweep_problem(n)
-        if problem:
-            raise SweepInputError(f"--every: {printable(every)!r} gives {problem} (use a larger --every or --steps)")
+        count = turn / step                    # inf for a step below the smallest float's turn
+        if not count <= limits.MAX_SWEEP_STEPS + 1e-9:
+            raise SweepInputError(f"--every: {printable(every)!r} gives more than {limits.MAX_SWEEP_STEPS:,} steps, "
+                                  f"the most a sweep may have (use a larger --every or --steps)")
+        n = math.ceil(count - 1e-9)
         return start + step * np.arange(n)
     n = DEFAULT_STEPS if steps is None else steps
     problem = limits.sweep_problem(n)
@@ -153,10 +154,11 @@ def write_csv(path: Path, header: list[str], values: np.ndarray) -> None:
             bar.update(i)
     bar.finish()
     data = buf.getvalue().encode("utf-8")
-    from ..backends.files import ExportError, write_outputs
+    from ..backends.files import ExportError, prepare_folder, write_outputs
     try:
         if path.is_dir():
             raise ExportError(f"Cannot write {printable(str(path))}: it is a folder.")
+        prepare_folder(folder)                 # as solve --csv: the folder made when missing
         write_outputs(folder, path.stem, [(path, lambda: data)])
     except ExportError as e:
         raise SweepInputError(str(e)) from None
@@ -226,7 +228,10 @@ def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path |
     scene, s = run_sweep(path, steps, every)
     if csv_path is not None:
         header, values = table(scene, s)
-        write_csv(csv_path, header, values)
+        try:
+            write_csv(csv_path, header, values)
+        except SweepInputError as e:           # named as solve --csv names it: the scene, the option
+            raise SweepInputError(f"{path}: --csv: {e}") from None
         gaps = s.thetas.size - int(np.count_nonzero(s.assembles))
         print(f"{scene.title}\n  {s.thetas.size} crank angles ({s.model}), {gaps} not assembled; "
               f"wrote {printable(str(csv_path))}")

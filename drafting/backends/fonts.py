@@ -39,13 +39,14 @@ def _subset(path: Path, chars: frozenset[str]) -> bytes:
     opts.name_IDs = [0, 1, 2, 13, 14]          # copyright and licence travel with the glyphs
     opts.notdef_outline = True
     opts.drop_tables += ["FFTM"]                # FontForge's timestamps: nothing a renderer reads
-    font = TTFont(str(path), lazy=True, recalcTimestamp=False)   # the font's own date: same bytes every run
-    s = subset.Subsetter(opts)
-    s.populate(text="".join(sorted(chars)))
-    s.subset(font)
-    font.flavor = "woff"
-    buf = io.BytesIO()
-    font.save(buf)
+    # the font's own date: same bytes every run; closed when saved (lazy, it holds its file open)
+    with TTFont(str(path), lazy=True, recalcTimestamp=False) as font:
+        s = subset.Subsetter(opts)
+        s.populate(text="".join(sorted(chars)))
+        s.subset(font)
+        font.flavor = "woff"
+        buf = io.BytesIO()
+        font.save(buf)
     return buf.getvalue()
 
 

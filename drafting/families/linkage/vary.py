@@ -69,7 +69,8 @@ def read_vary(data: dict[str, Any], path: Path | str, units) -> tuple[Range, ...
                                       "length", sub2, units, f"pivot.{pivot}.{axis}"))
             continue
         if name not in INPUT_KEYS:
-            raise fail(path, f"vary.{name}", f"unknown key; choose from {choices}")
+            shown = name if name.strip() else f'"{name}"'      # an empty key as TOML writes it: vary.""
+            raise fail(path, f"vary.{shown}", f"unknown key; choose from {choices}")
         input_key, qkind = INPUT_KEYS[name]
         absent_ok = input_key == "angle" or (input_key == "alpha" and "torque" not in inp)   # alpha defaults to 0
         if not absent_ok and input_key not in inp:
