@@ -445,3 +445,16 @@ def test_frame_is_numbered_as_in_the_notes():
     assert {"F_12", "F_32", "F_43", "F_14", "T_2"} <= {x.name for x in fa.measured(m)}
     polygon = [e for e in fa.construction.entities() if isinstance(e, Arrow) and e.diagram.kind == "force"]
     assert polygon and any(e.label == "P" for e in polygon)
+
+
+def test_a_spring_whose_ends_stand_a_subnormal_distance_apart_pulls_finitely():
+    """Hypothesis found a spring anchored 2.7e-310 m from its end: k (L - L0) / L overflowed to inf and the
+    free body's arrow had no direction.  The direction is taken first, so the pull is k (L - L0) along it."""
+    import math
+    from constructions.forces.effects import End, Spring
+    from constructions.geometry import Vec
+    s = Spring("K0", End(1, "O1"), End(None, "anchor"), 83.33333333333334, 0.12)
+    f = s.pull(Vec(0.0, 0.0), Vec(0.0, 2.67008863020864e-310))
+    assert math.isfinite(f.x) and math.isfinite(f.y)
+    assert f.x == 0.0 and f.y == pytest.approx(-83.33333333333334 * 0.12, rel=1e-12)
+    assert s.pull(Vec(0.0, 0.0), Vec(0.0, 0.0)) == Vec(0.0, 0.0)

@@ -68,7 +68,8 @@ class Spring:
         length = d.norm()
         if length == 0.0:
             return Vec(0.0, 0.0)
-        return d * (self.stiffness * (length - self.free_length) / length)
+        # the direction first: k (L - L0) / L overflows when the ends stand a subnormal distance apart
+        return Vec(d.x / length, d.y / length) * (self.stiffness * (length - self.free_length))
 
 
 @dataclass(frozen=True)
