@@ -59,6 +59,8 @@ def page_html(study, sheets: Sequence[Sheet]) -> str:
         if text.strip():                             # the sheet numbers the steps that have words
             words += 1
             own.append(ids(f"step {words}"))
+            if getattr(st, "table", ()):             # the table the step sets out, shown with it
+                own.append(ids(f"step {words} table"))
         steps.append({"caption": markup_html(text),
                       "equation": markup_html(st.equation.text(marks=False)) if st.equation else "", "ids": own})
     items = "".join(f"<li>{s['caption']}</li>" for s in steps)

@@ -102,6 +102,7 @@ _FURNITURE = tuple((re.compile(p), k, t) for p, k, t in (
     (r"(scale bar (.+?))(?: (?:number|segment|tick) \d+| outline| unit)", "scale-bar", "Scale bar: {0}"),
     (r"(results)()(?: .*)?", "table", "Results table"),
     (r"(heading (.+))", "heading", "Heading: {0}"),
+    (r"(step (\d+) table)(?: .*)?", "table", "Table of construction step {0}"),
     (r"(step (\d+))(?: number)?", "step-text", "Construction step {0}"),
     (r"(note (\d+))(?: number)?", "note", "Note {0}"),
     (r"(given (\d+))(?: number)?", "given", "Given {0}"),
