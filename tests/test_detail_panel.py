@@ -90,3 +90,11 @@ def test_clipping_keeps_the_inside_of_a_line_and_drops_what_lies_outside():
     assert clip_command(Circle(5.0, 0.0, 1.0, "path"), disc) == []
     pieces = clip_command(Circle(1.0, 0.0, 1.0, "path"), disc)
     assert pieces and all(disc.inside(p, 1e-9) for c in pieces for p in c.points)
+
+
+def test_a_sheet_with_details_says_as_shown_in_its_scale_cell():
+    """The cam diagram at 1:2 and its details at 5:1: two scales, so the title block's cell says "As
+    shown" (each drawing states its own in its heading)."""
+    (sheet,) = drafting.load(GALLERY / "roller-cam-undercut.toml").sheets()
+    cell = [t.plain for t in sheet.texts() if t.region == "title_block"]
+    assert "As shown" in cell and not any(t.startswith("Cam diagram") for t in cell)

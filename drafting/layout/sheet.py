@@ -248,7 +248,7 @@ def compose_sheets(construction: Construction, info: SheetInfo, results: Sequenc
 
     def tb_height(width: float, on_page: Sequence[Panel]) -> float:
         # the scales are not known before the rungs are; size the title block with long stand-ins
-        probe_text = scale_cell([t for t in (_probe_scale(p) for p in on_page) if t])
+        probe_text = scale_cell([t for t in (_probe_scale(p) for p in on_page) if t] + _details(on_page))
         key = (round(width, 6), probe_text)
         if key not in tb_memo:
             tb_memo[key] = title_block_height(width, info.title, tb_fields(probe_text, 10, 10))
@@ -279,6 +279,11 @@ def stated(panels: list[Panel], scales) -> list[Panel]:
         for i in hit:
             out[i] = held_to(out[i], upm)
     return out
+
+
+def _details(panels) -> list[str]:
+    """A scale for each diagram drawn with enlarged details beside it (they carry their own)."""
+    return ["details" for p in panels if getattr(p, "beside", None) is not None]
 
 
 def _probe_scale(p: Panel) -> str:
@@ -314,7 +319,7 @@ def _render_page(pp: Paper, info: SheetInfo, pg: PagePlan, index: int, m: int, t
     n_of_m = number or (index + 1, m)
     in_order = sorted(pg.panels, key=lambda t: getattr(t[0], "index", 0))
     scale_list = [(p.key, p.scale_text(r)) for p, r, _ in in_order if p.scale_text(r)]
-    scale_text = scale_cell([t for _, t in scale_list])
+    scale_text = scale_cell([t for _, t in scale_list] + _details(p for p, _, _ in in_order))
     tb = title_block(frame, pg.title_block.w, info.title, tb_fields(scale_text, *n_of_m))
     regions: dict[str, Rect] = {"page": pp.page, "frame": frame, "title_block": tb.rect}
     cmds: list[Command] = [Rectangle(frame.x, frame.y, frame.w, frame.h, "frame", "frame")]
