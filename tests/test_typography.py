@@ -39,7 +39,7 @@ def test_point_names_take_subscripts_and_primes_and_words_stay_as_written():
     assert runs("O2G2 = 30 mm, AG3") == [("O", False), ("2", True), ("G", False), ("2", True), (" = 30 mm, AG", False),
                                          ("3", True)]
     for words in ("D'Alembert force", "Kennedy's theorem", "TOM-A-001", "2026-11-23", "3-4-5 law", "4.4e-13 mm",
-                  "Example 1", "step 10.5"):
+                  "Example 1", "step 10.5", "(notes' velocity Example 1)", "the drivers' speeds"):
         assert runs(words) == [(words, False)], words
 
 
@@ -67,3 +67,21 @@ def test_a_number_keeps_its_unit_on_its_line():
     for width in range(20, 80, 3):                        # however narrow the line, "N m" is never cut
         lines = ["".join(s.text for s in line) for line in wrap_words("so T = 0.6417 N m CW", width, 3.5)]
         assert not any(t.endswith(("N", "0.6417")) for t in lines), lines
+
+
+def test_a_page_whose_steps_go_on_under_the_space_diagram_reads_out_of_order():
+    """Steps run down the text column and then on in the room under the space diagram (read before the
+    column) print steps 33-45 above 1-32 (dynamic Example 3, issue 23); the page planner counts such pages
+    and prefers, of documents with as many pages, one without."""
+    from drafting.layout import reading_order
+    from drafting.layout.flow import FlowText
+    from drafting.layout.items import Paragraph, Section
+    from drafting.layout.page_plans import PagePlan
+    from drafting.layout.pages import Document
+    sections = FlowText([Section("Construction", tuple(Paragraph(f"step {i}", name=f"step {i}") for i in range(3)))])
+    plan = PagePlan(text_slots=[("text:0", None), ("text:1", None)], reclaim=[("text:1", {}, (0, 0, 0, 0))])
+    count = reading_order.steps_out_of_order
+    # the heading and three steps: the column first, then the room under the space diagram
+    assert count(Document([plan], ["0#text:0"] * 3 + ["0#text:1"], 3.0), sections) == 1
+    assert count(Document([plan], ["0#text:0"] * 4, 3.0), sections) == 0
+    assert count(Document([plan], ["0#text:1"] * 4, 3.0), sections) == 0

@@ -32,6 +32,7 @@ from .items import Section, TooWide
 from .page_plans import PagePlan, TbHeight, diagram_page, text_page, text_page_options
 from .panel import Panel
 from .panels import SpacePanel, VectorPanel
+from .reading_order import steps_out_of_order
 
 COMFORTABLE_LETTERING = 3.0
 """Lettering below this is taken only when nothing else fits."""
@@ -195,7 +196,8 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 # diagrams, the largest lettering
                 drawing_pages = sum(1 for pg in doc.pages if pg.panels)
                 bare = _bare_pages(paper, doc, sections, cache)
-                key = (-doc.count, -bare, -drawing_pages, doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
+                key = (-doc.count, -steps_out_of_order(doc, sections), -bare, -drawing_pages,
+                       doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
                     doc.size, -doc.empty_columns(), -m)
                 if best is None or key > best[0]:
                     best = (key, doc)
@@ -247,7 +249,7 @@ def _best_possible(plans: _GroupPlans, groups, mode: str, has_text: bool) -> tup
     some group has no plan at all.  Each of its components bounds the real key's: the pages (at least
     the groups, one more for text when no group takes it), every group a drawing page, comfortable
     lettering, each panel at the largest scale any plan of its group draws it, the largest lettering,
-    no empty column, no bare page."""
+    no empty column, no bare page, no page with its steps out of order."""
     m = len(groups)
     scales: dict[int, float] = {}
     sizes: dict[int, float] = {}
@@ -267,7 +269,7 @@ def _best_possible(plans: _GroupPlans, groups, mode: str, has_text: bool) -> tup
     best_quality = (round(min(space, 1.0), 9), round(min(free), 6) if free else 0.0, round(space, 9),
                     round(sum(free), 6))
     pages = m + (1 if has_text and mode == "none" else 0)
-    return (-pages, 0, -m, True) + best_quality + (TEXT_SIZES[0], 0, -m)
+    return (-pages, 0, 0, -m, True) + best_quality + (TEXT_SIZES[0], 0, -m)
 
 
 def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | None:

@@ -359,15 +359,18 @@ def _names(span: Span) -> list[Span]:
     out: list[Span] = []
     pos = 0
     for m in _NAMED.finditer(span.text):
-        chain, primes = m["chain"], m["primes"]
+        chain, primes, end = m["chain"], m["primes"], m.end()
+        pairs = _PAIR.findall(chain)
+        if primes and len(pairs) > 1:               # a word's apostrophe (the notes', drivers'): as written
+            primes, end = None, end - len(primes)
         if not primes and not any(c.isdigit() for c in chain):
             continue
         out.append(Span(span.text[pos:m.start()], span.size, 0.0, span.italic))
-        for base, sub in _PAIR.findall(chain):
+        for base, sub in pairs:
             out.extend(_symbol(base, sub, "", span.size, span.italic))
         if primes:
             out.append(Span(_PRIMES[primes], span.size, 0.0, span.italic))
-        pos = m.end()
+        pos = end
     out.append(Span(span.text[pos:], span.size, 0.0, span.italic))
     return out
 
