@@ -196,7 +196,7 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 # diagrams, the largest lettering
                 drawing_pages = sum(1 for pg in doc.pages if pg.panels)
                 bare = _bare_pages(paper, doc, sections, cache)
-                key = (-doc.count, -steps_out_of_order(doc, sections), -bare, -drawing_pages,
+                key = (-doc.count, -bare, -steps_out_of_order(doc, sections), -drawing_pages,
                        doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
                     doc.size, -doc.empty_columns(), -m)
                 if best is None or key > best[0]:
