@@ -200,5 +200,6 @@ def make_command(rng: random.Random, kind: str, hostile: float = 0.3, name: str 
         _opt(argv, "--variants", v)
         _opt(argv, "--seed", s)
         return Command(name, argv, _outputs("-*"), must_refuse=ok_v is False or ok_s is False,
-                       option="--variants" if ok_v is False else "--seed", hang_seconds=30.0)
+                       option=tuple(o for o, ok in (("--variants", ok_v), ("--seed", ok_s)) if ok is False),
+                       hang_seconds=30.0)
     raise ValueError(name)

@@ -313,13 +313,14 @@ def m_bad_bytes(rng: random.Random, c: Case) -> None:
 
 def m_vary(rng: random.Random, c: Case) -> None:
     """An odd [vary] range: reversed, empty, a step of zero or of the smallest float, NaN, infinite, the wrong
-    unit, an unknown key, a list of one or of many."""
+    unit, an unknown key, a list of one or of many.  (Plain numbers, {from = 1, to = 2}, are not odd: a
+    scene's plain numbers are in its units, so the 1000-per-kind run found it rightly accepted.)"""
     vary = c.data["vary"]                      # a scene without [vary]: KeyError, the mutation is skipped
     key = rng.choice(sorted(vary))
     odd = rng.choice([["150 deg", "30 deg"], {"from": "5 rad/s", "to": "15 rad/s", "step": "0 rad/s"},
                       {"from": "5 rad/s", "to": "15 rad/s", "step": "1e-300 rad/s"},
                       {"from": "nan rad/s", "to": "15 rad/s", "step": "1 rad/s"}, ["inf deg", "30 deg"],
-                      ["30 mm", "150 mm"], ["30 deg"], ["30 deg"] * 101, [], {"from": 1, "to": 2},
+                      ["30 mm", "150 mm"], ["30 deg"], ["30 deg"] * 101, [],
                       {"from": "5 rad/s", "to": "15 rad/s", "step": "-1 rad/s"}, "30 deg", ["1e300 deg", "2e300 deg"]])
     if rng.random() < 0.2:
         key = rng.choice(["length", "link[1].length", "zzz", "crank angle", ""])

@@ -45,7 +45,7 @@ class Command:
     allowed: Callable[[str, str], bool] = lambda stem, name: False
     codes: tuple[int, ...] = (0, 2, 3)
     must_refuse: bool = False
-    option: str | None = None                 # a hostile option: its refusal may name it instead of the file
+    option: str | tuple[str, ...] | None = None   # hostile options: a refusal may name one instead of the file
     inputs: dict[str, bytes] = field(default_factory=dict)     # more files for the input folder
     hang_seconds: float = HANG_SECONDS
     needs_output: bool = True                 # a success writes at least one file into {out}
@@ -78,15 +78,16 @@ _FILE_LEVEL = re.compile(r"(?:is not valid TOML \(.*line \d+|is larger than \d+ 
 _OPTION = re.compile(r"drafting: error: (?:.*: )?(?:argument )?--[a-z-]+\b")
 
 
-def classify_error(line: str, shown_paths: list[str], option: str | None = None) -> str | None:
+def classify_error(line: str, shown_paths: list[str], option: str | tuple[str, ...] | None = None) -> str | None:
     """None if ``line`` is one well-formed error naming the file (as one of ``shown_paths``) and a key,
-    a line or a position -- or, for a hostile ``option``, naming that option."""
+    a line or a position -- or, for a hostile ``option`` (or several: any of them), naming that option."""
     prefix = "drafting: error: "
     if not line.startswith(prefix):
         return "not one line"
     if len(line) > MAX_MESSAGE:
         return "long message"
-    if option and _OPTION.match(line) and option in line:
+    names = (option,) if isinstance(option, str) else tuple(option or ())
+    if names and _OPTION.match(line) and any(n in line for n in names):
         return None
     rest = line[len(prefix):]
     for shown in shown_paths:

@@ -114,3 +114,15 @@ def test_an_empty_vary_key_is_named_as_toml_writes_it(tmp_path, capsys):
     code, _, err = run(capsys, "batch", scene, "--variants", "1", "-o", tmp_path / "out", "--workers", "1")
     assert code == 2
     one_line(err, f'{scene}: vary."": unknown key')
+
+
+def test_an_answers_csv_that_is_not_csv_is_one_sentence(tmp_path, capsys):
+    """A stray carriage return inside an unquoted field made csv raise out of `check --answers` (the
+    1000-per-kind fuzz run, seed 11): now one sentence naming the file and line, exit 2."""
+    from drafting.app.cli import main
+    from paths import GALLERY
+    bad = tmp_path / "answers.csv"
+    bad.write_bytes(b"V_B,500 mm/s\rx,1\n")
+    code = main(["check", str(GALLERY / "offset-roller-cycloidal-cam.toml"), "--answers", str(bad)])
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and f"{bad}: line 1: is not a CSV row" in err, err

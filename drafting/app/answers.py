@@ -220,7 +220,16 @@ def read_answers(path: Path | str) -> list[tuple[str, object]]:
             raise AnswersError(path, "", f"is not valid TOML ({e})") from None
         return list(t.items())
     pairs: list[tuple[str, object]] = []
-    for i, row in enumerate(csv.reader(io.StringIO(text)), 1):
+    reader = csv.reader(io.StringIO(text))
+    rows = iter(reader)
+    while True:
+        try:
+            row = next(rows)
+        except StopIteration:
+            break
+        except csv.Error as e:              # a stray carriage return inside a field, a NUL ...
+            raise AnswersError(path, f"line {reader.line_num}", f"is not a CSV row ({e})") from None
+        i = reader.line_num
         cells = [c.strip() for c in row]
         if not cells or not any(cells) or cells[0].startswith("#"):
             continue
