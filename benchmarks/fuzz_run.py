@@ -69,7 +69,7 @@ class _Hang(BaseException):
 
 _KEYED = re.compile(
     r"(?:[A-Za-z_][\w\-]*(?:\[\d+\])*(?:\.[^:]+)?"              # link[2].length, frame.O1, input, frame.a b
-    r"|line \d+(?: \([^)]*\))?"                                   # line 3 (a.b)
+    r"|line \d+(?: \(.*?\))?"                                     # line 3 (a.b), a key with brackets in it
     r"|at [^:]+"                                                  # at crank angle 70 deg
     r"): \S")
 _FILE_LEVEL = re.compile(r"(?:is not valid TOML \(.*line \d+|is larger than \d+ KiB|is not UTF-8 text \(byte "
