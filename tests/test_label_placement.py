@@ -41,10 +41,10 @@ def test_the_clipped_length_is_the_length_shapely_cuts(seg, bx):
     """The scalar Liang-Barsky clip against an independent one: shapely's intersection of the segment
     with the box (the reference below is the same algorithm as the code; this one is not)."""
     from shapely.geometry import LineString, box as sbox
-    from drafting.layout.labels import _clip
+    from drafting.layout.label_kin import clip_fraction
     (a0, a1), (b0, b1), _ = seg
     left, top, w, h = bx
-    got = _clip(a0, a1, b0 - a0, b1 - a1, left, top, left + w, top + h) * math.hypot(b0 - a0, b1 - a1)
+    got = clip_fraction(a0, a1, b0 - a0, b1 - a1, left, top, left + w, top + h) * math.hypot(b0 - a0, b1 - a1)
     assert got == clip_len((a0, a1), (b0, b1), left, top, left + w, top + h)
     if (a0, a1) != (b0, b1):
         want = LineString([(a0, a1), (b0, b1)]).intersection(sbox(left, top, left + w, top + h)).length
@@ -52,10 +52,10 @@ def test_the_clipped_length_is_the_length_shapely_cuts(seg, bx):
 
 
 def test_a_segment_along_an_edge_or_outside_covers_nothing():
-    from drafting.layout.labels import _clip
-    assert _clip(0.0, 0.0, 10.0, 0.0, 0.0, 1.0, 5.0, 3.0) == 0.0            # outside, parallel to the box
-    assert _clip(0.0, 0.0, 10.0, 0.0, 2.0, -1.0, 6.0, 1.0) == pytest.approx(0.4, rel=1e-12)
-    assert _clip(20.0, 5.0, 10.0, 0.0, 0.0, 1.0, 5.0, 3.0) == 0.0
+    from drafting.layout.label_kin import clip_fraction
+    assert clip_fraction(0.0, 0.0, 10.0, 0.0, 0.0, 1.0, 5.0, 3.0) == 0.0            # outside, parallel to the box
+    assert clip_fraction(0.0, 0.0, 10.0, 0.0, 2.0, -1.0, 6.0, 1.0) == pytest.approx(0.4, rel=1e-12)
+    assert clip_fraction(20.0, 5.0, 10.0, 0.0, 0.0, 1.0, 5.0, 3.0) == 0.0
 
 
 def reference_candidates(req, hw, hh, incident, relax):

@@ -60,7 +60,7 @@ def _element_bounds(g: tuple) -> tuple[float, float, float, float]:
     return min(a0, b0), min(a1, b1), max(a0, b0), max(a1, b1)
 
 
-def _clip(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
+def clip_fraction(a0: float, a1: float, dx: float, dy: float, left: float, top: float, right: float,
           bottom: float) -> float:
     """The fraction of the segment from (a0, a1) along (dx, dy) inside a box (Liang-Barsky)."""
     t0, t1 = 0.0, 1.0
@@ -88,7 +88,7 @@ def _segment_distance(a0: float, a1: float, b0: float, b1: float, le: float, to:
                       bo: float) -> float:
     """The least distance between a segment and a box (0 when they meet)."""
     dx, dy = b0 - a0, b1 - a1
-    if _clip(a0, a1, dx, dy, le, to, ri, bo) > 0.0:
+    if clip_fraction(a0, a1, dx, dy, le, to, ri, bo) > 0.0:
         return 0.0                                      # it runs through the box
     n2 = dx * dx + dy * dy
     best = min(_point_distance(a0, a1, le, to, ri, bo), _point_distance(b0, b1, le, to, ri, bo))

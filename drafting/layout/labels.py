@@ -13,7 +13,7 @@ from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident
 from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
-from .label_kin import Kin, _clip
+from .label_kin import Kin, clip_fraction
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -273,7 +273,7 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
         thin = thick = 0.0
         for x0, y0, x1, y1, a0, a1, dx, dy, heavy, length in segments:
             if x0 <= ri and x1 >= le and y0 <= bo and y1 >= to:      # else it adds exactly 0.0
-                got = _clip(a0, a1, dx, dy, le, to, ri, bo) * length
+                got = clip_fraction(a0, a1, dx, dy, le, to, ri, bo) * length
                 if heavy:
                     thick += got
                 else:

@@ -9,6 +9,7 @@ from typing import Iterable, Sequence
 from ...render.paper import Circle, Command, Line, Polygon, Polyline, Pt, Rect, Rectangle, Strokes, Text, \
     command_points
 from ...render.style import THICK, styles
+from ..label_kin import clip_fraction
 
 Segment = tuple[Pt, Pt]
 
@@ -72,27 +73,15 @@ def is_heavy(cmd: Command) -> bool:
 
 
 def clip_length(seg: Segment, box: Rect) -> float:
-    """The length of the part of ``seg`` strictly inside ``box`` (Liang-Barsky; a touch is 0)."""
+    """The length of the part of ``seg`` strictly inside ``box`` (Liang-Barsky, the placer's own
+    :func:`~drafting.layout.label_kin.clip_fraction`; a touch is 0)."""
     (a0, a1), (b0, b1) = seg
     le, to = box.x, box.y
     ri, bo = le + box.w, to + box.h
     if (a0 <= le and b0 <= le) or (a0 >= ri and b0 >= ri) or (a1 <= to and b1 <= to) or (a1 >= bo and b1 >= bo):
         return 0.0
     dx, dy = b0 - a0, b1 - a1
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, a0 - le), (dx, ri - a0), (-dy, a1 - to), (dy, bo - a1)):
-        if abs(p) < 1e-12:
-            if q <= 0:
-                return 0.0
-            continue
-        t = q / p
-        if p < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-        if t0 >= t1:
-            return 0.0
-    return (t1 - t0) * math.hypot(dx, dy)
+    return clip_fraction(a0, a1, dx, dy, le, to, ri, bo) * math.hypot(dx, dy)
 
 
 def circle_box_distance(cx: float, cy: float, r: float, box: Rect) -> float:
