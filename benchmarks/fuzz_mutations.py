@@ -253,6 +253,15 @@ def m_duplicate(rng: random.Random, c: Case) -> None:
     c.must_refuse = True
 
 
+def _smallest_coordinate(frame: dict) -> float:
+    """The smallest non-zero plain-number coordinate of the frame's points (1 if none): a "ratio"
+    mutation puts a coordinate beyond 1e6 times it, so beyond the scene's length ratio whatever the
+    scene's other lengths (a fixed 2e8 lay within 1e6 of the front-end loader's 220 mm)."""
+    nums = [abs(x) for p in frame.values() if isinstance(p, list) for x in p
+            if isinstance(x, (int, float)) and not isinstance(x, bool) and x != 0]
+    return min(nums, default=1.0)
+
+
 def m_giant_coordinates(rng: random.Random, c: Case) -> None:
     if c.data is None:
         return
@@ -261,7 +270,7 @@ def m_giant_coordinates(rng: random.Random, c: Case) -> None:
     if how in ("pivot", "float", "ratio") and d.get("frame"):
         name = rng.choice(list(d["frame"]))
         v = {"pivot": rng.choice([1e10, 1e15, 1e30, 1e300, -1e300, 2 ** 1023]), "float": float("inf"),
-             "ratio": rng.choice([2e8, 1e9, 5e9])}[how]
+             "ratio": rng.choice([2e6, 1e7]) * _smallest_coordinate(d["frame"])}[how]
         d["frame"][name] = [v, d["frame"][name][1] if isinstance(d["frame"][name], list) and len(d["frame"][name]) > 1 else 0]
     elif how == "through" and d.get("slider"):
         d["slider"][0]["through"] = [rng.choice([1e12, 1e300]), 0]
