@@ -85,3 +85,29 @@ def test_a_page_whose_steps_go_on_under_the_space_diagram_reads_out_of_order():
     assert count(Document([plan], ["0#text:0"] * 3 + ["0#text:1"], 3.0), sections) == 1
     assert count(Document([plan], ["0#text:0"] * 4, 3.0), sections) == 0
     assert count(Document([plan], ["0#text:1"] * 4, 3.0), sections) == 0
+
+
+def test_text_that_reaches_the_room_under_the_space_diagram_is_set_there_first():
+    """The room under the space diagram lies left of the text column and is read before it: when the text
+    reaches it, it is flowed first (the slots in reading order), so velocity Example 4 reads the vector
+    equations and steps 1-4 there and goes on with step 5 at the top of the column; a room the text never
+    reached keeps its place (given back to the diagram)."""
+    from drafting.layout import reading_order
+    from drafting.layout.page_plans import PagePlan
+    from drafting.render.paper import Rect
+    column, room = Rect(120, 10, 80, 150), Rect(10, 80, 100, 40)
+    plan = PagePlan(text_slots=[("text:0", column), ("text:1", room)], reclaim=[("text:1", {}, (0, 0, 0, 0))])
+    slots = [("0#text:0", column), ("0#text:1", room)]
+    assert reading_order.reading_slots([plan], slots, {"0#text:0", "0#text:1"}) == slots[::-1]
+    assert reading_order.reading_slots([plan], slots, {"0#text:0"}) == slots
+    # a room right of the column is read after it: kept in its place
+    right = PagePlan(text_slots=[("text:0", room), ("text:1", column)], reclaim=[("text:1", {}, (0, 0, 0, 0))])
+    slots = [("0#text:0", room), ("0#text:1", column)]
+    assert reading_order.reading_slots([right], slots, {"0#text:0", "0#text:1"}) == slots
+
+    from drafting.api import load
+    from tests.paths import GALLERY
+    sheets = load(GALLERY / "notes-velocity-example-4.toml").sheets()
+    region = {c.name: c.region for c in sheets[0].commands if getattr(c, "name", "").startswith("step ")}
+    first = {n: region[f"step {n} number"] for n in (1, 5)}
+    assert first[1] == "text:1" and first[5] == "text:0", first              # steps 1-4 under the space diagram, 5 on in the column

@@ -32,7 +32,7 @@ from .items import Section, TooWide
 from .page_plans import PagePlan, TbHeight, diagram_page, text_page, text_page_options
 from .panel import Panel
 from .panels import SpacePanel, VectorPanel
-from .reading_order import steps_out_of_order
+from .reading_order import reading_slots, steps_out_of_order
 
 COMFORTABLE_LETTERING = 3.0
 """Lettering below this is taken only when nothing else fits."""
@@ -77,7 +77,13 @@ def _flow(sections, pages, cache) -> tuple[list, float] | None:
     slots = slots_of(pages)
     key = ("flow", tuple((n, round(r.x, 6), round(r.y, 6), round(r.w, 6), round(r.h, 6)) for n, r in slots))
     if key not in cache:
-        cache[key] = flow_shrinking(sections, slots, cache=cache, plan=True)
+        got = flow_shrinking(sections, slots, cache=cache, plan=True)
+        ordered = reading_slots(pages, slots, set(got[0])) if got else slots
+        if ordered != slots:               # the text reached a slot read before the column: set it there first
+            again = flow_shrinking(sections, ordered, cache=cache, plan=True)
+            if again is not None and again[1] >= got[1] - 1e-9:
+                got = again
+        cache[key] = got
     return cache[key]
 
 

@@ -41,6 +41,7 @@ from .flow import TEXT_SIZES, flow_shrinking, slot_page, slot_region
 from .formats import DiagramScale, SheetFormatter, ValueHook
 from .page_plans import PagePlan
 from .pages import Document, plan_document, slots_of
+from .reading_order import reading_slots
 from .panel import Panel, PanelCache
 from .panels import VectorPanel, held_to, panels_for
 from .parts import entity_kinds
@@ -299,6 +300,11 @@ def _reflow(sections, doc: Document, cache) -> tuple[list, float]:
     if not sections:
         return [], doc.size
     slots = slots_of(doc.pages)
+    ordered = reading_slots(doc.pages, slots, set(doc.text))
+    at = {name: i for i, (name, _) in enumerate(ordered)}
+    firsts = [at[name] for name in dict.fromkeys(doc.text) if name in at]
+    if firsts == sorted(firsts):                 # the plan was flowed in reading order
+        slots = ordered
     sizes = [s for s in TEXT_SIZES if s <= doc.size + 1e-9]
     got = flow_shrinking(sections, slots, sizes=sizes, cache=cache, tagged=True)
     if got is None:
