@@ -202,3 +202,23 @@ def test_the_ambiguity_distances_are_the_distances_shapely_measures(g, bx):
     else:
         want = LineString(g).distance(b)
     assert got == pytest.approx(want, abs=2e-4 * (1 + (g[2] if len(g) == 3 else 0)))
+
+
+def test_a_label_pushed_off_its_arrow_is_tied_to_it_by_a_leader_only_where_the_leader_is_clear():
+    """A label whose places beside its arrow are taken stands off it: from 2.5 mm to 8 mm it gets a thin
+    leader from the nearest point of the shaft, unless the leader would run through another label, a mark
+    or across another heavy line (it would seem to name that one); a label beside its arrow gets none."""
+    from drafting.layout.labels import FAR_LABEL, LONGEST_LEADER, _leader, _clear, _crosses_heavy
+    from drafting.render.drawing import LabelReq
+    from drafting.render.paper import Line, Rect
+    req = LabelReq(anchor=(70.0, 50.0), kind="arrow", markup="V_B", mandatory=False, name="V_B", other=(40.0, 50.0))
+    assert _leader(req, Rect(50, 45, 6, 4)) is None                  # 1 mm above the shaft
+    lead = _leader(req, Rect(50, 41, 6, 4))                           # 5 mm above it
+    assert lead is not None and lead.name == "V_B:leader" and lead.style == "dimension"
+    assert (lead.x1, lead.y1, lead.x2, lead.y2) == pytest.approx((53.0, 50.0, 53.0, 45.0))
+    assert FAR_LABEL < 5.0 < LONGEST_LEADER
+    assert _leader(req, Rect(50, 30, 6, 4)) is None                   # 16 mm off: a leader would not serve
+    assert _clear(lead, [Rect(60, 40, 5, 5)]) and not _clear(lead, [Rect(52, 46, 3, 2)])
+    assert _crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), True)])          # another vector between
+    assert not _crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), False)])    # a thin line is no matter
+    assert not _crosses_heavy(lead, [((40.0, 50.0), (70.0, 50.0), True)])     # its own shaft

@@ -156,6 +156,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     placed: list[Rect] = []
     out: list[Command] = []
     leaders: list[Command] = []
+    tied: list[tuple[LabelReq, Rect]] = []
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
                                                         ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
     segs = _Segments(d.segments)
@@ -201,8 +202,12 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         y = centre[1] - (ext.top + ext.bottom) / 2
         out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
-        leader = _leader(req, box)
-        if leader is not None:
+        tied.append((req, box))
+    for req, box in tied:                # once every label is placed: a leader hidden under another's ground
+        leader = _leader(req, box)       # would leave a stray stroke, so a far label's goes only where clear
+        if leader is not None and (_short(req) or (_clear(leader, [o for o in placed if o is not box] + [
+                h for h in d.hard if not h.contains_point(leader.x1, leader.y1)]) and not _crosses_heavy(
+                leader, d.segments))):
             leaders.append(leader)
     return leaders + out            # the leaders first: under every label's white ground, never over a text
 
@@ -219,21 +224,73 @@ def _tiers(req: LabelReq, clear):
 
 SHORT_ARROW = 5.0
 """mm: an arrow shorter than this cannot carry its label along it; a leader ties the label to it."""
+FAR_LABEL = 2.5
+"""mm: a label whose box stands off its own arrow's shaft farther than this (the places beside the arrow
+were taken) is tied to it by a leader, as a draughtsman does, so the reader need not guess its arrow --
+up to :data:`LONGEST_LEADER`: a longer thin line across a polygon reads as one more construction line."""
+LONGEST_LEADER = 8.0
+
+
+def _clear(line: Line, boxes: list[Rect]) -> bool:
+    """Whether ``line`` passes through none of ``boxes``."""
+    dx, dy = line.x2 - line.x1, line.y2 - line.y1
+    return not any(clip_fraction(line.x1, line.y1, dx, dy, o.left, o.top, o.right, o.bottom) > 0 for o in boxes)
+
+
+def _crosses_heavy(line: Line, segments) -> bool:
+    """Whether ``line`` crosses a heavy line (a vector, a link...) other than the one it starts on: a
+    leader across another arrow would seem to name that one."""
+    p, r = (line.x1, line.y1), (line.x2 - line.x1, line.y2 - line.y1)
+    for a, b, thick in segments:
+        if not thick:
+            continue
+        q, s = a, (b[0] - a[0], b[1] - a[1])
+        den = r[0] * s[1] - r[1] * s[0]
+        if abs(den) < 1e-12:
+            continue
+        wx, wy = q[0] - p[0], q[1] - p[1]
+        t, u = (wx * s[1] - wy * s[0]) / den, (wx * r[1] - wy * r[0]) / den
+        if 1e-3 < t <= 1.0 and 0.0 <= u <= 1.0:       # (t = 0: the shaft the leader starts on)
+            return True
+    return False
+
+
+def _short(req: LabelReq) -> bool:
+    """Whether ``req`` labels an arrow too short to carry its label (its leader is drawn whatever it
+    crosses: the label cannot sit on the arrow)."""
+    return req.kind == "arrow" and req.other is not None and math.dist(req.anchor, req.other) < SHORT_ARROW
 
 
 def _leader(req: LabelReq, box: Rect) -> Line | None:
-    """A thin leader from the middle of a short arrow to the nearest point of its label's box, or None for
-    a label that needs none (not an arrow, long enough, or touching it)."""
+    """A thin leader to a label's box from the middle of a short arrow, or from the nearest point of a
+    long arrow's shaft when the box stands off it by more than :data:`FAR_LABEL` (and less than
+    :data:`LONGEST_LEADER`); None for a label that needs none (not an arrow, or beside its arrow) or that
+    a leader would not serve."""
     if req.kind != "arrow" or req.other is None:
         return None
     (ax, ay), (bx, by) = req.anchor, req.other
-    if math.hypot(ax - bx, ay - by) >= SHORT_ARROW:
-        return None
-    mx, my = (ax + bx) / 2, (ay + by) / 2
+    if not _short(req):
+        mx, my = _nearest_on_segment((ax, ay), (bx, by), (box.x + box.w / 2, box.y + box.h / 2))
+        qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
+        if math.hypot(qx - mx, qy - my) <= FAR_LABEL:
+            return None
+        mx, my = _nearest_on_segment((ax, ay), (bx, by), (qx, qy))
+        if math.hypot(qx - mx, qy - my) > LONGEST_LEADER:
+            return None
+    else:
+        mx, my = (ax + bx) / 2, (ay + by) / 2
     qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
     if math.hypot(qx - mx, qy - my) < 0.3:
         return None
     return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
+
+
+def _nearest_on_segment(a: tuple[float, float], b: tuple[float, float], p: tuple[float, float]) -> tuple[float, float]:
+    """The point of segment ab nearest ``p``."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = dx * dx + dy * dy
+    t = 0.0 if n == 0 else min(max(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / n, 0.0), 1.0)
+    return a[0] + t * dx, a[1] + t * dy
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],

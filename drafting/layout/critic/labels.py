@@ -106,6 +106,7 @@ def _entities(sheet) -> dict[str, tuple[str, list, Rect]]:
     arrowhead "<owner>:head"), a "point" (a dot, or a pin "<owner>:pin" of its own), else the type and
     style of its own geometry ("Line trial", "Polyline dimension" for an angle mark's arc...)."""
     own: dict[str, list[Command]] = defaultdict(list)
+    leaders: dict[str, list[Command]] = defaultdict(list)
     heads: set[str] = set()
     for c in sheet.commands:
         if type(c) is Text:
@@ -118,6 +119,8 @@ def _entities(sheet) -> dict[str, tuple[str, list, Rect]]:
             own[o].append(c)
         elif p == "pin" and type(c) is Circle:
             own[o].append(c)
+        elif p == "leader" and type(c) is Line:
+            leaders[o].append(c)
     out: dict[str, tuple[str, list, Rect]] = {}
     for o, cmds in own.items():
         if o in heads and any(type(c) is Line for c in cmds):
@@ -134,6 +137,8 @@ def _entities(sheet) -> dict[str, tuple[str, list, Rect]]:
             for c in cmds:
                 geometry.extend([(c.cx, c.cy, c.r)] if type(c) is Circle else outline(c))
         out[o] = (kind, geometry, bounding(cmds))
+        if leaders.get(o):                     # a leader ties the label to its own entity: measured from it
+            out[LEADER + o] = ("leader", [seg for c in leaders[o] for seg in outline(c)], bounding(leaders[o]))
     return out
 
 
@@ -153,6 +158,8 @@ def _marks(sheet) -> list[tuple[float, float]]:
     return got
 
 
+LEADER = "leader of "
+"""The key of a label's leader among :func:`_entities`: the label's own distance is also measured to it."""
 NUMBER = "number "
 """A link number's entity is named after its link ("number link 3" numbers the bars and plate "link 3",
 "link 3 AB", as the record names a link's parts)."""
@@ -182,7 +189,7 @@ def ambiguous_labels(sheet) -> list[Finding]:
     """label-ambiguous: a label ("<owner>:label") whose nearest other entity of the same kind is not
     clearly farther from the label's box than its own entity: other distance <= own distance +
     :data:`AMBIGUITY_MARGIN`.  Distances are from the text's box to the entity's geometry (an arrow's
-    shaft and head, a point's centre, a line's or arc's path).  Kinds: arrows (vectors, loads: a shaft
+    shaft and head or the leader drawn to the label, a point's centre, a line's or arc's path).  Kinds: arrows (vectors, loads: a shaft
     with an arrowhead), points (dots and pins, one per place), and otherwise the command type and style
     of the entity's geometry (trial lines with trial lines, angle arcs with angle arcs...).  A label of a
     point drawn only as another entity's pin (a joint on a link's pin: the sheet does not say which pin is
@@ -209,7 +216,7 @@ def ambiguous_labels(sheet) -> list[Finding]:
             d_own, (d_other, where) = near[0][0], near[1]
             other = f"the mark at ({where[0]:.1f}, {where[1]:.1f})"
         else:
-            d_own = _distance(t.box, geometry)
+            d_own = min(_distance(t.box, geometry), _distance(t.box, ents.get(LEADER + mine, ("", [], None))[1]))
             got = _nearest(t.box, [(o, g, bb) for o, (k, g, bb) in ents.items() if k == kind and o != mine
                                    and not (kind == "point" and _same_place(g, geometry))])
             if got is None:
