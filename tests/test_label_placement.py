@@ -210,7 +210,7 @@ def test_a_label_pushed_off_its_arrow_is_tied_to_it_by_a_leader_only_where_the_l
     or across another heavy line (it would seem to name that one); a label beside its arrow gets none."""
     from drafting.layout.labels import FAR_LABEL, LONGEST_LEADER, _leader, _clear, _crosses_heavy
     from drafting.render.drawing import LabelReq
-    from drafting.render.paper import Line, Rect
+    from drafting.render.paper import Rect
     req = LabelReq(anchor=(70.0, 50.0), kind="arrow", markup="V_B", mandatory=False, name="V_B", other=(40.0, 50.0))
     assert _leader(req, Rect(50, 45, 6, 4)) is None                  # 1 mm above the shaft
     lead = _leader(req, Rect(50, 41, 6, 4))                           # 5 mm above it
