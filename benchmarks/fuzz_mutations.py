@@ -258,8 +258,8 @@ def _smallest_coordinate(frame: dict) -> float:
     mutation puts a coordinate beyond 1e6 times it, so beyond the scene's length ratio whatever the
     scene's other lengths (a fixed 2e8 lay within 1e6 of the front-end loader's 220 mm)."""
     nums = [abs(x) for p in frame.values() if isinstance(p, list) for x in p
-            if isinstance(x, (int, float)) and not isinstance(x, bool) and x != 0]
-    return min(nums, default=1.0)
+            if isinstance(x, (int, float)) and not isinstance(x, bool) and x != 0 and abs(x) < 1e300]
+    return float(min(nums, default=1.0))
 
 
 def m_giant_coordinates(rng: random.Random, c: Case) -> None:
