@@ -22,13 +22,13 @@ import secrets
 import threading
 from collections import OrderedDict
 from pathlib import Path
-from urllib.parse import urlsplit
 
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
 from starlette.requests import Request
 from starlette.responses import HTMLResponse, JSONResponse, PlainTextResponse, Response, StreamingResponse
 from starlette.routing import Route
+from watchfiles import awatch
 
 from ..scene import limits
 from .live import Drawn, draw
@@ -215,7 +215,6 @@ def create_app(target: Path | str, token: str | None = None, cookie: str = "draf
 
 async def _changes(space: Workspace, request: Request):
     """Server-sent events: ``changed`` with a scene's name and version each time a served file changes."""
-    from watchfiles import awatch
     stop = asyncio.Event()
     yield ": watching\n\n"
     served = set(space.names())
