@@ -71,7 +71,7 @@ class Browser:
             raise RuntimeError(r["exceptionDetails"].get("exception", {}).get("description", str(r)))
         return r["result"].get("value")
 
-    def wait(self, expression: str, timeout: float = 15.0):
+    def wait(self, expression: str, timeout: float = 30.0):
         """Poll ``expression`` until it is truthy; its value."""
         deadline = time.monotonic() + timeout
         while True:

@@ -1,7 +1,8 @@
 """drafting serve in a real browser (headless Chromium over the DevTools protocol): the command prints a URL
 with a token; a changed crank angle redraws the sheet with the new V_C; a bad unit shows its sentence at
 its line and keeps the last good sheet; a save writes the file and its backup; a save of the file from
-another editor redraws the page; a request without the token is refused."""
+another editor redraws the page (with unsaved edits: the tab is told, and
+its save refused); a request without the token is refused."""
 
 from __future__ import annotations
 
@@ -60,7 +61,10 @@ def test_live_edit_in_headless_chromium(served, tmp_path):
     assert before != after
     with Browser() as b:
         b.open(url)
-        b.wait(f"window.serveState && serveState.drawn > 0 && {SHEET}.includes({before!r})")
+        b.wait(f"window.serveState && serveState.drawn > 0 && {SHEET}.includes({before!r})", 60)
+        fonts = b.eval("document.getElementById('view').contentDocument.fonts.ready"
+                       ".then(fs => [...fs].map(f => f.status))")
+        assert fonts and set(fonts) == {"loaded"}                          # the sheet's own font, not blocked
         # the same page without its token, from a fetch that sends no cookie: refused
         assert b.eval(f"fetch({base + 'api/scenes'!r}, {{credentials: 'omit'}}).then(r => r.status)") == 403
 
@@ -89,5 +93,13 @@ def test_live_edit_in_headless_chromium(served, tmp_path):
         scene.write_text(text.replace('"70 deg"', '"40 deg"'))
         b.wait(f"{SHEET}.includes({third!r})")
         assert b.eval("document.getElementById('text').value.includes('\"40 deg\"')")
+        # unsaved edits here while another editor saves: told, and a save here is refused, not written over
+        b.eval(edit('"40 deg"', '"45 deg"'))
+        outside = text.replace('"70 deg"', '"30 deg"')
+        scene.write_text(outside)
+        b.wait("document.getElementById('notice').textContent.includes('was saved elsewhere')")
+        b.eval("document.getElementById('save').click()")
+        b.wait("document.getElementById('notice').textContent.includes('changed since this tab loaded it')")
+        assert scene.read_text() == outside
     print(f"edit to sheet (request + page load in Chromium): {latency:.0f} ms")
     assert latency < 2000

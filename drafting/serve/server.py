@@ -39,7 +39,7 @@ LOCAL_HOSTS = ("127.0.0.1", "localhost", "[::1]")
 KEPT_DRAWINGS = 16
 MAX_BODY = 8 * limits.MAX_FILE_BYTES          # a scene's text as JSON (escapes) and its name
 HEADERS = {"Content-Security-Policy": "default-src 'self'; script-src 'self' 'unsafe-inline'; "
-                                      "style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
+                                      "style-src 'self' 'unsafe-inline'; img-src 'self' data:; font-src 'self' data:; "
                                       "frame-ancestors 'self'; base-uri 'none'; form-action 'none'",
            "X-Frame-Options": "SAMEORIGIN", "X-Content-Type-Options": "nosniff", "Referrer-Policy": "no-referrer",
            "Cache-Control": "no-store"}
