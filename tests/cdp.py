@@ -21,7 +21,7 @@ class Browser:
 
     def __enter__(self) -> "Browser":
         from websockets.sync.client import connect
-        self.profile = tempfile.TemporaryDirectory(prefix="drafting-cdp-")
+        self.profile = tempfile.TemporaryDirectory(prefix="drafting-cdp-", ignore_cleanup_errors=True)
         self.proc = subprocess.Popen([CHROMIUM, "--headless=new", "--no-sandbox", "--disable-gpu",
                                       "--remote-debugging-port=0", f"--user-data-dir={self.profile.name}",
                                       "--no-first-run", "--window-size=1400,900", "about:blank"],
@@ -49,6 +49,11 @@ class Browser:
             self.proc.wait(10)
         except subprocess.TimeoutExpired:
             self.proc.kill()
+        for _ in range(20):                      # Chromium's helpers may still be writing the profile
+            shutil.rmtree(self.profile.name, ignore_errors=True)
+            if not Path(self.profile.name).exists():
+                break
+            time.sleep(0.05)
         self.profile.cleanup()
 
     def call(self, method: str, **params):

@@ -102,4 +102,3 @@ def test_live_edit_in_headless_chromium(served, tmp_path):
         b.wait("document.getElementById('notice').textContent.includes('changed since this tab loaded it')")
         assert scene.read_text() == outside
     print(f"edit to sheet (request + page load in Chromium): {latency:.0f} ms")
-    assert latency < 2000
