@@ -4,7 +4,7 @@ rooms (render/, layout/, backends/) import of constructions/ only the record and
 of (geometry, and the tolerance the drawing's one geometric helper is given); scene/ the model's data types
 it reads a scene into; app/ the errors and values it reports.  Every number and point they draw or print
 comes from the Study's record and results.  And drafting's rooms import only down their floors
-(render < scene < layout < backends < study < families < app)."""
+(render < scene < layout < backends < study < families < app = serve)."""
 
 from __future__ import annotations
 
@@ -23,6 +23,7 @@ ROOM_IMPORTS = {
               "constructions.mechanisms.model"},
     "app": {"constructions.entities", "constructions.errors", "constructions.geometry", "constructions.quantities",
             "constructions.record"},
+    "serve": set(),
 }
 """Each room that does not solve and exactly the constructions modules it imports."""
 
@@ -88,7 +89,7 @@ def test_every_room_is_ruled_and_the_top_imports_no_engine():
     assert {f: _engine(harness[f]) for f in BENCH_HARNESS} == BENCH_HARNESS
 
 
-FLOORS = {"render": 0, "scene": 1, "layout": 2, "backends": 3, "study": 4, "families": 5, "app": 6}
+FLOORS = {"render": 0, "scene": 1, "layout": 2, "backends": 3, "study": 4, "families": 5, "app": 6, "serve": 6}
 """drafting's rooms, lowest first: a module imports from its own room or a lower one (api.py and entry.py,
 on top, from any).  The one exception is families/registry.py, which imports nothing and which scene/
 (reading a scene's kind) and study/ (its analyses) look families up in."""

@@ -139,4 +139,12 @@ def parser() -> argparse.ArgumentParser:
     w.add_argument("--csv", type=Path, metavar="FILE", help="write the table as CSV (scene units)")
     w.add_argument("--sheet", type=Path, metavar="DIR",
                    help="also draw the cycle sheet (charts, coupler curves, limit positions) into DIR")
+    v = sub.add_parser("serve", help="edit a scene in the browser beside its sheets, redrawn as you type",
+                       description="A local web app (this machine only, a token in its URL): the scene's text "
+                                   "beside its sheets, redrawn as you type and when the file is saved; saves "
+                                   "are atomic and keep the previous version as NAME.toml~. Needs the extra "
+                                   "(pip install 'tom-drafting[serve]').")
+    v.add_argument("target", nargs="?", type=Path, metavar="SCENE|FOLDER",
+                   help="a scene file, or a folder whose scenes are listed (default: the current folder)")
+    v.add_argument("--port", type=int, default=8470, help="port on 127.0.0.1 (default: %(default)s; 0: any free)")
     return p

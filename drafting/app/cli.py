@@ -268,6 +268,9 @@ def _main(argv: Sequence[str] | None) -> int:
         if args.command == "export":
             from .cam_export import run_export
             return run_export(args)
+        if args.command == "serve":
+            from ..serve.command import cmd_serve
+            return cmd_serve(args.target, args.port)
         if args.command == "sweep":
             from .sweep_cmd import SweepInputError, cmd_sweep
             try:
