@@ -167,7 +167,7 @@ def _train_analytic(study):
         for m, t in row.get("torques", {}).items():
             out[a.quantity(f"T_{m}", case)] = t
         for mesh, w in row.get("loads", {}).items():
-            out[a.quantity(f"W_t {mesh}", case)] = w
+            out[a.quantity(a.load_name(mesh), case)] = w
     return out
 
 
