@@ -9,7 +9,8 @@ A pair in mesh (``kind = "gear pair"``)::
                 it decides the fillet and, below the undercut limit, the undercut drawn)
     [pair]      pinion = 20 (teeth of gear 1, the driver); gear = 40 (teeth of gear 2) or "rack";
                 centre_distance = "152 mm" (optional; for a rack, from O1 to the rack's pitch line);
-                internal = true (gear 2 is an internal gear, a ring, about the pinion)
+                internal = true (gear 2 is an internal gear, a ring, about the pinion); speed = "1000 rpm"
+                (optional, the pinion's: the pitch-line speed and the sliding velocity at the tips)
 
 A gear train (``kind = "gear train"``)::
 
@@ -62,6 +63,7 @@ class GearPairScene(Scene):
     """A gear pair scene: the ``pair`` in mesh (pinion, gear or rack, centre distance)."""
 
     pair: Pair
+    speed: float | None = None        # the pinion's speed (rad/s, a magnitude): pitch-line speed and sliding
 
 
 @dataclass(frozen=True)
@@ -155,7 +157,7 @@ def read_gear_pair(r: SceneReader, units: Units) -> dict:
     s = read_teeth(r, units)
     if "pair" not in r.data:
         raise r.fail("pair", "is missing: give the teeth, e.g. [pair] pinion = 20, gear = 40 (or gear = \"rack\")")
-    t = r.table("pair", {"pinion", "gear", "centre_distance", "internal"}, {"pinion", "gear"})
+    t = r.table("pair", {"pinion", "gear", "centre_distance", "internal", "speed"}, {"pinion", "gear"})
     internal = t.get("internal", False)
     if not isinstance(internal, bool):
         raise r.fail("pair.internal", "must be true (gear 2 is an internal gear, a ring) or false")
@@ -178,7 +180,12 @@ def read_gear_pair(r: SceneReader, units: Units) -> dict:
         c = r.quantity("pair.centre_distance", t["centre_distance"], "length", units)
     pair = Pair(Gear(n1, s), gear, c, internal=internal)
     r.lengths.append(("pair", pair.size))
-    return {"pair": pair}
+    w = None
+    if "speed" in t:
+        w = r.quantity("pair.speed", t["speed"], "angular velocity", units)
+        if not w > 0:
+            raise r.fail("pair.speed", "must be a positive speed of the pinion, e.g. \"1000 rpm\"")
+    return {"pair": pair, "speed": w}
 
 
 def read_gear_train(r: SceneReader, units: Units) -> dict:
