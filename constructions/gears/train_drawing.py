@@ -182,8 +182,11 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                 else:
                     O, r = Vec(0.0, 0.0), 0.0
                     continue
-                a0 = math.radians(105.0 if not gs[0].internal else 220.0)
-                span = math.radians(70.0) * (1 if w > 0 else -1)
+                a0, span = math.radians(105.0 if not gs[0].internal else 220.0), math.radians(70.0)
+                if gs[0].internal and train.planets > 1:
+                    a0, span = _between_planets(train, centres, r)
+                span *= 1 if w > 0 else -1
+                a0 -= span / 2 if gs[0].internal and train.planets > 1 else 0.0
                 marks.append(AngleMark(f"sense {m}", Role.LOAD, KINEMATIC, O, r, a0, a0 + span,
                                        f"n_{m} {'CCW' if w > 0 else 'CW'}"))
             if marks:
@@ -257,3 +260,14 @@ def _willis_step(train: Train, case: Case, sol: TrainSolution, A: str, B: str, d
     return rec.then(f"{case.name}: a differential, two members driven. Notes' formula (Willis) (n_{B} - n_c)/(n_{A} - "
                     f"n_c) = e = {e:+.5g}; with n_{driven[0]} = $d0 and n_{driven[1]} = $d1: {solved} = $out.",
                     values=vals, kind=StepKind.ANSWER)
+
+
+def _between_planets(train: Train, centres: dict, r: float) -> tuple[float, float]:
+    """The middle and the span (rad) of a ring's sense arrow, radius ``r``, in the gap between the first
+    two planets, clear of their pitch circles."""
+    carried = [g for g in train.gears if g.carrier != FRAME]
+    first = max(carried, key=lambda g: centres[g.name].norm() + train.radius(g))
+    O, rp = centres[first.name], train.radius(first)
+    half = math.asin(min(1.0, (rp * 1.15) / max(O.norm(), r * 0.5)))     # the planet's angular half-width
+    gap = 2.0 * math.pi / train.planets - 2.0 * half
+    return O.angle() + math.pi / train.planets, max(min(math.radians(70.0), 0.7 * gap), math.radians(10.0))
