@@ -143,3 +143,21 @@ def test_the_gallery_planetary_with_three_planets():
     words = " ".join(s.caption for s in study.construction.steps)
     assert "(N_S + N_R)/n = (24 + 60)/3 = 28, a whole number" in words
     assert "1/3 of the load" in words
+
+
+def test_planets_on_an_ordinary_train_are_refused_naming_the_key(tmp_path):
+    p = tmp_path / "o.toml"
+    p.write_text('kind = "gear train"\n[teeth]\nmodule = "3 mm"\npressure_angle = "20 deg"\n[[gear]]\nname = "1"\n'
+                 'teeth = 20\n[[gear]]\nname = "2"\nteeth = 40\n[[mesh]]\ngears = ["1", "2"]\n[train]\nplanets = 3\n'
+                 '[[case]]\ndriven = "1"\nspeed = "100 rpm"\n')
+    with pytest.raises(SceneError) as e:
+        drafting.load(p)
+    assert e.value.key == "train.planets" and "no planets" in e.value.problem
+
+
+def test_compound_planets_are_refused_as_not_a_simple_planetary():
+    t = Train((TrainGear("S", 20, "S"), TrainGear("P", 30, "P", "C"), TrainGear("Q", 20, "P", "C"),
+               TrainGear("R", 70, "R", internal=True)),
+              (TrainMesh("S", "P"), TrainMesh("Q", "R")), 0.003, 20 * DEG, planets=3)
+    assert check_planets(t) is None
+    assert planet_refusal(t).startswith("3 planets need a simple planetary train")
