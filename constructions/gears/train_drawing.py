@@ -106,8 +106,10 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
     if train.planetary:
         for j, O in enumerate(carrier_pins):
             ents.append(Bar(f"carrier arm {j}", Role.GIVEN, KINEMATIC, Vec(0.0, 0.0), O, 90 + j))
-        ents.append(Note("carrier label", Role.NOTE, KINEMATIC, carrier_pins[0] * 0.5 + Vec(0.12 * size, 0.0),
-                         f"carrier {train.carrier}"))
+        at = carrier_pins[0] * 0.5 + Vec(0.12 * size, 0.0)
+        if train.planets > 1:            # in the gap between the first planet and the last, clear of the arms
+            at = carrier_pins[0].rotated(-math.pi / train.planets)
+        ents.append(Note("carrier label", Role.NOTE, KINEMATIC, at, f"carrier {train.carrier}"))
     for m in train.meshes:
         ents.append(Point(f"pitch point {m.name}", Role.LABEL, KINEMATIC, pitch[m.name], None))
     ents += _other_planets(train, centres)
