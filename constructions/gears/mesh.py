@@ -15,6 +15,8 @@ from ..geometry import Vec
 from ..quantities import Measured
 from ..entities import AngleMark, Arc, Circle, Curve, Diagram, Dimension, Pivot, Point, Role, RotationArrow, Segment
 from ..record import Construction, StepKind, Value
+from .action import Action, action
+from .action_step import action_step
 from .contact import AT_LIMIT, CLEAR, INTERFERENCE, ContactGeometry, Pair, contact_geometry
 from .flank import FLANK_POINTS
 from .generation import drawn_flank, fewest_uncut, straight_depth, tip_round, undercut_flank
@@ -31,6 +33,7 @@ class MeshAnalysis:
     construction: Construction
     geometry: ContactGeometry
     warnings: tuple[str, ...] = field(default_factory=tuple)
+    action: Action | None = None
 
     def measured(self) -> list[Measured]:
         g = self.geometry
@@ -45,6 +48,8 @@ class MeshAnalysis:
             out.append(Measured("PT_2", "length", g.limits[1], diagram=on))
         out.append(Measured("phi'", "angle", g.working_pressure_angle))
         out.append(Measured("C.R.", "ratio", g.contact_ratio))      # AB / p_b, the notes' C.R.
+        kinds = {"delta_1": "angle", "delta_2": "angle", "V_p": "velocity", "v_s A": "velocity", "v_s B": "velocity"}
+        out += [Measured(k, kinds[k], v) for k, v in (self.action.values() if self.action else {}).items()]
         return out
 
 
@@ -53,8 +58,9 @@ def _v(kind: str, x: float) -> Value:
 
 
 def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int = FLANK_POINTS,
-                  thread: bool = True) -> MeshAnalysis:
-    """The pair drawn as the notes' contact-geometry diagram, step by step, and its readings."""
+                  thread: bool = True, speed: float | None = None) -> MeshAnalysis:
+    """The pair drawn as the notes' contact-geometry diagram, step by step, and its readings; with the
+    pinion's ``speed`` (rad/s) the pitch-line speed and the sliding at the tips as well."""
     geo, _ = contact_geometry(pair)
     p1, g2 = pair.pinion, pair.gear
     sysm = p1.system
@@ -226,6 +232,8 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
     vals = {"pbase": _v("length", geo.base_pitch), "ab": _v("length", geo.path), "cr": _v("number", cr)}
     rec = rec.then("Base pitch p_b = \u03c0 m cos \u03c6 = $pbase; contact ratio AB / p_b = $ab / $pbase = $cr.",
                    values=vals, kind=StepKind.ANSWER)
+    act = action(pair, geo.approach, geo.recess, phi_w, speed)
+    rec = action_step(rec, pair, act)
     if cr < 1.0:
         warnings.append(f"Contact ratio {cr:.3f} is below 1: a pair of teeth leaves contact before the next pair "
                         f"engages (the drive is not continuous).")
@@ -266,7 +274,7 @@ def mesh_analysis(pair: Pair, fmt=None, teeth_drawn: int = 2, flank_points: int 
                        f"cuts the involute away below R = $rx, as drawn.", values=vals)
     if thread:
         rec = rec + thread_construction(p1, phi_w)
-    return MeshAnalysis(pair, rec, geo, tuple(warnings))
+    return MeshAnalysis(pair, rec, geo, tuple(warnings), act)
 
 
 def _rack_outline(pair: Pair, count: int) -> list[Vec]:

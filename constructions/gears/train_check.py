@@ -9,9 +9,15 @@ Torques: a mesh pushes gear b with F t (t the common tangent's unit vector) at P
 member's moments about its axis, plus the moment about the carrier's pivot of the forces on the gears
 it carries, plus its external torque, sum to zero.  Unknowns: the mesh forces, the output's load torque
 and the held member's reaction.
+
+With n planets every planet's meshes are written again, turned 360/n deg about the carrier's axis: the
+velocity system gains their equations, and the equilibrium their moments, each planet carrying the same
+force (equal sharing), so the mesh force found is the load per planet.
 """
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -23,22 +29,28 @@ def _k_cross(r: Vec) -> np.ndarray:
     return np.array([-r.y, r.x])
 
 
+def _copies(train: Train, m) -> range:
+    """The planets at which mesh ``m`` is repeated (each turned 360/n deg about the carrier's axis)."""
+    return range(train.planets if train.carried_mesh(m) else 1)
+
+
 def velocity_check(train: Train, givens: tuple[Given, ...]) -> tuple[dict[str, float], int, float]:
     centres, pitch = layout(train)
     members = list(train.members)
     idx = {m: i for i, m in enumerate(members)}
     rows, rhs = [], []
     origin = Vec(0.0, 0.0)
-    for m in train.meshes:
-        P = pitch[m.name]
+    for m, k in ((m, k) for m in train.meshes for k in _copies(train, m)):
+        turn = 2.0 * math.pi * k / train.planets
+        P = pitch[m.name].rotated(turn)
         ga, gb = train.gear(m.a), train.gear(m.b)
-        axis = centres[gb.name] - centres[ga.name]
+        axis = (centres[gb.name] - centres[ga.name]).rotated(turn)
         if axis.norm() == 0:
             continue
         t = np.array([-axis.unit().y, axis.unit().x])
         row = np.zeros(len(members))
         for g, sign in ((ga, 1.0), (gb, -1.0)):
-            O = centres[g.name]
+            O = centres[g.name].rotated(turn)
             row[idx[g.member]] += sign * _k_cross(P - O) @ t
             if g.carrier != FRAME:
                 row[idx[g.carrier]] += sign * _k_cross(O - origin) @ t
@@ -70,13 +82,14 @@ def torque_check(train: Train, speeds: dict[str, float], power: float, inp: str,
     A = np.zeros((len(members), len(unknowns)))
     b = np.zeros(len(members))
     origin = Vec(0.0, 0.0)
-    for m in meshes:
-        P = pitch[m.name]
+    for m, k in ((m, k) for m in meshes for k in _copies(train, m)):
+        turn = 2.0 * math.pi * k / train.planets      # equal sharing: one force unknown for all n planets
+        P = pitch[m.name].rotated(turn)
         ga, gb = train.gear(m.a), train.gear(m.b)
-        u = (centres[gb.name] - centres[ga.name]).unit()
+        u = (centres[gb.name] - centres[ga.name]).rotated(turn).unit()
         t = Vec(-u.y, u.x)
         for g, sign in ((gb, 1.0), (ga, -1.0)):
-            O = centres[g.name]
+            O = centres[g.name].rotated(turn)
             A[mi[g.member], ui[f"F:{m.name}"]] += sign * (P - O).cross(t)
             if g.carrier != FRAME:              # the force on the gear reaches the carrier through its pin
                 A[mi[g.carrier], ui[f"F:{m.name}"]] += sign * (O - origin).cross(t)

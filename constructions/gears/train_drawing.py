@@ -13,6 +13,7 @@ from ..geometry import Vec
 from ..quantities import Measured
 from ..record import Construction, StepKind, Value
 from ..tolerance import STANDSTILL
+from .planets import check_planets
 from .trains import FRAME, Given, Train, TrainSolution, layout, solve_train
 
 KINEMATIC = Diagram("space")
@@ -37,6 +38,11 @@ class TrainAnalysis:
     def quantity(self, base: str, case: Case) -> str:
         return base if len(self.cases) == 1 else f"{base} ({case.name})"
 
+    def load_name(self, mesh: str) -> str:
+        """The tangential load's quantity at ``mesh``: per planet where n planets share it."""
+        m = next(x for x in self.train.meshes if x.name == mesh)
+        return f"W_t {mesh}" + (" per planet" if self.train.planets > 1 and self.train.carried_mesh(m) else "")
+
     def measured(self) -> list[Measured]:
         out: list[Measured] = []
         for case, sol in zip(self.cases, self.solutions):
@@ -46,7 +52,7 @@ class TrainAnalysis:
                 for m, t in sol.torques.items():
                     out.append(Measured(self.quantity(f"T_{m}", case), "torque", t))
                 for mesh, w in (sol.loads or {}).items():
-                    out.append(Measured(self.quantity(f"W_t {mesh}", case), "force", w))
+                    out.append(Measured(self.quantity(self.load_name(mesh), case), "force", w))
         return out
 
 
@@ -100,14 +106,21 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
     if train.planetary:
         for j, O in enumerate(carrier_pins):
             ents.append(Bar(f"carrier arm {j}", Role.GIVEN, KINEMATIC, Vec(0.0, 0.0), O, 90 + j))
-        ents.append(Note("carrier label", Role.NOTE, KINEMATIC, carrier_pins[0] * 0.5 + Vec(0.12 * size, 0.0),
-                         f"carrier {train.carrier}"))
+        at = carrier_pins[0] * 0.5 + Vec(0.12 * size, 0.0)
+        if train.planets > 1:            # in the gap between the first planet and the last, clear of the arms
+            at = carrier_pins[0].rotated(-math.pi / train.planets)
+        ents.append(Note("carrier label", Role.NOTE, KINEMATIC, at, f"carrier {train.carrier}"))
     for m in train.meshes:
         ents.append(Point(f"pitch point {m.name}", Role.LABEL, KINEMATIC, pitch[m.name], None))
+    ents += _other_planets(train, centres)
+    n = train.planets
     rec = rec.then(
         f"Kinematic diagram: {len(train.gears)} gears on {len(train.members)} members"
         + (f", the planets' axes on carrier {train.carrier}" if train.planetary else "")
+        + (f" ({n} planets spaced {360 / n:g}\u00b0 apart)" if n > 1 else "")
         + "; pitch circles r = mN/2 touch at the pitch points.", *ents, kind=StepKind.GIVEN)
+    if n > 1:
+        rec = _planets_step(train, rec)
     # the meshes' ratios
     parts = []
     for m in train.meshes:
@@ -144,6 +157,8 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                 rec = rec.then(f"{case.name}: notes' formula (n_{B} - n_c)/(n_{A} - n_c) = e = {e[B] / e[A]:+.5g} (the "
                                f"signed product of driving over driven teeth, {A} to {B}); with n_{h} = 0: "
                                f"n_{o}/n_{d} = $ratio.", values={"ratio": Value("number", ratio)}, kind=StepKind.ANSWER)
+            elif len(driven) == 2 and len(central) >= 2 and set(driven) <= {central[0], central[1], train.carrier}:
+                rec = _willis_step(train, case, sol, central[0], central[1], driven, rec)
         else:
             g = case.givens[0]
             sense = lambda w: "CCW" if w > 0 else "CW"  # noqa: E731
@@ -169,8 +184,11 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                 else:
                     O, r = Vec(0.0, 0.0), 0.0
                     continue
-                a0 = math.radians(105.0 if not gs[0].internal else 220.0)
-                span = math.radians(70.0) * (1 if w > 0 else -1)
+                a0, span = math.radians(105.0 if not gs[0].internal else 220.0), math.radians(70.0)
+                if gs[0].internal and train.planets > 1:
+                    a0, span = _between_planets(train, centres, r)
+                span *= 1 if w > 0 else -1
+                a0 -= span / 2 if gs[0].internal and train.planets > 1 else 0.0
                 marks.append(AngleMark(f"sense {m}", Role.LOAD, KINEMATIC, O, r, a0, a0 + span,
                                        f"n_{m} {'CCW' if w > 0 else 'CW'}"))
             if marks:
@@ -185,7 +203,8 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                 role = ("in" if m == case.inp else "out" if m == case.out else "held" if t else
                         "none: an idler" if idler else "none")
                 words += f"T_{m} = $t{i} ({role}); "
-            words = words.rstrip("; ") + ". Tooth loads (tangential W_t = T/r, radial W_t tan \u03c6, total W_t/cos \u03c6): "
+            share = f"; at the planets' meshes per planet, W_t = T/({n} r)" if n > 1 else ""
+            words = words.rstrip("; ") + f". Tooth loads (tangential W_t = T/r{share}, radial W_t tan \u03c6, total W_t/cos \u03c6): "
             phi = train.pressure_angle
             for j, (mesh, w) in enumerate((sol.loads or {}).items()):
                 vals[f"w{j}"], vals[f"r{j}"], vals[f"f{j}"] = (Value("force", w), Value("force", w * math.tan(phi)),
@@ -193,3 +212,64 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                 words += f"mesh {mesh}: $w{j}, $r{j}, $f{j}; "
             rec = rec.then(words.rstrip("; ") + ".", values=vals, kind=StepKind.ANSWER)
     return TrainAnalysis(train, cases, sols, rec)
+
+
+def _other_planets(train: Train, centres: dict) -> list:
+    """The planets after the first, each turned 360/n deg further about the carrier's axis: pitch circles,
+    axes and carrier arms."""
+    out = []
+    carried = [g for g in train.gears if g.carrier != FRAME]
+    for k in range(1, train.planets):
+        turn = 2.0 * math.pi * k / train.planets
+        for g in carried:
+            O = centres[g.name].rotated(turn)
+            out.append(Circle(f"pitch circle {g.name} planet {k + 1}", Role.GIVEN, KINEMATIC, O, train.radius(g), None))
+        pins = {centres[g.name] for g in carried}
+        for j, O in enumerate(pins):
+            out.append(Point(f"axis planet {k + 1}.{j}", Role.LABEL, KINEMATIC, O.rotated(turn), None))
+            out.append(Bar(f"carrier arm planet {k + 1}.{j}", Role.GIVEN, KINEMATIC, Vec(0.0, 0.0), O.rotated(turn),
+                           90 + k))
+    return out
+
+
+def _planets_step(train: Train, rec: Construction) -> Construction:
+    """The notes' two conditions on n planets: assembly and neighbours clearing."""
+    pc = check_planets(train)
+    if pc is None:
+        return rec
+    vals = {"spacing": Value("length", pc.centre_spacing), "tip": Value("length", pc.tip_diameter),
+            "rs": Value("length", train.radius(pc.sun)), "rp": Value("length", train.radius(pc.planet))}
+    words = f"{pc.planets} planets. "
+    if pc.ring is not None:
+        words += (f"Assembly: (N_S + N_R)/n = ({pc.sun.teeth} + {pc.ring.teeth})/{pc.planets} = "
+                  f"{pc.assembly_value:.6g}, {'a whole number' if pc.assembles else 'NOT a whole number'}: "
+                  f"the planets {'can' if pc.assembles else 'cannot'} be spaced equally. ")
+    words += (f"Neighbours: 2 (r_S + r_P) sin(180\u00b0/n) = 2 ($rs + $rp) sin({180 / pc.planets:g}\u00b0) = $spacing "
+              f"{'>' if pc.clear else '<='} tip diameter d_aP = $tip: {'clear' if pc.clear else 'they touch'}. "
+              f"Each planet carries 1/{pc.planets} of the load (equal sharing).")
+    return rec.then(words, values=vals)
+
+
+def _willis_step(train: Train, case: Case, sol: TrainSolution, A: str, B: str, driven: list, rec: Construction):
+    """A differential (two members driven): the notes' formula (Willis) solved for the third member."""
+    e = sol.values[B] / sol.values[A]
+    o = next(m for m in (A, B, train.carrier) if m not in driven)
+    c = train.carrier
+    solved = {c: f"n_c = (n_{B} - e n_{A})/(1 - e)", B: f"n_{B} = n_c + e (n_{A} - n_c)",
+              A: f"n_{A} = n_c + (n_{B} - n_c)/e"}[o]
+    vals = {"d0": Value("angular velocity", sol.speeds[driven[0]]), "d1": Value("angular velocity", sol.speeds[driven[1]]),
+            "out": Value("angular velocity", sol.speeds[o])}
+    return rec.then(f"{case.name}: a differential, two members driven. Notes' formula (Willis) (n_{B} - n_c)/(n_{A} - "
+                    f"n_c) = e = {e:+.5g}; with n_{driven[0]} = $d0 and n_{driven[1]} = $d1: {solved} = $out.",
+                    values=vals, kind=StepKind.ANSWER)
+
+
+def _between_planets(train: Train, centres: dict, r: float) -> tuple[float, float]:
+    """The middle and the span (rad) of a ring's sense arrow, radius ``r``, in the gap between the first
+    two planets, clear of their pitch circles."""
+    carried = [g for g in train.gears if g.carrier != FRAME]
+    first = max(carried, key=lambda g: centres[g.name].norm() + train.radius(g))
+    O, rp = centres[first.name], train.radius(first)
+    half = math.asin(min(1.0, (rp * 1.15) / max(O.norm(), r * 0.5)))     # the planet's angular half-width
+    gap = 2.0 * math.pi / train.planets - 2.0 * half
+    return O.angle() + math.pi / train.planets, max(min(math.radians(70.0), 0.7 * gap), math.radians(10.0))

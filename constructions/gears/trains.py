@@ -12,8 +12,9 @@ turned x; row 2, everything locked and turned with the carrier n_c; each member'
 n_c + e_m x.  Two members given (one fixed, one driven; an ordinary train has the frame as its carrier and
 one given) fix x and n_c.  Tooth loads from a power P: each member's torque by the balance of power and
 of torques (T_in = P/omega_in, T_out = -P/omega_out, the fixed member's reaction -(T_in + T_out)), the
-tangential tooth load W_t = |T|/r at a mesh with a member that meshes only there, W_r = W_t tan(phi),
-W = W_t/cos(phi).  The independent check is :mod:`constructions.gears.train_check`.
+tangential tooth load W_t = |T|/r at a mesh with a member that meshes only there (|T|/(n r) at a planet's
+mesh, n planets sharing the load equally), W_r = W_t tan(phi), W = W_t/cos(phi).  Whether n planets can
+be assembled and clear each other is :mod:`constructions.gears.planets`.  The independent check is :mod:`constructions.gears.train_check`.
 """
 
 from __future__ import annotations
@@ -55,6 +56,8 @@ class Train:
     module: float
     pressure_angle: float
     coaxial: tuple[tuple[str, str], ...] = ()     # members whose axes must coincide (reverted trains)
+    planets: int = 1                              # planets spaced equally round the carrier (each carries the load / n)
+    addendum: float = 1.0                         # the addendum constant in modules (a planet's tip radius r + a m)
 
     def __post_init__(self) -> None:
         names = [g.name for g in self.gears]
@@ -77,6 +80,9 @@ class Train:
         for c in carriers:
             if c in {g.member for g in self.gears}:
                 raise DegenerateInput(f"{c} is a carrier and also carries gears on it as a shaft")
+        if self.planets < 1 or self.planets > 1 and not carriers:
+            raise DegenerateInput(f"{self.planets} planets: a train with a carrier has one or more planets, "
+                                  f"an ordinary train none")
 
     def gear(self, name: str) -> TrainGear:
         return next(g for g in self.gears if g.name == name)
@@ -102,6 +108,10 @@ class Train:
 
     def internal_mesh(self, m: TrainMesh) -> bool:
         return self.gear(m.a).internal or self.gear(m.b).internal
+
+    def carried_mesh(self, m: TrainMesh) -> bool:
+        """Whether a gear of mesh ``m`` rides on the carrier (the mesh is repeated at every planet)."""
+        return FRAME != self.gear(m.a).carrier or FRAME != self.gear(m.b).carrier
 
     def meshes_of(self, member: str) -> list[TrainMesh]:
         return [m for m in self.meshes if member in (self.gear(m.a).member, self.gear(m.b).member)]
@@ -216,7 +226,8 @@ def _loads(sol: TrainSolution) -> None:
             g = t.gear(gname)
             if g.member != t.carrier and len(t.meshes_of(g.member)) == 1 and \
                     sum(1 for x in t.gears if x.member == g.member) == 1:
-                loads[m.name] = abs(torques[g.member]) / t.radius(g)
+                share = t.planets if t.carried_mesh(m) else 1      # n planets share a central gear's load
+                loads[m.name] = abs(torques[g.member]) / t.radius(g) / share
                 break
     # an idler passes its load on unchanged (no torque on its shaft): fill meshes by idlers
     changed = True

@@ -9,10 +9,12 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from constructions.gears.action import action
 from constructions.gears.interference import (max_gear_for_pinion, min_equal_gears, min_pinion_with_gear,
                                               min_pinion_with_rack)
 from constructions.gears.contact import AT_LIMIT, INTERFERENCE
 from constructions.gears.mesh import mesh_analysis
+from constructions.gears.planets import check_planets
 from constructions.gears.mesh_check import closed_form, notes_contact_ratio
 from constructions.gears.train_check import torque_check, velocity_check
 from constructions.gears.train_drawing import train_analysis
@@ -29,15 +31,22 @@ TRAIN_MODEL = "pitch-point velocity matching and member equilibrium (linear syst
 # -- gear pair -------------------------------------------------------------------------------------------
 
 def _contact(study):
-    return mesh_analysis(study.scene.pair)
+    return mesh_analysis(study.scene.pair, speed=study.scene.speed)
 
 
 def _closed(study):
     return closed_form(study.scene.pair)
 
 
+def _closed_action(study):
+    cf = closed_form(study.scene.pair)
+    return action(study.scene.pair, cf.approach, cf.recess, cf.working_pressure_angle, study.scene.speed)
+
+
 def _pair_analytic(study):
-    return closed_form(study.scene.pair).values() if study.asked("contact") else None
+    if not study.asked("contact"):
+        return None
+    return closed_form(study.scene.pair).values() | _closed_action(study).values()
 
 
 def _pair_limits(pair) -> dict[str, Any]:
@@ -107,6 +116,26 @@ def _pair_json(study) -> dict[str, Any]:
                           "contact_ratio": {"drawn": g.contact_ratio, "closed_form": cf.contact_ratio},
                           "interference": {"start": g.start, "end": g.end, "verdict": g.verdict},
                           "points": {n: [L(p.x), L(p.y)] for n, p in g.points.items()}}
+        out["action"] = _action_json(study, a.action, _closed_action(study))
+    return out
+
+
+def _action_json(study, drawn, closed) -> dict[str, Any]:
+    """The angles of action per gear and, with the pinion's speed, the pitch-line speed and the sliding
+    velocity at the start (A) and end (B) of contact: drawn and by the closed form."""
+    u = study.scene.units
+    out: dict[str, Any] = {}
+    for key, attr in (("angle_of_action_deg", "angle_of_action"), ("approach_angle_deg", "approach_angle"),
+                      ("recess_angle_deg", "recess_angle")):
+        out[key] = {g: {"drawn": math.degrees(d), "closed_form": math.degrees(c)}
+                    for g, d, c in zip(("1", "2"), getattr(drawn, attr), getattr(closed, attr)) if d is not None}
+    if drawn.omega is not None:
+        out["speed"] = {"1": u.convert("angular velocity", drawn.omega[0]),
+                        "2": u.convert("angular velocity", drawn.omega[1])}
+        for key, attr in (("pitch_line_speed", "pitch_line_speed"), ("sliding_velocity_start", "sliding_start"),
+                          ("sliding_velocity_end", "sliding_end")):
+            out[key] = {"drawn": u.convert("velocity", getattr(drawn, attr)),
+                        "closed_form": u.convert("velocity", getattr(closed, attr))}
     return out
 
 
@@ -167,7 +196,7 @@ def _train_analytic(study):
         for m, t in row.get("torques", {}).items():
             out[a.quantity(f"T_{m}", case)] = t
         for mesh, w in row.get("loads", {}).items():
-            out[a.quantity(f"W_t {mesh}", case)] = w
+            out[a.quantity(a.load_name(mesh), case)] = w
     return out
 
 
@@ -203,6 +232,12 @@ def _train_json(study) -> dict[str, Any]:
                                               "internal": g.internal,
                                               "pitch_radius": u.convert("length", train.radius(g))} for g in train.gears},
                            "meshes": [m.name for m in train.meshes], "planetary": train.planetary}
+    pc = check_planets(train) if train.planets > 1 else None
+    if pc is not None:
+        out["planets"] = {"count": pc.planets, "assembly_value": pc.assembly_value, "assembles": pc.assembles,
+                          "centre_spacing": u.convert("length", pc.centre_spacing),
+                          "tip_diameter": u.convert("length", pc.tip_diameter), "clear": pc.clear,
+                          "tooth_loads": "per planet (equal sharing)"}
     a = study.result("speeds")
     if a is not None:
         rows = []

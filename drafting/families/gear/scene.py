@@ -9,7 +9,8 @@ A pair in mesh (``kind = "gear pair"``)::
                 it decides the fillet and, below the undercut limit, the undercut drawn)
     [pair]      pinion = 20 (teeth of gear 1, the driver); gear = 40 (teeth of gear 2) or "rack";
                 centre_distance = "152 mm" (optional; for a rack, from O1 to the rack's pitch line);
-                internal = true (gear 2 is an internal gear, a ring, about the pinion)
+                internal = true (gear 2 is an internal gear, a ring, about the pinion); speed = "1000 rpm"
+                (optional, the pinion's: the pitch-line speed and the sliding velocity at the tips)
 
 A gear train (``kind = "gear train"``)::
 
@@ -19,9 +20,13 @@ A gear train (``kind = "gear train"``)::
                 internal = true (a ring)
     [[mesh]]    gears = ["1", "2"]; angle = "0 deg" (the direction from the first gear's centre to the pitch
                 point; default 0, 90 deg in a planetary train)
-    [train]     coaxial = [["1", "4"]] (shafts whose axes must coincide: a reverted train)
+    [train]     coaxial = [["1", "4"]] (shafts whose axes must coincide: a reverted train); planets = 3 (planets
+                spaced equally round the carrier, default 1: each carries 1/n of the load; refused unless
+                (N_S + N_R)/n is whole and neighbouring planets clear, 2 (r_S + r_P) sin(pi/n) > d_aP)
     [[case]]    name = "carrier held"; driven = "1"; speed = "1000 rpm"; sense = "cw"; held = "C" (a planetary
-                train needs one member held); power = "30 kW" and output = "3" (optional: torques, tooth loads)
+                train needs one member held, or a second driven: driven2 = "R", speed2 = "50 rpm",
+                sense2 = "cw", a differential); power = "30 kW" and output = "3" (optional: torques, tooth
+                loads; one driven member only)
 
 Read with the public scene reader, so every error is one sentence naming the file and the key.  Reading
 only reads: whether the pair meshes and each case of a train can be solved are the families' checks
@@ -37,6 +42,7 @@ from typing import Any
 from constructions.errors import ConstructionError, DegenerateInput
 from constructions.gears.generation import largest_tip_round
 from constructions.gears.mesh import Pair, contact_geometry
+from constructions.gears.planets import planet_refusal
 from constructions.gears.tooth import INCH, SYSTEMS, Gear, ToothSystem
 from constructions.gears.train_drawing import Case
 from constructions.gears.trains import FRAME, Given, Train, TrainGear, TrainMesh, layout, solve_train
@@ -57,6 +63,7 @@ class GearPairScene(Scene):
     """A gear pair scene: the ``pair`` in mesh (pinion, gear or rack, centre distance)."""
 
     pair: Pair
+    speed: float | None = None        # the pinion's speed (rad/s, a magnitude): pitch-line speed and sliding
 
 
 @dataclass(frozen=True)
@@ -150,7 +157,7 @@ def read_gear_pair(r: SceneReader, units: Units) -> dict:
     s = read_teeth(r, units)
     if "pair" not in r.data:
         raise r.fail("pair", "is missing: give the teeth, e.g. [pair] pinion = 20, gear = 40 (or gear = \"rack\")")
-    t = r.table("pair", {"pinion", "gear", "centre_distance", "internal"}, {"pinion", "gear"})
+    t = r.table("pair", {"pinion", "gear", "centre_distance", "internal", "speed"}, {"pinion", "gear"})
     internal = t.get("internal", False)
     if not isinstance(internal, bool):
         raise r.fail("pair.internal", "must be true (gear 2 is an internal gear, a ring) or false")
@@ -173,7 +180,12 @@ def read_gear_pair(r: SceneReader, units: Units) -> dict:
         c = r.quantity("pair.centre_distance", t["centre_distance"], "length", units)
     pair = Pair(Gear(n1, s), gear, c, internal=internal)
     r.lengths.append(("pair", pair.size))
-    return {"pair": pair}
+    w = None
+    if "speed" in t:
+        w = r.quantity("pair.speed", t["speed"], "angular velocity", units)
+        if not w > 0:
+            raise r.fail("pair.speed", "must be a positive speed of the pinion, e.g. \"1000 rpm\"")
+    return {"pair": pair, "speed": w}
 
 
 def read_gear_train(r: SceneReader, units: Units) -> dict:
@@ -219,16 +231,23 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
         meshes.append(TrainMesh(g[0], g[1], ang))
     if not meshes:
         raise r.fail("mesh", "is missing: say which gears mesh, e.g. [[mesh]] gears = [\"1\", \"2\"]")
-    tr = r.table("train", {"coaxial"})
+    tr = r.table("train", {"coaxial", "planets"})
     coaxial = []
     for pair in tr.get("coaxial", []):
         if not (isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)):
             raise r.fail("train.coaxial", "must list pairs of shafts, e.g. [[\"1\", \"4\"]]")
         coaxial.append((pair[0], pair[1]))
+    planets = tr.get("planets", 1)
+    if isinstance(planets, bool) or not isinstance(planets, int) or not (1 <= planets <= 24):
+        raise r.fail("train.planets", f"{r.shown(planets)} must be a whole number of planets from 1 to 24")
     try:
-        train = Train(tuple(gears), tuple(meshes), s.module, s.pressure_angle, tuple(coaxial))
+        train = Train(tuple(gears), tuple(meshes), s.module, s.pressure_angle, tuple(coaxial),
+                      planets if any(g.carrier != FRAME for g in gears) else 1, s.addendum)
     except DegenerateInput as e:
         raise r.fail("mesh", str(e)) from None
+    if planets > 1 and not train.planetary:
+        raise r.fail("train.planets", "an ordinary train (no carrier) has no planets; give the planet gears a "
+                                      "carrier, e.g. carrier = \"C\"")
     for a, b in coaxial:
         for x in (a, b):
             if x not in train.members:
@@ -237,13 +256,17 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
         layout(train)
     except ConstructionError as e:
         raise r.fail("train.coaxial" if "coaxial" in e.reason else "mesh", e.reason) from None
+    why = planet_refusal(train)
+    if why:
+        raise r.fail("train.planets", why)
     cases = []
     items = r.array("case")
     if not items:
         raise r.fail("case", "is missing: say what drives the train, e.g. [[case]] driven = \"1\", speed = \"1000 rpm\"")
     for i, t in enumerate(items, 1):
         k = f"case[{i}]"
-        r.table(k, {"name", "driven", "speed", "sense", "held", "power", "output"}, {"driven", "speed"}, value=t)
+        r.table(k, {"name", "driven", "speed", "sense", "held", "power", "output", "driven2", "speed2", "sense2"},
+                {"driven", "speed"}, value=t)
         name = r.text(f"{k}.name", t["name"]) if "name" in t else (f"case {i}" if len(items) > 1 else "the train")
         driven = _known_member(r, f"{k}.driven", t["driven"], train)
         w = r.quantity(f"{k}.speed", t["speed"], "angular velocity", units)
@@ -256,14 +279,20 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
             if held == driven:
                 raise r.fail(f"{k}.held", f"{held} is the driven member; hold another")
             givens.append(Given(held, 0.0))
+        second = _second_driven(r, k, t, train, driven, units)
+        if second is not None:
+            givens.append(second)
         givens.append(Given(driven, w))
-        if train.planetary and "held" not in t:
+        if train.planetary and len(givens) < 2:
             raise r.fail(f"{k}.held", "is missing: a planetary train has two degrees of freedom; hold one member "
-                                      "(the carrier, the sun or the ring)")
+                                      "(the carrier, the sun or the ring), or drive a second one (driven2, speed2)")
         if not train.planetary and "held" in t:
             raise r.fail(f"{k}.held", "an ordinary train (no carrier) has one degree of freedom: give only the "
                                       "driven member")
         power = out = None
+        if "power" in t and second is not None:
+            raise r.fail(f"{k}.power", "with two members driven (a differential) this version gives speeds only; "
+                                       "leave power out")
         if "power" in t:
             try:
                 power = to_si(t["power"], "power", "kW")
@@ -280,6 +309,27 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
             raise r.fail(f"{k}.power", "is missing: an output without a power gives no torque")
         cases.append(Case(name, tuple(givens), power, driven if power else None, out))
     return {"train": train, "cases": tuple(cases)}
+
+
+def _second_driven(r, k: str, t: dict, train: Train, driven: str, units: Units) -> Given | None:
+    """The second driven member of a differential (``driven2``, ``speed2``, ``sense2``), or None."""
+    if "driven2" not in t:
+        for key in ("speed2", "sense2"):
+            if key in t:
+                raise r.fail(f"{k}.driven2", f"is missing: {key} belongs to a second driven member; name it")
+        return None
+    if not train.planetary:
+        raise r.fail(f"{k}.driven2", "an ordinary train (no carrier) has one degree of freedom: one driven member")
+    if "held" in t:
+        raise r.fail(f"{k}.driven2", "a planetary train has two degrees of freedom: hold one member or drive a "
+                                     "second one, not both")
+    if "speed2" not in t:
+        raise r.fail(f"{k}.speed2", "is missing: give the second driven member's speed, e.g. \"50 rpm\"")
+    d2 = _known_member(r, f"{k}.driven2", t["driven2"], train)
+    if d2 == driven:
+        raise r.fail(f"{k}.driven2", f"{d2} is already the driven member; drive another")
+    w2 = r.quantity(f"{k}.speed2", t["speed2"], "angular velocity", units)
+    return Given(d2, r.signed(f"{k}.sense2", "speed2", w2, t["speed2"], t.get("sense2")))
 
 
 def _member(r, key: str, value: Any) -> str:
