@@ -50,7 +50,7 @@ def test_undercut_scene_warns_with_angles_and_json(capsys):
     data = json.loads(capsys.readouterr().out)
     spans = data["profile"]["undercut"]
     assert len(spans) == 2 and all(a < b for a, b in spans)
-    assert data["analyses"] == ["cam construction", "cam closed forms"]
+    assert data["analyses"] == ["cam construction", "cam closed forms", "cam station table", "cam maxima"]
 
 
 def test_offset_cycloidal_scene_has_speed_charts():

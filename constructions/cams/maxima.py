@@ -19,9 +19,11 @@ a join (uniform motion) the acceleration there is infinite, and where the accele
 values between the joins.  A dwell's v, a, j are 0.
 
 The pressure angle: no closed form in general (it mixes s, s' and the follower's geometry), so it is
-searched on every piece of the program (:func:`.search.piece_extrema`): the cam angle to about 5e-12 of the
-piece's width, the value to rounding (the tests hold it to the radial roller's closed form for simple
-harmonic motion, ``tan phi_max = (pi h / 2 beta) / sqrt(d0 (d0 + h))`` at ``cos x = (h/2) / (d0 + h/2)``).
+searched on every piece of the program (:func:`.search.piece_extrema`): the value to rounding, the cam angle
+to about 1e-8 rad (flat at the peak, the curve cannot place it closer in floating point).  Measured against
+the radial roller's closed form for simple harmonic motion, ``tan phi_max = (pi h / 2 beta) / sqrt(d0 (d0 +
+h))`` at ``cos(pi u) = (h/2) / (d0 + h/2)``: the value within 2.4e-16 relative, the angle within 6e-9 rad
+over four cams (the tests hold them to 1e-12 and 1e-7 rad).
 """
 
 from __future__ import annotations

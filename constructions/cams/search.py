@@ -47,8 +47,10 @@ def piece_extrema(program: Program, at, searches, *, per_piece: int = 256) -> li
     """Each search's extreme on every piece of the program (:func:`piece_bounds` order): per search, a list
     of ``(theta, value, rank)`` with ``rank`` the value signed so that larger is better (-inf where the
     function is nowhere finite).  A grid of ``per_piece`` points, then 8 rounds each narrowing the bracket
-    round the best point 16-fold: the cam angle to about ``2 / (per_piece - 1) / 16^8`` (5e-12 at 256) of
-    the piece's width, an extreme inside the piece to rounding (it is flat there), one at an end exactly."""
+    round the best point 16-fold, to a bracket ``2 / (per_piece - 1) / 16^8`` (2e-12 at 256) of the piece's
+    width.  An extreme inside the piece comes out to rounding in its value, but its cam angle only to about
+    ``sqrt(eps |f| / |f''|)`` (1e-8 rad for a pressure angle): the curve is flat at its peak, and points that
+    far apart differ by rounding; an extreme at an end is exact."""
     k = len(searches)
     sgn = np.array([1.0 if largest else -1.0 for _, largest in searches])
 

@@ -16,6 +16,8 @@ from constructions.cams.maxima import (Peak, motion_maxima, overall, pressure_ma
                                        unbounded)
 from constructions.cams.stations import StationTable, station_table
 
+from ...scene.units import UnitError, from_si
+
 
 def run_station_table(study) -> StationTable:
     """The "station table" analysis: the table at the construction's stations."""
@@ -57,8 +59,9 @@ def columns(u, f, per_radian: bool) -> list[Column]:
             vaj = [(u.of("angular velocity"), conv("angular velocity")),
                    (u.of("angular acceleration"), conv("angular acceleration")), ("rad/s^3", same)]
         else:
+            J = _jerk_length(u)
             vaj = [(u.of("velocity"), conv("velocity")), (u.of("acceleration"), conv("acceleration")),
-                   (f"{L}/s^3", conv("length"))]
+                   (f"{J}/s^3", lambda v: from_si(v, "length", J))]
         heads = ["\u03c9" if osc else "v", "\u03b1" if osc else "a", "d\u03b1/dt" if osc else "j"]
     out: list[Column] = [("theta", "cam angle", A, conv("angle")),
                          ("s", sym, A if osc else L, conv("angle" if osc else "length"))]
@@ -68,6 +71,16 @@ def columns(u, f, per_radian: bool) -> list[Column]:
             ("rho_profile", "radius of curvature, profile", L, conv("length")),
             ("contact_x", "contact x", L, conv("length")), ("contact_y", "contact y", L, conv("length"))]
     return out
+
+
+def _jerk_length(u) -> str:
+    """The length unit jerk is given in: the velocity's (m/s -> m/s^3), else the scene's length unit."""
+    head, _, tail = u.of("velocity").partition("/")
+    try:
+        from_si(1.0, "length", head)
+    except UnitError:                    # "kph": no length before the stroke
+        return u.of("length")
+    return head if tail.strip() == "s" else u.of("length")
 
 
 def _values(t: StationTable, i: int) -> dict[str, float | None]:
@@ -154,7 +167,7 @@ def maxima_json(study) -> dict[str, Any]:
 
 METHOD = {"v, a, j": "exact: each law's closed form at the cam angle where it peaks (constructions.cams.maxima)",
           "pressure_angle": "a search on each piece of the program (256 points, then 8 rounds narrowing the "
-                            "bracket 16-fold): the cam angle to about 5e-12 of the piece, the value to rounding",
+                            "bracket 16-fold): the value to rounding, the cam angle to about 1e-8 rad",
           "at_stations": "the largest magnitude among the drawn stations (the station table)"}
 
 
@@ -192,7 +205,7 @@ def maxima_notes(study) -> list[str]:
         p, st = mx["overall"][q], mx["stations"][q]
         unit, fn = cols[q]
         name = words[q][0] if s.model.omega else f"{words[q][1]} ({words[q][0]} at a cam speed of 1 rad/s)"
-        where = (f"from {u.format('angle', p.at[0])} to {u.format("angle", p.at[1])}"
+        where = (f"from {u.format('angle', p.at[0])} to {u.format('angle', p.at[1])}"
                  if p.throughout else f"at {_angles(u, p.at)}")
         out.append(f"Largest {name}, exact: {fn(p.value):.4g}{_unit(unit)} {where}; at the {n} drawn stations: "
                    f"{fn(st.value):.4g}{_unit(unit)} at {u.format('angle', st.at)}.")
