@@ -73,6 +73,10 @@ def test_uniform_velocity_holds_throughout_and_overall_lists_every_peak():
     mx = motion_maxima(p, None)
     assert mx["v"][1].throughout and mx["v"][1].value == pytest.approx(H / BETA, rel=1e-14)
     assert mx["a"][1].value == 0.0
+    even = program("uniform", rise=math.radians(140.0))                  # rise and return alike: two spans
+    top = overall(motion_maxima(even, None)["v"])
+    assert top.throughout and top.at == pytest.approx((math.radians(40), math.radians(180), math.radians(220),
+                                                       math.radians(360)), abs=1e-12)
     # the rise over 100 deg is faster than the return over 180 deg
     sym = program("cycloidal", rise=math.radians(140.0))
     top = overall(motion_maxima(sym, 1.0)["a"])

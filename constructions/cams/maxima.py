@@ -61,7 +61,7 @@ QUANTITIES = ("v", "a", "j")
 class Peak:
     """The largest magnitude ``value`` (SI) of a quantity and the cam angles ``at`` (rad) where it occurs;
     ``throughout``: the value holds over the whole span ``at = (start, end)`` (a dwell, uniform motion's
-    velocity, a parabola's acceleration)."""
+    velocity, a parabola's acceleration), or over each of several spans, ``at = (start, end, start, end ...)``."""
 
     value: float
     at: tuple[float, ...]
@@ -99,6 +99,8 @@ def overall(peaks: list[Peak]) -> Peak:
     best = [p for p in peaks if p.value >= top * (1 - TIE_REL)]
     if len(best) == 1:
         return best[0]
+    if all(p.throughout for p in best):                  # several spans: their (start, end) pairs in turn
+        return Peak(top, tuple(a for p in best for a in p.at), True)
     return Peak(top, tuple(a for p in best for a in (p.at if not p.throughout else p.at[:1])))
 
 
@@ -109,8 +111,8 @@ def motion_maxima(program: Program, omega: float | None) -> dict[str, list[Peak]
 
 
 def pressure_maxima(program: Program, f: Follower) -> list[Peak] | None:
-    """Each segment's largest |pressure angle| and where (searched: see the module's notes); None for a flat
-    face square to its axis (always 0)."""
+    """Each segment's largest |pressure angle| and where (searched: see the module's notes; a dwell's holds
+    throughout it); None for a flat face square to its axis (always 0)."""
     if f.kind == FLAT:
         return None
     found = piece_extrema(program, lambda x: evaluate(program, f, x),
@@ -121,7 +123,8 @@ def pressure_maxima(program: Program, f: Follower) -> list[Peak] | None:
         i = min(int(np.searchsorted(ends, 0.5 * (lo + hi))), len(ends) - 1)
         if best[i] is None or v > best[i][1]:
             best[i] = (t, v)
-    return [Peak(v, (t,)) for t, v in best]
+    return [Peak(v, (start, start + seg.beta), True) if seg.kind == DWELL else Peak(v, (t,))
+            for (t, v), start, seg in zip(best, program.starts, program.segments)]
 
 
 def unbounded(program: Program) -> dict[str, tuple[float, ...]]:

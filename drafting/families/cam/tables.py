@@ -140,7 +140,10 @@ def _convert_for(study) -> dict[str, Callable[[float], float]]:
 
 
 def _peak_json(p: Peak, A, fn) -> dict[str, Any]:
-    return {"value": fn(p.value), "at": [A(a) for a in p.at], "throughout": p.throughout}
+    """A peak: ``at`` its cam angles, or with ``throughout`` the [start, end] spans it holds over."""
+    if p.throughout:
+        return {"value": fn(p.value), "throughout": [[A(a), A(b)] for a, b in zip(p.at[::2], p.at[1::2])]}
+    return {"value": fn(p.value), "at": [A(a) for a in p.at]}
 
 
 def maxima_json(study) -> dict[str, Any]:
@@ -182,9 +185,13 @@ def _unit(unit: str) -> str:
     return "" if unit == "1" else " " + unit.replace("^2", "\u00b2").replace("^3", "\u00b3")
 
 
-def _angles(u, at) -> str:
-    shown = [u.format("angle", a) for a in at]
-    return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
+def _where(u, p: Peak) -> str:
+    """Where a peak occurs, in words: "at 120° and 180°", or "from 0° to 90°" for a value held throughout."""
+    if p.throughout:
+        return " and ".join(f"from {u.format('angle', a)} to {u.format('angle', b)}"
+                            for a, b in zip(p.at[::2], p.at[1::2]))
+    shown = [u.format("angle", a) for a in p.at]
+    return "at " + (shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1])
 
 
 def maxima_notes(study) -> list[str]:
@@ -197,7 +204,7 @@ def maxima_notes(study) -> list[str]:
     if "pressure_angle" in mx["overall"]:
         p, st = mx["overall"]["pressure_angle"], mx["stations"]["pressure_angle"]
         row = " (the \u03c6_max row)" if "phi_max" in study.get("profile").station_names else ""
-        out.append(f"Largest pressure angle, exact: {u.format('angle', p.value)} at {_angles(u, p.at)}"
+        out.append(f"Largest pressure angle, exact: {u.format('angle', p.value)} {_where(u, p)}"
                    + (f", the offset {u.format('length', f.offset)} included" if f.offset else "")
                    + f"; at the {n} drawn stations{row}: {u.format('angle', st.value)} at {u.format('angle', st.at)}.")
     words = _SWING if f.kind in (OSCILLATING, OSC_FLAT) else _WORDS
@@ -205,9 +212,7 @@ def maxima_notes(study) -> list[str]:
         p, st = mx["overall"][q], mx["stations"][q]
         unit, fn = cols[q]
         name = words[q][0] if s.model.omega else f"{words[q][1]} ({words[q][0]} at a cam speed of 1 rad/s)"
-        where = (f"from {u.format('angle', p.at[0])} to {u.format('angle', p.at[1])}"
-                 if p.throughout else f"at {_angles(u, p.at)}")
-        out.append(f"Largest {name}, exact: {fn(p.value):.4g}{_unit(unit)} {where}; at the {n} drawn stations: "
+        out.append(f"Largest {name}, exact: {fn(p.value):.4g}{_unit(unit)} {_where(u, p)}; at the {n} drawn stations: "
                    f"{fn(st.value):.4g}{_unit(unit)} at {u.format('angle', st.at)}.")
     return out
 
