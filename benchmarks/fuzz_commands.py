@@ -191,7 +191,7 @@ def make_command(rng: random.Random, kind: str, hostile: float = 0.3, name: str 
         value, ok = rng.choice(TOLERANCE) if rng.random() < 0.6 else TOLERANCE[0]
         argv = ["export", "{scene}", "-o", "{out}"]
         _opt(argv, "--tolerance", value)
-        return Command(name, argv, _outputs("-profile.csv", "-profile.dxf"), must_refuse=not ok,
+        return Command(name, argv, _outputs("-profile.csv", "-profile.dxf", "-stations.csv"), must_refuse=not ok,
                        option="--tolerance", hang_seconds=10.0)
     if name == "batch":
         v, ok_v = _pick(rng, VARIANTS, hostile)

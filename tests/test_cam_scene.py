@@ -50,7 +50,7 @@ def test_undercut_scene_warns_with_angles_and_json(capsys):
     data = json.loads(capsys.readouterr().out)
     spans = data["profile"]["undercut"]
     assert len(spans) == 2 and all(a < b for a, b in spans)
-    assert data["analyses"] == ["cam construction", "cam closed forms"]
+    assert data["analyses"] == ["cam construction", "cam closed forms", "cam station table", "cam maxima"]
 
 
 def test_offset_cycloidal_scene_has_speed_charts():
@@ -112,7 +112,8 @@ def test_export_csv_and_dxf_at_the_tolerance(tmp_path):
     from drafting.app.cam_export import export
 
     scene = GALLERY / "notes-roller-cam.toml"
-    csv, dxf = export(scene, tmp_path, 1e-6)
+    csv, dxf, stations = export(scene, tmp_path, 1e-6)
+    assert stations.name == "notes-roller-cam-stations.csv"
     lines = csv.read_text().splitlines()
     assert "# units: in" in lines
     rows = np.array([[float(v) for v in r.split(",")] for r in lines if r and r[0] not in "#x"]) * 0.0254
@@ -152,7 +153,8 @@ def test_export_undercut_cam_is_trimmed_and_the_cli_pieces(tmp_path, capsys):
     assert np.min(d) >= m.follower.roller_radius * (1 - 1e-3)
     ap = add_export_arguments(argparse.ArgumentParser(prog="drafting export"))
     assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "-o", str(tmp_path)])) == 0
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes-roller-cam-profile.csv", "notes-roller-cam-profile.dxf"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes-roller-cam-profile.csv", "notes-roller-cam-profile.dxf",
+                                                          "notes-roller-cam-stations.csv"]
     for bad in ("0.5", "1e-10", "1e-300", "nan"):     # 1e-300 was a traceback, 1e-10 ran for ever
         assert run_export(ap.parse_args([str(GALLERY / "notes-roller-cam.toml"), "--tolerance", bad])) == 2
         err = capsys.readouterr().err

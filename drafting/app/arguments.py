@@ -118,9 +118,11 @@ def parser() -> argparse.ArgumentParser:
                    help="also the four-bar sweep against pylinkage, mechanism (pip install .[bench]) and "
                         "plain numpy")
     add_export_arguments(sub.add_parser(
-        "export", help="a cam's profile for machining (CSV and DXF)",
+        "export", help="a cam's profile for machining (CSV and DXF) and its station table (CSV)",
         description="Write a cam scene's profile as CSV and DXF (units in the file), every chord within the "
-                    "tolerance of the exact profile, trimmed where the follower undercuts it."))
+                    "tolerance of the exact profile, trimmed where the follower undercuts it; and its station "
+                    "table as CSV (s, v, a, j, pressure angle, radii of curvature, contact point at each "
+                    "drawn station)."))
     n = sub.add_parser("lint", help="measure each scene's sheets against the sheet critic's checks",
                        description="Lay out each scene's worked sheets and report what the sheet critic finds: "
                                    "labels overlapping, struck by lines or ambiguous, short arrows without a "

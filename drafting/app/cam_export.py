@@ -1,11 +1,12 @@
 """``drafting export``: a cam's profile for machining, CSV and DXF, at a stated tolerance, with the units in
-the file.  The profile is the cam family's "machining profile" analysis (every chord within the tolerance
+the file; beside them the per-station table (SCENE-stations.csv: s, v, a, j, pressure angle, radii of
+curvature and contact point at each drawn station, :func:`drafting.families.cam.tables.stations_csv`).  The profile is the cam family's "machining profile" analysis (every chord within the tolerance
 of the exact envelope, by default 1e-6 of the cam's size, prime circle plus lift; trimmed where the
 follower undercuts it), written by :mod:`drafting.backends.cam_files`.
 
 Usage: ``drafting export SCENE -o DIR [--tolerance 1e-6]`` (relative to the cam's size), or ``python -m
 drafting.app.cam_export`` with the same arguments; both are :func:`add_export_arguments` and :func:`run_export`.
-Both files are written together or not at all (drafting.backends.files.write_outputs).
+The files are written together or not at all (drafting.backends.files.write_outputs).
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from ..backends.cam_files import csv_text, dxf_bytes
 from ..backends.files import ExportError, prepare_folder, write_outputs
 from ..scene.reader import SceneError, load_scene
 from ..families.cam.machining import EXPORT_TOLERANCE, EXPORT_TOLERANCE_RANGE
+from ..families.cam.tables import stations_csv
 from ..study.study import Study
 
 
@@ -25,19 +27,22 @@ def export(scene_path: str | Path, out_dir: str | Path, tolerance_rel: float = E
     scene = load_scene(scene_path)
     if scene.kind != "cam":
         raise SceneError(scene.path, "kind", f"is {scene.kind!r}; only a cam scene has a profile to export")
-    pts, tol = Study(scene, options={"export tolerance": tolerance_rel}).get("machining profile")
+    study = Study(scene, options={"export tolerance": tolerance_rel})
+    pts, tol = study.get("machining profile")
     out = Path(out_dir)
     prepare_folder(out)
     stem = f"{Path(scene_path).stem}-profile"
     return write_outputs(out, stem, [(out / f"{stem}.csv", lambda: csv_text(scene, pts, tol).encode("utf-8")),
-                                     (out / f"{stem}.dxf", lambda: dxf_bytes(scene, pts, tol))])
+                                     (out / f"{stem}.dxf", lambda: dxf_bytes(scene, pts, tol)),
+                                     (out / f"{Path(scene_path).stem}-stations.csv",
+                                      lambda: stations_csv(study).encode("utf-8"))])
 
 
 def add_export_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
     """The export's arguments on ``parser`` (this module's own command line, or a ``drafting export``
     subcommand): the scene, the output folder and the relative tolerance."""
     parser.add_argument("scene", help="a cam scene file (kind = \"cam\")")
-    parser.add_argument("-o", "--out", default=".", help="the folder for SCENE-profile.csv and .dxf")
+    parser.add_argument("-o", "--out", default=".", help="the folder for SCENE-profile.csv and .dxf and SCENE-stations.csv")
     parser.add_argument("--tolerance", type=float, default=EXPORT_TOLERANCE,
                         help="chord tolerance relative to the cam's size (default 1e-6)")
     return parser

@@ -18,7 +18,9 @@ from constructions.geometry import Vec
 
 from ..glue import construction_of, model_if_asked
 from ..registry import Analysis, Family
+from .limits import near_limit
 from .machining import machining_profile
+from .tables import maxima_json, maxima_notes, rows_note, run_maxima, run_station_table, stations_json
 from .scene import SECTIONS, CamScene, read_cam
 
 MODEL = "closed-form cam geometry (pressure angle and contact point)"
@@ -112,6 +114,7 @@ def _warnings(study) -> tuple[str, ...]:
                    f"the envelope's two branches cross or part; the profile drawn is trimmed to what the "
                    f"{'roller' if f.kind in (ROLLER, OSCILLATING) else 'face'} leaves (a sharp edge on the cam, and "
                    f"a shock in the follower).")
+    out += near_limit(u, cp, f, study.scene.model.limit_margin)
     phi = abs(cp.max_pressure_angle[1])
     limit = 35 if f.kind in (OSCILLATING, OSC_FLAT) else 30
     if f.kind != FLAT and phi > math.radians(limit):
@@ -125,11 +128,7 @@ def _notes(study) -> tuple[str, ...]:
     if study.result("profile") is None:
         return ()
     u, cp, f = _profile_terms(study)
-    out = []
-    if f.kind != FLAT:
-        t, phi = cp.max_pressure_angle
-        out.append(f"Largest pressure angle (exact): {u.format('angle', abs(phi))} at {u.format('angle', t)}"
-                   + (f", the offset {u.format('length', f.offset)} included." if f.offset else "."))
+    out = maxima_notes(study)
     if cp.min_rho_pitch is not None:
         t, rho = cp.min_rho_pitch
         out.append(f"Smallest radius of curvature of the pitch curve (convex): {u.format('length', rho)} at "
@@ -153,6 +152,8 @@ def _notes(study) -> tuple[str, ...]:
     for j in study.scene.model.program.joins():
         if j.consequence:
             out.append(f"At {u.format('angle', j.theta)} ({j.before} to {j.after}): {j.consequence}.")
+    if study.get("profile").station_names:
+        out.append(rows_note(study))
     return tuple(out)
 
 
@@ -196,6 +197,8 @@ def _json(study) -> dict[str, Any]:
             "face_width": L(cp.face_width[1] - cp.face_width[0]) if cp.face_width else None,
             **({"face_reach_along_arm": [L(cp.face_width[0]), L(cp.face_width[1])]} if f.kind == OSC_FLAT else {}),
         }
+        out["stations"] = stations_json(study)
+        out["maxima"] = maxima_json(study)
     return out
 
 
@@ -205,6 +208,8 @@ CAM = Family(
         "profile": Analysis("profile", (), _profile, label="cam construction"),
         "closed forms": Analysis("closed forms", ("profile",), _closed, label="cam closed forms"),
         "machining profile": Analysis("machining profile", (), machining_profile),
+        "station table": Analysis("station table", ("profile",), run_station_table, label="cam station table"),
+        "maxima": Analysis("maxima", ("station table",), run_maxima, label="cam maxima"),
     },
     askable=("profile",),
     measured=_measured,

@@ -3,7 +3,9 @@
     kind = "cam"
     [cam]          base_radius, sense ("cw" or "ccw"), speed (optional: the cam's steady angular speed, for
                    v, a and j; without it the s-v-a-j diagrams are per radian), divisions (how many equal
-                   portions of the turn the construction draws, 4..72; default 12) or step (e.g. "10 deg")
+                   portions of the turn the construction draws, 4..72; default 12) or step (e.g. "10 deg"),
+                   limit_margin (optional: how near a limit a roller or a base radius is warned of, a
+                   fraction; default 0.05)
     [follower]     type ("knife-edge", "roller", "flat-faced", "oscillating roller", "oscillating
                    flat-faced"), roller_radius or roller_diameter (a roller), offset (optional: the axis to the
                    right of the cam centre, negative to the left; translating knife-edge or roller only),
@@ -29,9 +31,10 @@ from constructions.cams.profile import check_face
 
 from ...scene.reader import Scene, SceneReader
 from ...scene.unitset import Units
+from .limits import LIMIT_MARGIN
 
 SECTIONS = frozenset({"cam", "follower", "segment"})
-CAM_KEYS = {"base_radius", "sense", "speed", "divisions", "step"}
+CAM_KEYS = {"base_radius", "sense", "speed", "divisions", "step", "limit_margin"}
 FOLLOWER_KEYS = {"type", "roller_radius", "roller_diameter", "offset", "pivot_distance", "arm_length", "face_offset"}
 SEGMENT_KEYS = {"motion", "from", "to", "lift", "law"}
 MAX_DIVISIONS = 72
@@ -39,13 +42,14 @@ MAX_DIVISIONS = 72
 
 @dataclass(frozen=True)
 class CamModel:
-    """A cam scene's model: the program, the follower, the cam's speed (rad/s or None) and the number of
-    equal portions the construction draws."""
+    """A cam scene's model: the program, the follower, the cam's speed (rad/s or None), the number of
+    equal portions the construction draws and the margin within which a limit is warned of."""
 
     program: Program
     follower: Follower
     omega: float | None
     divisions: int
+    limit_margin: float = LIMIT_MARGIN
 
 
 @dataclass(frozen=True)
@@ -85,6 +89,10 @@ def read_cam(r: SceneReader, units: Units) -> dict:
         if not (st > 0 and abs(n - round(n)) < 1e-9 and 4 <= round(n) <= MAX_DIVISIONS):
             raise r.fail("cam.step", f"must divide 360 deg into 4 to {MAX_DIVISIONS} equal portions (e.g. \"10 deg\")")
         divisions = int(round(n))
+    margin = t.get("limit_margin", LIMIT_MARGIN)
+    if isinstance(margin, bool) or not isinstance(margin, (int, float)) or not 0 <= margin < 1:
+        raise r.fail("cam.limit_margin", "must be a fraction from 0 (no warning before the limit) to below 1, "
+                                         "e.g. 0.05 for 5 %")
 
     ft = r.table("follower", FOLLOWER_KEYS, {"type"})
     kind = ft["type"]
@@ -193,7 +201,7 @@ def read_cam(r: SceneReader, units: Units) -> dict:
             check_face(program, follower)
         except ValueError as err:
             raise r.fail("follower.pivot_distance", str(err)) from None
-    return {"model": CamModel(program, follower, omega, divisions)}
+    return {"model": CamModel(program, follower, omega, divisions, float(margin))}
 
 
 __all__ = ["SECTIONS", "read_cam", "CamModel", "KNIFE"]
