@@ -19,7 +19,7 @@ from constructions.geometry import Vec
 from ..glue import construction_of, model_if_asked
 from ..registry import Analysis, Family
 from .machining import machining_profile
-from .scene import SECTIONS, CamScene, read_cam
+from .scene import SECTIONS, TABLES, CamScene, read_cam
 
 MODEL = "closed-form cam geometry (pressure angle and contact point)"
 
@@ -216,7 +216,7 @@ CAM = Family(
     scales=_scales,
     notes=_notes,
     scene_type=CamScene,
-    sections=SECTIONS,
+    sections=SECTIONS, keys=TABLES,
     read=read_cam,
     default_analyses=("profile",),
 )
