@@ -139,4 +139,17 @@ def parser() -> argparse.ArgumentParser:
     w.add_argument("--csv", type=Path, metavar="FILE", help="write the table as CSV (scene units)")
     w.add_argument("--sheet", type=Path, metavar="DIR",
                    help="also draw the cycle sheet (charts, coupler curves, limit positions) into DIR")
+    k = sub.add_parser("keys", help="the keys of a scene kind: unit, default, meaning",
+                       description="Print a scene kind's sections and keys (unit, default, whether required, "
+                                   "allowed values, meaning), generated from the readers' own key tables.")
+    k.add_argument("kind", nargs="?", metavar="KIND", help="cam, \"gear pair\" (or gear-pair), gear-train, "
+                                                            "free-body, linkage; none: the list of kinds")
+    k.add_argument("--markdown", action="store_true", help="every kind as Markdown (docs/scene-reference.md)")
+    e = sub.add_parser("new", help="write an annotated starter scene of a kind",
+                       description="Write a starter scene of KIND that renders, every key commented with its "
+                                   "meaning and unit; it refuses to overwrite a file.")
+    e.add_argument("kind", metavar="KIND", help="linkage, cam, gear-pair, gear-train or free-body")
+    e.add_argument("--example", metavar="NAME", help="which starter (linkage: four-bar, slider-crank; "
+                                                    "gear-train: three-gears, planetary)")
+    e.add_argument("-o", "--out", type=Path, metavar="FILE", help="the file to write (default: print it)")
     return p

@@ -31,7 +31,7 @@ DRAWING = KeyTable("drawing", "the sheet: its title block, paper and the diagram
 ))
 
 ASK = KeyTable("ask", "what the scene asks for", (
-    Key("analyses", "list", None, "the analyses to draw (default: the kind's first; the kind's list below)"),
+    Key("analyses", "list", None, "the analyses to draw"),
     Key("find", "list", None, "the rows of the results table, by name, e.g. [\"V_C\", \"omega_2\"] "
                               "(default: every result)"),
 ))

@@ -37,8 +37,7 @@ _EXAMPLES = {"angular_velocity": " (or \"rpm\")", "length": " (or \"m\", \"in\")
 
 UNITS = KeyTable("units", "the unit of each kind of quantity: plain numbers are read in it and results "
                           "printed in it (pint spellings)", tuple(
-    Key(key, "unit", _default(kind, ""), f"the unit of {kind}{'' if kind.endswith('ss') else 's'}"
-                                         f"{_EXAMPLES.get(key, '')}")
+    Key(key, "unit", _default(kind, ""), f"the unit of every {kind}{_EXAMPLES.get(key, '')}")
     for key, kind in KEYS.items()))
 """``[units]``: one key per quantity kind of :data:`KEYS`."""
 
