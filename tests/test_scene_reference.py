@@ -204,6 +204,7 @@ def test_each_starter_scene_renders(kind, name, tmp_path, capsys):
     assert written == annotated(template(kind, name), families()[kind], name)
     assert tomllib.loads(written) == tomllib.loads(template(kind, name))     # the comments change nothing
     assert main(["render", str(scene), "-o", str(tmp_path / "out"), "--format", "svg"]) == 0
+    assert main(["check", str(scene)]) == 0                                  # graphical = analytic
     sheets = sorted((tmp_path / "out").glob("starter*.svg"))
     assert sheets and all(p.stat().st_size > 10_000 for p in sheets)
 
@@ -237,3 +238,20 @@ def test_new_refuses_to_overwrite_a_file(tmp_path, capsys):
 def test_key_tables_refuse_a_key_twice():
     with pytest.raises(ValueError):
         KeyTable("x", "x", (Key("a", "text", None, "a"), Key("a", "text", None, "b")))
+
+
+def test_the_readme_scene_of_each_kind_solves():
+    """README "Scene files" shows one scene of each kind; each reads, solves and agrees with its analytic
+    check, and they cover every kind."""
+    from drafting.study.study import Study
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert "docs/scene-reference.md" in readme.split("## Scene files", 1)[1].split("\n## ", 1)[0]
+    part = readme.split("### Cams, gears and free bodies", 1)[1].split("\n### ", 1)[0]
+    blocks = [b.split("```", 1)[0] for b in part.split("```toml\n")[1:]]
+    kinds = set()
+    for block in blocks:
+        study = Study(scene_from_data(tomllib.loads(block), "README"))
+        kinds.add(study.scene.kind)
+        study.run()
+        assert study.comparisons and not study.disagreements(), study.scene.kind
+    assert kinds == set(families()) - {"linkage"}
