@@ -61,7 +61,8 @@ def _md_table(table: KeyTable, level: str = "###") -> list[str]:
 def markdown() -> str:
     """docs/scene-reference.md: every key of every kind."""
     fams = families()
-    out = [GENERATED, "", "# Scene reference", "", INTRO, "", "## The top level", ""]
+    kinds = ", ".join(f"[{k}](#{k.replace(' ', '-')})" for k in sorted(fams))
+    out = [GENERATED, "", "# Scene reference", "", INTRO, "", f"Kinds: {kinds}.", "", "## The top level", ""]
     out += _md_table(TOP)[4:]
     first = fams[sorted(fams)[0]]
     out += ["## Every kind", "", "The sections every scene may have (`[ask] analyses` and `[vary]` depend on "
