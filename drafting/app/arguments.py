@@ -149,4 +149,17 @@ def parser() -> argparse.ArgumentParser:
     v.add_argument("target", nargs="?", type=Path, metavar="SCENE|FOLDER",
                    help="a scene file, or a folder whose scenes are listed (default: the current folder)")
     v.add_argument("--port", type=int, default=8470, help="port on 127.0.0.1 (default: %(default)s; 0: any free)")
+    k = sub.add_parser("keys", help="the keys of a scene kind: unit, default, meaning",
+                       description="Print a scene kind's sections and keys (unit, default, whether required, "
+                                   "allowed values, meaning), generated from the readers' own key tables.")
+    k.add_argument("kind", nargs="?", metavar="KIND", help="cam, \"gear pair\" (or gear-pair), gear-train, "
+                                                            "free-body, linkage; none: the list of kinds")
+    k.add_argument("--markdown", action="store_true", help="every kind as Markdown (docs/scene-reference.md)")
+    e = sub.add_parser("new", help="write an annotated starter scene of a kind",
+                       description="Write a starter scene of KIND that renders, every key commented with its "
+                                   "meaning and unit; it refuses to overwrite a file.")
+    e.add_argument("kind", metavar="KIND", help="linkage, cam, gear-pair, gear-train or free-body")
+    e.add_argument("--example", metavar="NAME", help="which starter (linkage: four-bar, slider-crank; "
+                                                    "gear-train: three-gears, planetary)")
+    e.add_argument("-o", "--out", type=Path, metavar="FILE", help="the file to write (default: print it)")
     return p

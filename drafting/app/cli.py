@@ -10,6 +10,8 @@
     drafting bench [--peers]      timings of rendering and of the analytic sweep (and its peers)
     drafting lint SCENE... [--json]   the sheet critic's findings; exit 1 when there are any
     drafting bench --gallery      every gallery sheet's solve, layout and SVG times (--json)
+    drafting keys KIND            a scene kind's keys: unit, default, meaning (--markdown: every kind)
+    drafting new KIND [--example NAME] [-o FILE]   an annotated starter scene that renders
 
 Exit codes: 0 fine, 1 graphical and analytic disagree, 2 bad input (one sentence on stderr).
 """
@@ -271,6 +273,12 @@ def _main(argv: Sequence[str] | None) -> int:
         if args.command == "serve":
             from ..serve.command import cmd_serve
             return cmd_serve(args.target, args.port)
+        if args.command == "keys":
+            from .keys_cmd import cmd_keys
+            return cmd_keys(args.kind, args.markdown)
+        if args.command == "new":
+            from .new_cmd import cmd_new
+            return cmd_new(args.kind, args.example, args.out)
         if args.command == "sweep":
             from .sweep_cmd import SweepInputError, cmd_sweep
             try:

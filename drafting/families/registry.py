@@ -53,6 +53,9 @@ class Family:
     fields are the family's typed state."""
     sections: frozenset[str] = frozenset()
     """The top-level sections of a scene file this family reads (besides kind, drawing, units, ask)."""
+    keys: tuple = ()
+    """The key tables of its sections (:class:`drafting.scene.keys.KeyTable`), which its reader checks keys
+    against: the reference (``drafting keys KIND``, docs/scene-reference.md) is generated from them."""
     read: Callable[[Any, Any], dict] = field(default=lambda reader, units: {})
     """``read(reader, units)`` reads the family's sections with the public scene reader
     (:class:`drafting.scene.reader.SceneReader`, whose errors name the file and key) and returns the fields

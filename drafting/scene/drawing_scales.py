@@ -15,12 +15,23 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from .keys import Key, KeyTable
 from .units import UnitError, to_si
 
 LENGTH_DIAGRAMS = ("space", "free-body")
 POLYGONS = {"velocity": "velocity", "acceleration": "acceleration", "force": "force"}
 RATIO_RANGE = (1e-6, 1e6)
 """paper per true length a ratio may state: 1:1 000 000 to 1 000 000:1 (the scene's own size limits)."""
+
+SCALE = KeyTable("drawing.scale", "the scale of a diagram, stated (the sheet draws it at that scale and says "
+                                  "so when it cannot fit)", (
+    Key("space", "text", None, "the space diagram: a ratio paper:true, e.g. \"1:2\""),
+    Key("free-body", "text", None, "the free-body diagram: a ratio paper:true, e.g. \"1:5\""),
+    Key("velocity", "text", None, "the velocity polygon: what 1 mm stands for, e.g. \"1 mm = 10 mm/s\""),
+    Key("acceleration", "text", None, "the acceleration polygon: what 1 mm stands for, e.g. "
+                                      "\"1 mm = 0.1 m/s^2\""),
+    Key("force", "text", None, "every force polygon: what 1 mm stands for, e.g. \"1 mm = 2 N\""),
+))
 
 _RATIO = re.compile(r"^\s*(\d+(?:\.\d+)?)\s*:\s*(\d+(?:\.\d+)?)\s*$")
 _PER_MM = re.compile(r"^\s*1\s*mm\s*=\s*(.+?)\s*$")
@@ -31,7 +42,7 @@ def read_scales(reader, value: Any, units) -> tuple[tuple[str, float], ...]:
     a SceneError naming ``drawing.scale.<key>`` for anything else."""
     if value is None:
         return ()
-    t = reader.table("drawing.scale", set(LENGTH_DIAGRAMS) | set(POLYGONS), value=value)
+    t = reader.table("drawing.scale", SCALE, value=value)
     out = []
     for key, raw in t.items():
         where = f"drawing.scale.{key}"

@@ -21,6 +21,8 @@ from constructions.geometry import Vec
 from constructions.mechanisms.model import Attached, Mechanism
 
 from . import limits
+from .effect_keys import COUPLE_KEYS, FRICTION_KEYS, GRAVITY_KEYS, LOAD_KEYS, MASS_KEYS, SPRING_KEYS
+from .keys import KeyTable
 from .unitset import Units
 
 SECTIONS = frozenset({"gravity", "load", "couple", "mass", "spring", "friction"})
@@ -31,17 +33,9 @@ SHAPE_NAMES = {**{s: s for s in inertia_of.SHAPES}, "disk": "disc", "thin_ring":
 """The shapes a [[mass]] may name (:data:`constructions.forces.inertia.SHAPES`), with their spellings."""
 DIMENSIONS = ("length", "radius", "width", "height", "inner_radius", "outer_radius")
 
-LOAD_KEYS = {"name", "link", "at", "force", "angle"}
-COUPLE_KEYS = {"name", "link", "torque", "sense"}
-MASS_KEYS = {"link", "mass", "at", "from", "distance", "angle", "inertia", "inertia_about", "shape",
-             *DIMENSIONS}
-SPRING_KEYS = {"name", "link", "at", "anchor", "to_link", "to", "stiffness", "free_length"}
-FRICTION_KEYS = {"slider", "mu"}
 MU_MAX = 10.0
 """The largest coefficient of friction a scene may give: its friction angle, atan 10 = 84.3 deg, leans a
 guide's force within 6 deg of the guide itself; dry rubber on concrete is about 1."""
-GRAVITY_KEYS = {"g", "angle"}
-
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*")
 
 
@@ -120,10 +114,10 @@ class _EffectsReader:
             raise self.fail(key, "must not be negative")
         return v
 
-    def items(self, section: str, allowed: set[str], required: set[str]):
+    def items(self, section: str, keys: KeyTable):
         for i, t in enumerate(self.r.array(section), 1):
             k = f"{section}[{i}]"
-            self.r.table(k, allowed, required, value=t)
+            self.r.table(k, keys, value=t)
             yield k, t
 
     # -- sections --------------------------------------------------------------------------------------
@@ -140,7 +134,7 @@ class _EffectsReader:
     def gravity(self) -> Vec | None:
         if "gravity" not in self.r.data:
             return None
-        t = self.r.table("gravity", GRAVITY_KEYS, {"g"})
+        t = self.r.table("gravity", GRAVITY_KEYS)
         g = self.positive("gravity.g", t["g"], "acceleration",
                           "; it is the magnitude (turn it with angle = \"... deg\", the direction of gravity)")
         if "angle" not in t:
@@ -148,7 +142,7 @@ class _EffectsReader:
         return polar(g, self.quantity("gravity.angle", t["angle"], "angle"))
 
     def masses(self) -> tuple[Mechanism, tuple[Mass, ...]]:
-        tables = list(self.items("mass", MASS_KEYS, {"link", "mass"}))
+        tables = list(self.items("mass", MASS_KEYS))
         if not tables:
             return self.m, ()
         taken = set(self.m.ground) | {j for k in self.m.links for j in self.m.points_of(k.number)}
@@ -285,7 +279,7 @@ class _EffectsReader:
         return inertia_of.shape_inertia(shape, mass, *values)
 
     def loads(self):
-        for k, t in self.items("load", LOAD_KEYS, LOAD_KEYS):
+        for k, t in self.items("load", LOAD_KEYS):
             name = self.name(f"{k}.name", t["name"])
             body = self.body(f"{k}.link", t["link"])
             at = self.point(f"{k}.at", t["at"], body)
@@ -296,7 +290,7 @@ class _EffectsReader:
             yield Load(name, body, at, polar(force, angle))
 
     def couples(self):
-        for k, t in self.items("couple", COUPLE_KEYS, {"name", "link", "torque"}):
+        for k, t in self.items("couple", COUPLE_KEYS):
             name = self.name(f"{k}.name", t["name"])
             body = self.body(f"{k}.link", t["link"])
             torque = self.quantity(f"{k}.torque", t["torque"], "torque")
@@ -306,7 +300,7 @@ class _EffectsReader:
     def springs(self) -> tuple[tuple[Spring, ...], dict[str, Vec]]:
         out: list[Spring] = []
         fixed: dict[str, Vec] = {}
-        for k, t in self.items("spring", SPRING_KEYS, {"name", "link", "at", "stiffness", "free_length"}):
+        for k, t in self.items("spring", SPRING_KEYS):
             name = self.name(f"{k}.name", t["name"])
             body = self.body(f"{k}.link", t["link"])
             a = End(body, self.point(f"{k}.at", t["at"], body))
@@ -348,7 +342,7 @@ class _EffectsReader:
     def friction(self) -> dict[int, float]:
         out: dict[int, float] = {}
         where: dict[int, str] = {}
-        for k, t in self.items("friction", FRICTION_KEYS, FRICTION_KEYS):
+        for k, t in self.items("friction", FRICTION_KEYS):
             n = self.r.number(f"{k}.slider", t["slider"])
             if n not in self.blocks:
                 if n in self.links:

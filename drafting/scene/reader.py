@@ -17,7 +17,9 @@ from typing import Any
 from constructions.geometry import Vec
 
 from ..families.registry import Family, families, family
-from .unitset import KEYS as UNIT_KEYS, Units
+from .unitset import KEYS as UNIT_KEYS, UNITS, Units
+from .header_keys import ASK, DRAWING, ORIENTATIONS, PAPERS, TOP
+from .keys import KeyTable
 from . import limits
 from .textsafe import cut, cut_middle, one_line, printable
 from .drawing_scales import read_scales
@@ -26,13 +28,10 @@ from .units import UnitError, check_unit, to_si
 PLANNED_KINDS = (
 )
 """Scene families announced but not built yet: a scene of one of these kinds gets a clear "not yet"."""
-PAPERS = ("A4", "A3")
-ORIENTATIONS = ("landscape", "portrait")
-
-COMMON_KEYS = frozenset({"kind", "drawing", "units", "ask", "vary"})
-"""The sections every scene family shares; each family adds its own (Family.sections).  ``[vary]`` (the
-ranges a batch of lab sheets draws from: :mod:`drafting.scene.vary`, the keys the family's) is checked here
-and otherwise left to ``drafting batch``."""
+COMMON_KEYS = TOP.allowed
+"""The sections every scene family shares (:data:`~drafting.scene.header_keys.TOP`); each family adds its own
+(Family.sections).  ``[vary]`` (the ranges a batch of lab sheets draws from: :mod:`drafting.scene.vary`, the
+keys the family's) is checked here and otherwise left to ``drafting batch``."""
 
 
 class SceneError(Exception):
@@ -170,7 +169,12 @@ class SceneReader:
     def fail(self, key: str, problem: str) -> SceneError:
         return SceneError(self.path, key, problem)
 
-    def table(self, key: str, allowed: set[str], required: set[str] = frozenset(), value=None) -> dict:
+    def table(self, key: str, allowed: KeyTable | set[str], required: set[str] | None = None, value=None) -> dict:
+        """The table at ``key`` (or ``value``), its keys checked against ``allowed``: a section's
+        :class:`~drafting.scene.keys.KeyTable` (its keys, and its required ones unless ``required`` says)."""
+        if isinstance(allowed, KeyTable):
+            allowed, required = allowed.allowed, allowed.required if required is None else required
+        required = frozenset() if required is None else required
         t = self.data.get(key, {}) if value is None else value
         if not isinstance(t, dict):
             raise self.fail(key, "must be a table")
@@ -254,7 +258,7 @@ class SceneReader:
         unknown = sorted(set(self.data) - allowed)
         if unknown:
             raise self.fail(unknown[0], f"unknown key; a {kind} scene has {', '.join(sorted(allowed))}")
-        drawing = self.table("drawing", {"title", "number", "paper", "orientation", "dimensions", "scale"})
+        drawing = self.table("drawing", DRAWING)
         title = self.text("drawing.title", drawing.get("title", self.path.stem))
         number = self.text("drawing.number", drawing.get("number", "TOM-000"))
         paper = drawing.get("paper", "A4")
@@ -270,7 +274,7 @@ class SceneReader:
         scales = read_scales(self, drawing.get("scale"), units)
         self.ranges(fam, kind, units)
         state = fam.read(self, units)
-        ask = self.table("ask", {"analyses", "find"})
+        ask = self.table("ask", ASK)
         analyses = ask.get("analyses", list(fam.default_analyses))
         if not isinstance(analyses, list) or not all(isinstance(a, str) for a in analyses) or not analyses:
             raise self.fail("ask.analyses", f"must be a list of analyses, e.g. {list(fam.default_analyses)}")
@@ -312,7 +316,7 @@ class SceneReader:
         raise self.fail("kind", f"{kind!r} is not a scene kind; choose from {kinds}")
 
     def units(self) -> Units:
-        t = self.table("units", set(UNIT_KEYS))
+        t = self.table("units", UNITS)
         out = {}
         for key, kind in UNIT_KEYS.items():
             if key in t:

@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass, fields
 from typing import Any
 
+from .keys import Key, KeyTable
 from .units import DEFAULT_UNITS, format_value, from_si, unit_symbol
 
 # scene key (under [units]) -> quantity kind
@@ -30,6 +31,15 @@ KEYS: dict[str, str] = {
 
 def _default(kind: str, fallback: str) -> str:
     return DEFAULT_UNITS.get(kind, fallback)
+
+
+_EXAMPLES = {"angular_velocity": " (or \"rpm\")", "length": " (or \"m\", \"in\")"}
+
+UNITS = KeyTable("units", "the unit of each kind of quantity: plain numbers are read in it and results "
+                          "printed in it (pint spellings)", tuple(
+    Key(key, "unit", _default(kind, ""), f"the unit of every {kind}{_EXAMPLES.get(key, '')}")
+    for key, kind in KEYS.items()))
+"""``[units]``: one key per quantity kind of :data:`KEYS`."""
 
 
 @dataclass(frozen=True)

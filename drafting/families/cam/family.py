@@ -21,7 +21,7 @@ from ..registry import Analysis, Family
 from .limits import near_limit
 from .machining import machining_profile
 from .tables import maxima_json, maxima_notes, rows_note, run_maxima, run_station_table, stations_json
-from .scene import SECTIONS, CamScene, read_cam
+from .scene import SECTIONS, TABLES, CamScene, read_cam
 
 MODEL = "closed-form cam geometry (pressure angle and contact point)"
 
@@ -221,7 +221,7 @@ CAM = Family(
     scales=_scales,
     notes=_notes,
     scene_type=CamScene,
-    sections=SECTIONS,
+    sections=SECTIONS, keys=TABLES,
     read=read_cam,
     default_analyses=("profile",),
 )

@@ -25,19 +25,50 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from constructions.cams.laws import DWELL, RETURN, RISE, SEGMENT_KINDS, Program, Segment, law_name
+from constructions.cams.laws import LAWS, DWELL, RETURN, RISE, SEGMENT_KINDS, Program, Segment, law_name
 from constructions.cams.follower import FLAT, FOLLOWERS, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower
 from constructions.cams.profile import check_face
 
+from ...scene.keys import Key, KeyTable
 from ...scene.reader import Scene, SceneReader
 from ...scene.unitset import Units
 from .limits import LIMIT_MARGIN
 
 SECTIONS = frozenset({"cam", "follower", "segment"})
-CAM_KEYS = {"base_radius", "sense", "speed", "divisions", "step", "limit_margin"}
-FOLLOWER_KEYS = {"type", "roller_radius", "roller_diameter", "offset", "pivot_distance", "arm_length", "face_offset"}
-SEGMENT_KEYS = {"motion", "from", "to", "lift", "law"}
 MAX_DIVISIONS = 72
+CAM_KEYS = KeyTable("cam", "the cam: its base circle, sense of rotation and speed", (
+    Key("base_radius", "length", None, "the radius of the base circle (the cam's smallest)", required=True),
+    Key("sense", "text", "ccw", "the cam's sense of rotation", choices=("ccw", "cw")),
+    Key("speed", "angular velocity", None, "the cam's steady speed, for v, a and j (without it the s-v-a-j "
+                                           "diagrams are per radian)"),
+    Key("divisions", "whole number", 12, f"how many equal portions of the turn the construction draws, 4 to "
+                                         f"{MAX_DIVISIONS}"),
+    Key("step", "angle", None, "or the angle of one portion, e.g. \"10 deg\" (not with divisions)"),
+    Key("limit_margin", "number", LIMIT_MARGIN, "how near its limit a roller radius or a flat face's base "
+                                                  "radius is warned of, a fraction (0: only at the limit), 0 to below 1"),
+))
+FOLLOWER_KEYS = KeyTable("follower", "the follower: its type, roller and where its axis or pivot lies", (
+    Key("type", "text", None, "the follower", required=True, choices=FOLLOWERS),
+    Key("roller_radius", "length", None, "the roller's radius (a roller follower needs it or roller_diameter)"),
+    Key("roller_diameter", "length", None, "or the roller's diameter"),
+    Key("offset", "length", 0, "the axis to the right of the cam centre, negative to the left (translating "
+                               "knife-edge or roller)"),
+    Key("pivot_distance", "length", None, "an oscillating follower: its arm's pivot to the right of the cam "
+                                          "centre (then every lift is the arm's swing, an angle)"),
+    Key("arm_length", "length", None, "an oscillating roller: the arm from its pivot to the roller's centre"),
+    Key("face_offset", "length", 0, "an oscillating flat face: its distance from the line through the pivot "
+                                    "along the arm, towards the cam"),
+))
+SEGMENT_KEYS = KeyTable("segment", "one part of the motion program; the segments run on from 0 to 360 deg", (
+    Key("motion", "text", None, "what the follower does", required=True, choices=SEGMENT_KINDS),
+    Key("from", "angle", None, "the cam angle it starts at (where the one before ended)", required=True),
+    Key("to", "angle", None, "the cam angle it ends at", required=True),
+    Key("lift", "length", None, "a rise's or return's lift (an angle for an oscillating follower)"),
+    Key("law", "text", "simple harmonic", "a rise's or return's motion law (also shm, cycloid, 3-4-5, 4567 ...)",
+        choices=tuple(LAWS)),
+), array=True)
+TABLES = (CAM_KEYS, FOLLOWER_KEYS, SEGMENT_KEYS)
+"""The cam family's key tables (:mod:`drafting.scene.keys`), as the reference lists them."""
 
 
 @dataclass(frozen=True)
@@ -62,7 +93,7 @@ class CamScene(Scene):
 def read_cam(r: SceneReader, units: Units) -> dict:
     if "cam" not in r.data:
         raise r.fail("cam", "is missing: give the cam's base_radius and sense, e.g. [cam] base_radius = \"50 mm\"")
-    t = r.table("cam", CAM_KEYS, {"base_radius"})
+    t = r.table("cam", CAM_KEYS)
     rb = r.quantity("cam.base_radius", t["base_radius"], "length", units)
     if rb <= 0:
         raise r.fail("cam.base_radius", "must be positive")
@@ -94,7 +125,7 @@ def read_cam(r: SceneReader, units: Units) -> dict:
         raise r.fail("cam.limit_margin", "must be a fraction from 0 (no warning before the limit) to below 1, "
                                          "e.g. 0.05 for 5 %")
 
-    ft = r.table("follower", FOLLOWER_KEYS, {"type"})
+    ft = r.table("follower", FOLLOWER_KEYS)
     kind = ft["type"]
     if kind not in FOLLOWERS:
         raise r.fail("follower.type", f"{r.shown(kind)} is not a follower; choose from {', '.join(FOLLOWERS)}")
@@ -147,7 +178,7 @@ def read_cam(r: SceneReader, units: Units) -> dict:
         raise r.fail("segment", "is missing: give the motion program as [[segment]] tables from 0 to 360 deg")
     for i, st in enumerate(items, 1):
         k = f"segment[{i}]"
-        r.table(k, SEGMENT_KEYS, {"motion", "from", "to"}, value=st)
+        r.table(k, SEGMENT_KEYS, value=st)
         motion = st["motion"]
         if motion not in SEGMENT_KINDS:
             raise r.fail(f"{k}.motion", f"{r.shown(motion)} must be dwell, rise or return")
@@ -204,4 +235,4 @@ def read_cam(r: SceneReader, units: Units) -> dict:
     return {"model": CamModel(program, follower, omega, divisions, float(margin))}
 
 
-__all__ = ["SECTIONS", "read_cam", "CamModel", "KNIFE"]
+__all__ = ["SECTIONS", "TABLES", "read_cam", "CamModel", "KNIFE"]

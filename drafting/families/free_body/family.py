@@ -15,7 +15,7 @@ from constructions.record import Construction
 
 from ..glue import measured_of, model_if_asked, scales_of
 from ..registry import Analysis, Family
-from .scene import SECTIONS, FreeBodyScene, read_free_body
+from .scene import SECTIONS, TABLES, FreeBodyScene, read_free_body
 
 MODEL = "equilibrium of the body (3 x 3 linear system)"
 
@@ -123,7 +123,7 @@ FREE_BODY = Family(
     scales=scales_of("forces"),
     notes=_notes,
     scene_type=FreeBodyScene,
-    sections=SECTIONS,
+    sections=SECTIONS, keys=TABLES,
     read=read_free_body,
     default_analyses=("forces",),
 )

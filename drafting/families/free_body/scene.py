@@ -31,6 +31,7 @@ from constructions.geometry import Vec
 
 from ...scene import limits
 from ...scene.effects import claim_name, polar
+from ...scene.keys import Key, KeyTable
 from ...scene.reader import Scene, SceneReader
 from ...scene.unitset import Units
 
@@ -38,11 +39,39 @@ SUPPORT_SECTIONS = (MEMBER, PIN, ROLLER, GUIDE)
 SECTIONS = frozenset({"body", "frame", "load", "couple", *SUPPORT_SECTIONS})
 """The top-level sections of a free-body scene."""
 
-BODY_KEYS = {"name", "points", "outline"}
-LOAD_KEYS = {"name", "at", "force", "angle"}
-COUPLE_KEYS = {"name", "torque", "sense"}
-SUPPORT_KEYS = {MEMBER: {"name", "at", "to", "label"}, PIN: {"name", "at", "label"},
-                ROLLER: {"name", "at", "normal", "label"}, GUIDE: {"name", "at", "angle", "label"}}
+_NAME = Key("name", "text", None, "the force's name, e.g. P, F_12 or F_c (each its own)", required=True)
+_AT = Key("at", "text", None, "the point of the body it acts at", required=True)
+_LABEL = Key("label", "text", None, "what the support is, in words (\"member 1\", \"the cylinder\")")
+BODY_KEYS = KeyTable("body", "the one rigid body", (
+    Key("name", "text", "body", "what the body is called on the sheet"),
+    Key("points", "table", None, "the body's points by name: [body.points] O = [0, 0]", required=True),
+    Key("outline", "list", None, "the points drawn as its outline, in order (default: all of them)"),
+))
+FRAME_KEYS = KeyTable("frame", "fixed points the members hang from, by name", (
+    Key("<name>", "point", None, "a fixed point [x, y], e.g. A = [0, 120]"),
+), named=True)
+LOAD_KEYS = KeyTable("load", "a given force on a point of the body", (
+    _NAME, _AT,
+    Key("force", "force", None, "the magnitude", required=True),
+    Key("angle", "angle", None, "its direction, CCW from +x", required=True),
+), array=True)
+COUPLE_KEYS = KeyTable("couple", "a given couple on the body", (
+    _NAME,
+    Key("torque", "torque", None, "signed, CCW positive; or positive with sense", required=True),
+    Key("sense", "text", None, "the sense of a positive torque", choices=("ccw", "cw")),
+), array=True)
+SUPPORT_KEYS = {
+    MEMBER: KeyTable(MEMBER, "a two-force member from a pin on the body to a fixed point: a force along it", (
+        _NAME, _AT, Key("to", "text", None, "its other end, a point of [frame]", required=True), _LABEL), array=True),
+    PIN: KeyTable(PIN, "a pin to the frame: a force of unknown direction", (_NAME, _AT, _LABEL), array=True),
+    ROLLER: KeyTable(ROLLER, "a roller: a force along its normal", (
+        _NAME, _AT, Key("normal", "angle", None, "the direction it pushes the body", required=True), _LABEL),
+        array=True),
+    GUIDE: KeyTable(GUIDE, "a block in a fixed slot: a force square to the slot", (
+        _NAME, _AT, Key("angle", "angle", None, "the direction of the slot", required=True), _LABEL), array=True),
+}
+TABLES = (BODY_KEYS, FRAME_KEYS, LOAD_KEYS, COUPLE_KEYS, *SUPPORT_KEYS.values())
+"""The free-body family's key tables (:mod:`drafting.scene.keys`), as the reference lists them."""
 CONSTRUCTION_POINTS = ("K", "L", "I")
 """The points Culmann's method and three-force concurrency name on the space diagram."""
 CONSTRUCTION_FORCES = ("R", "F_KL")
@@ -71,10 +100,10 @@ class _FreeBodyReader:
     def fail(self, key: str, problem: str):
         return self.r.fail(key, problem)
 
-    def items(self, section: str, allowed: set[str], required: set[str]):
+    def items(self, section: str, keys: KeyTable):
         for i, t in enumerate(self.r.array(section), 1):
             k = f"{section}[{i}]"
-            self.r.table(k, allowed, required, value=t)
+            self.r.table(k, keys, value=t)
             yield k, t
 
     def force_name(self, key: str, value: Any) -> str:
@@ -108,7 +137,7 @@ class _FreeBodyReader:
         r, units = self.r, self.units
         if "body" not in r.data:
             raise self.fail("body", "is missing: give the body's points, e.g. [body.points] O = [0, 0]")
-        t = r.table("body", BODY_KEYS, {"points"})
+        t = r.table("body", BODY_KEYS)
         self.body = r.text("body.name", t["name"]) if "name" in t else "body"
         raw = t["points"]
         if not isinstance(raw, dict) or not raw:
@@ -152,7 +181,7 @@ class _FreeBodyReader:
         return body
 
     def loads(self):
-        for k, t in self.items("load", LOAD_KEYS, LOAD_KEYS):
+        for k, t in self.items("load", LOAD_KEYS):
             name = self.force_name(f"{k}.name", t["name"])
             at = self.body_point(f"{k}.at", t["at"])
             force = self.r.quantity(f"{k}.force", t["force"], "force", self.units)
@@ -162,7 +191,7 @@ class _FreeBodyReader:
             yield Load(name, 0, at, polar(force, angle))
 
     def couples(self):
-        for k, t in self.items("couple", COUPLE_KEYS, {"name", "torque"}):
+        for k, t in self.items("couple", COUPLE_KEYS):
             name = self.force_name(f"{k}.name", t["name"])
             torque = self.r.quantity(f"{k}.torque", t["torque"], "torque", self.units)
             torque = self.r.signed(f"{k}.sense", "torque", torque, t["torque"], t.get("sense"))
@@ -172,9 +201,7 @@ class _FreeBodyReader:
         out: list[Support] = []
         keys: list[str] = []
         for kind in SUPPORT_SECTIONS:
-            required = {"name", "at"} | ({"to"} if kind == MEMBER else {"normal"} if kind == ROLLER else
-                                         {"angle"} if kind == GUIDE else set())
-            for k, t in self.items(kind, SUPPORT_KEYS[kind], required):
+            for k, t in self.items(kind, SUPPORT_KEYS[kind]):
                 name = self.force_name(f"{k}.name", t["name"])
                 at = self.body_point(f"{k}.at", t["at"])
                 label = self.label(f"{k}.label", t)
@@ -203,4 +230,4 @@ class _FreeBodyReader:
         return tuple(out), keys
 
 
-__all__ = ["SECTIONS", "read_free_body"]
+__all__ = ["SECTIONS", "TABLES", "read_free_body"]

@@ -21,8 +21,8 @@ from constructions.gears.train_drawing import train_analysis
 
 from ..glue import construction_of, measured_of, model_if_asked
 from ..registry import Analysis, Family
-from .scene import (PAIR_SECTIONS, TRAIN_SECTIONS, GearPairScene, GearTrainScene, cases_check, pair_check,
-                    read_gear_pair, read_gear_train)
+from .scene import (PAIR_SECTIONS, PAIR_TABLES, TRAIN_SECTIONS, TRAIN_TABLES, GearPairScene, GearTrainScene,
+                    cases_check, pair_check, read_gear_pair, read_gear_train)
 
 PAIR_MODEL = "closed forms of the contact geometry (tangent lengths to the base circles)"
 TRAIN_MODEL = "pitch-point velocity matching and member equilibrium (linear systems)"
@@ -153,7 +153,7 @@ GEAR_PAIR = Family(
     model_name=model_if_asked("contact", PAIR_MODEL),
     notes=_pair_notes,
     scene_type=GearPairScene,
-    sections=PAIR_SECTIONS,
+    sections=PAIR_SECTIONS, keys=PAIR_TABLES,
     read=read_gear_pair,
     checks=("meshes",),
     default_analyses=("contact",),
@@ -274,7 +274,7 @@ GEAR_TRAIN = Family(
     scales=_train_scales,
     notes=_train_notes,
     scene_type=GearTrainScene,
-    sections=TRAIN_SECTIONS,
+    sections=TRAIN_SECTIONS, keys=TRAIN_TABLES,
     read=read_gear_train,
     checks=("cases",),
     default_analyses=("speeds",),

@@ -47,13 +47,68 @@ from constructions.gears.tooth import INCH, SYSTEMS, Gear, ToothSystem
 from constructions.gears.train_drawing import Case
 from constructions.gears.trains import FRAME, Given, Train, TrainGear, TrainMesh, layout, solve_train
 
+from ...scene.keys import Key, KeyTable
 from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.units import UnitError, to_si
 from ...scene.unitset import Units
 
 PAIR_SECTIONS = frozenset({"teeth", "pair"})
 TRAIN_SECTIONS = frozenset({"teeth", "gear", "mesh", "train", "case"})
-TEETH_KEYS = {"module", "diametral_pitch", "pressure_angle", "system", "addendum", "dedendum", "cutter_tip"}
+TEETH_KEYS = KeyTable("teeth", "the tooth system every gear of the scene is cut to", (
+    Key("module", "length", None, "the module m (pitch diameter / teeth); give it or diametral_pitch"),
+    Key("diametral_pitch", "number", None, "or the diametral pitch: teeth per inch of pitch diameter"),
+    Key("pressure_angle", "angle", None, "the pressure angle, 5 to 40 deg (14.5, 20 and 25 are usual)",
+        required=True),
+    Key("system", "text", "full depth", "the tooth proportions (full depth: addendum 1, dedendum 1.25 modules; "
+                                        "stub: 0.8 and 1)", choices=tuple(SYSTEMS)),
+    Key("addendum", "number", None, "or the addendum constant, in modules"),
+    Key("dedendum", "number", None, "and the dedendum constant, in modules"),
+    Key("cutter_tip", "number", None, "the rack cutter's tip radius in modules (default c / (1 - sin phi), "
+                                      "0.38 at 20 deg full depth): the fillet and undercut drawn"),
+))
+PAIR_KEYS = KeyTable("pair", "a pair in mesh: gear 1, the pinion, drives gear 2", (
+    Key("pinion", "whole number", None, "the pinion's teeth (gear 1, the driver)", required=True),
+    Key("gear", "whole number", None, "gear 2's teeth, or \"rack\"", required=True),
+    Key("centre_distance", "length", None, "the centre distance (for a rack: O1 to the rack's pitch line); "
+                                           "default: the standard one"),
+    Key("internal", "true/false", False, "gear 2 is an internal gear, a ring about the pinion"),
+    Key("speed", "angular velocity", None, "the pinion's speed (> 0): adds the pitch-line speed and the "
+                                           "sliding velocities at the start and end of contact"),
+))
+GEAR_KEYS = KeyTable("gear", "one gear of the train", (
+    Key("name", "text", None, "the gear's name, e.g. \"2\"", required=True),
+    Key("teeth", "whole number", None, "its number of teeth", required=True),
+    Key("shaft", "text", None, "the member it turns with (default: its name; gears on one shaft make a "
+                               "compound gear)"),
+    Key("carrier", "text", "frame", "the arm holding its axis (a planet's carrier)"),
+    Key("internal", "true/false", False, "an internal gear, a ring"),
+), array=True)
+MESH_KEYS = KeyTable("mesh", "two gears of the train in mesh", (
+    Key("gears", "list", None, "the two gears, e.g. [\"1\", \"2\"]", required=True),
+    Key("angle", "angle", None, "the direction from the first gear's centre to the pitch point (default 0, "
+                                "90 deg in a planetary train)"),
+), array=True)
+TRAIN_KEYS = KeyTable("train", "the train as a whole", (
+    Key("coaxial", "list", None, "pairs of shafts whose axes must coincide (a reverted train), e.g. "
+                                 "[[\"1\", \"4\"]]"),
+    Key("planets", "whole number", 1, "planets spaced equally round the carrier of a simple planetary train, "
+                                      "1 to 24: loads per planet; refused unless they assemble and clear"),
+))
+CASE_KEYS = KeyTable("case", "one way the train is driven (a planetary train's cases: which member is held)", (
+    Key("name", "text", None, "the case's name, e.g. \"carrier held\""),
+    Key("driven", "text", None, "the driven member (a shaft or the carrier)", required=True),
+    Key("speed", "angular velocity", None, "its speed, signed CCW positive or with sense", required=True),
+    Key("sense", "text", None, "the sense of a positive speed", choices=("ccw", "cw")),
+    Key("held", "text", None, "the member held still (a planetary train needs one: carrier, sun or ring)"),
+    Key("power", "power", None, "the power put in at the driven member (for torques and tooth loads)"),
+    Key("output", "text", None, "the member the power is taken off (with power)"),
+    Key("driven2", "text", None, "a differential: the second driven member (instead of held)"),
+    Key("speed2", "angular velocity", None, "the second driven member's speed (with driven2)"),
+    Key("sense2", "text", None, "the sense of a positive speed2", choices=("ccw", "cw")),
+), array=True)
+PAIR_TABLES = (TEETH_KEYS, PAIR_KEYS)
+TRAIN_TABLES = (TEETH_KEYS, GEAR_KEYS, MESH_KEYS, TRAIN_KEYS, CASE_KEYS)
+"""The gear families' key tables (:mod:`drafting.scene.keys`), as the reference lists them."""
 MAX_TEETH = 10000
 MAX_GEARS = 30
 
@@ -108,7 +163,7 @@ def read_teeth(r: SceneReader, units: Units) -> ToothSystem:
     if "teeth" not in r.data:
         raise r.fail("teeth", "is missing: give the module (or diametral pitch) and the pressure angle, e.g. "
                               "[teeth] module = \"5 mm\", pressure_angle = \"20 deg\"")
-    t = r.table("teeth", TEETH_KEYS, {"pressure_angle"})
+    t = r.table("teeth", TEETH_KEYS)
     if ("module" in t) == ("diametral_pitch" in t):
         raise r.fail("teeth.module", "give either module (SI, e.g. \"5 mm\") or diametral_pitch (teeth per inch), "
                                      "one of them")
@@ -157,7 +212,7 @@ def read_gear_pair(r: SceneReader, units: Units) -> dict:
     s = read_teeth(r, units)
     if "pair" not in r.data:
         raise r.fail("pair", "is missing: give the teeth, e.g. [pair] pinion = 20, gear = 40 (or gear = \"rack\")")
-    t = r.table("pair", {"pinion", "gear", "centre_distance", "internal", "speed"}, {"pinion", "gear"})
+    t = r.table("pair", PAIR_KEYS)
     internal = t.get("internal", False)
     if not isinstance(internal, bool):
         raise r.fail("pair.internal", "must be true (gear 2 is an internal gear, a ring) or false")
@@ -199,7 +254,7 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
         raise r.fail("gear", f"{len(items)} gears; a train may have at most {MAX_GEARS}")
     for i, t in enumerate(items, 1):
         k = f"gear[{i}]"
-        r.table(k, {"name", "teeth", "shaft", "carrier", "internal"}, {"name", "teeth"}, value=t)
+        r.table(k, GEAR_KEYS, value=t)
         name = _member(r, f"{k}.name", t["name"])
         if name in names:
             raise r.fail(f"{k}.name", f"{name} is already the name of a gear")
@@ -215,7 +270,7 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
     meshed: dict[frozenset, str] = {}          # a pair of gears -> the [[mesh]] that joined them
     for i, t in enumerate(r.array("mesh"), 1):
         k = f"mesh[{i}]"
-        r.table(k, {"gears", "angle"}, {"gears"}, value=t)
+        r.table(k, MESH_KEYS, value=t)
         g = t["gears"]
         if not (isinstance(g, list) and len(g) == 2 and all(isinstance(x, str) for x in g)) or g[0] == g[1]:
             raise r.fail(f"{k}.gears", "must name two gears, e.g. [\"1\", \"2\"]")
@@ -231,7 +286,7 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
         meshes.append(TrainMesh(g[0], g[1], ang))
     if not meshes:
         raise r.fail("mesh", "is missing: say which gears mesh, e.g. [[mesh]] gears = [\"1\", \"2\"]")
-    tr = r.table("train", {"coaxial", "planets"})
+    tr = r.table("train", TRAIN_KEYS)
     coaxial = []
     for pair in tr.get("coaxial", []):
         if not (isinstance(pair, list) and len(pair) == 2 and all(isinstance(x, str) for x in pair)):
@@ -265,8 +320,7 @@ def read_gear_train(r: SceneReader, units: Units) -> dict:
         raise r.fail("case", "is missing: say what drives the train, e.g. [[case]] driven = \"1\", speed = \"1000 rpm\"")
     for i, t in enumerate(items, 1):
         k = f"case[{i}]"
-        r.table(k, {"name", "driven", "speed", "sense", "held", "power", "output", "driven2", "speed2", "sense2"},
-                {"driven", "speed"}, value=t)
+        r.table(k, CASE_KEYS, value=t)
         name = r.text(f"{k}.name", t["name"]) if "name" in t else (f"case {i}" if len(items) > 1 else "the train")
         driven = _known_member(r, f"{k}.driven", t["driven"], train)
         w = r.quantity(f"{k}.speed", t["speed"], "angular velocity", units)
@@ -345,5 +399,5 @@ def _known_member(r, key: str, value: Any, train: Train) -> str:
     return v
 
 
-__all__ = ["PAIR_SECTIONS", "TRAIN_SECTIONS", "GearPairScene", "GearTrainScene", "cases_check", "pair_check",
+__all__ = ["PAIR_SECTIONS", "PAIR_TABLES", "TRAIN_SECTIONS", "TRAIN_TABLES", "GearPairScene", "GearTrainScene", "cases_check", "pair_check",
            "read_gear_pair", "read_gear_train"]

@@ -29,7 +29,7 @@ from ..registry import Analysis, Family
 from .conventions import conventions
 from .given import given_lines
 from .output import linkage_json, transmission_at_pose
-from .scene import SECTIONS, LinkageScene, assembly_check, read_linkage
+from .scene import SECTIONS, TABLES, LinkageScene, assembly_check, read_linkage
 from .vary import read_vary
 
 
@@ -335,7 +335,7 @@ LINKAGE = Family(
     scales=_scales,
     notes=_notes,
     scene_type=LinkageScene,
-    sections=SECTIONS,
+    sections=SECTIONS, keys=TABLES,
     read=read_linkage,
     checks=("plan",),
     vary=read_vary,

@@ -18,12 +18,54 @@ from constructions.geometry import Vec
 from constructions.mechanisms.assembly import assembly_plan
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 
+from ...scene.effect_keys import TABLES as EFFECT_TABLES
 from ...scene.effects import SECTIONS as EFFECT_SECTIONS, read_effects
+from ...scene.keys import Key, KeyTable
 from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.unitset import Units
 
 
 SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"}) | EFFECT_SECTIONS
+
+FRAME_KEYS = KeyTable("frame", "the fixed pivots, by name", (
+    Key("<name>", "point", None, "a fixed pivot [x, y], e.g. O1 = [0, 0]"),
+), named=True)
+LINK_KEYS = KeyTable("link", "a rigid link between two joints", (
+    Key("number", "whole number", None, "the link's number as in the notes (1: the input crank)", required=True),
+    Key("joints", "list", None, "its two joints by name, e.g. [\"B\", \"C\"]", required=True),
+    Key("length", "length", None, "the distance between them", required=True),
+), array=True)
+POINT_KEYS = KeyTable("point", "a point fixed to a link (its velocity and acceleration images)", (
+    Key("name", "text", None, "the point's name", required=True),
+    Key("link", "whole number", None, "the link it belongs to", required=True),
+    Key("from", "text", None, "measured from this joint of the link ...", required=True),
+    Key("distance", "length", None, "... this far ...", required=True),
+    Key("angle", "angle", "0 deg", "... at this angle CCW from the link's line (from -> its other joint)"),
+), array=True)
+SLIDER_KEYS = KeyTable("slider", "a joint sliding along a fixed guide, or in the slot of a moving link", (
+    Key("number", "whole number", None, "the block's link number (needed on a fixed guide; omit it for a pin "
+                                        "in a slot)"),
+    Key("joint", "text", None, "the joint that slides", required=True),
+    Key("through", "point", None, "a fixed guide: a point it passes through"),
+    Key("angle", "angle", "0 deg", "the guide's direction (a slot's: from its link's line)"),
+    Key("on", "whole number", None, "a slot: the moving link it is cut in"),
+    Key("offset", "length", 0, "a slot: how far it passes to the right of its link's first joint"),
+), array=True)
+INPUT_KEYS = KeyTable("input", "the driving crank and its motion", (
+    Key("link", "whole number", None, "the crank: joins a fixed pivot to a moving joint", required=True),
+    Key("angle", "angle", None, "the crank angle, CCW from +x", required=True),
+    Key("omega", "angular velocity", None, "its angular velocity (signed, CCW +; 0: at rest); or tip_speed"),
+    Key("tip_speed", "velocity", None, "or the speed of the crank tip, positive, with sense"),
+    Key("sense", "text", None, "the sense of a positive omega or tip_speed", choices=("ccw", "cw")),
+    Key("alpha", "angular acceleration", 0, "its angular acceleration (signed, CCW +)"),
+    Key("torque", "torque", None, "or the torque on the crank (signed, CCW +): alpha follows from the masses"),
+))
+ASSEMBLY_KEYS = KeyTable("assembly", "which of the two crossings each constructed joint takes", (
+    Key("<joint>", "text", None, "\"left of B->O2\" / \"right of B->O2\" (a four-bar), \"ahead of B\" / "
+                                 "\"behind B\" (along a guide)"),
+), named=True)
+TABLES = (FRAME_KEYS, LINK_KEYS, POINT_KEYS, SLIDER_KEYS, INPUT_KEYS, ASSEMBLY_KEYS, *EFFECT_TABLES)
+"""The linkage family's key tables (:mod:`drafting.scene.keys`), as the reference lists them."""
 
 
 @dataclass(frozen=True)
@@ -63,7 +105,7 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
     links: list[Link] = []
     for i, t in enumerate(r.array("link"), 1):
         k = f"link[{i}]"
-        r.table(k, {"number", "joints", "length"}, {"number", "joints", "length"}, value=t)
+        r.table(k, LINK_KEYS, value=t)
         n = r.number(f"{k}.number", t["number"])
         joints = t["joints"]
         if not (isinstance(joints, list) and len(joints) == 2):
@@ -84,8 +126,7 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
     attached: list[Attached] = []
     for i, t in enumerate(r.array("point"), 1):
         k = f"point[{i}]"
-        r.table(k, {"name", "link", "from", "distance", "angle"}, {"name", "link", "from", "distance"},
-                   value=t)
+        r.table(k, POINT_KEYS, value=t)
         nm = r.name(f"{k}.name", t["name"])
         if nm in ground:
             raise r.fail(f"{k}.name", f"{nm} is a fixed pivot")
@@ -109,7 +150,7 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
     slides: list[Slide] = []
     for i, t in enumerate(r.array("slider"), 1):
         k = f"slider[{i}]"
-        r.table(k, {"number", "joint", "through", "angle", "on", "offset"}, {"joint"}, value=t)
+        r.table(k, SLIDER_KEYS, value=t)
         n = None
         if "number" in t:
             n = r.number(f"{k}.number", t["number"])
@@ -153,7 +194,7 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
         if sl.joint not in points and sl.number is None:
             raise r.fail(f"slider[{i}].number", f"joint {sl.joint} is on no link, so it needs a block (a number)")
 
-    inp = r.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha", "torque"}, {"link", "angle"})
+    inp = r.table("input", INPUT_KEYS)
     crank_no = r.number("input.link", inp["link"])
     crank = next((x for x in links if x.number == crank_no), None)
     if crank is None:
