@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import sweep_kernels
+from .analytic.inverse import four_bar_inverse, slider_crank_inverse
 from .mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines, assembly_plan)
 from .mechanisms.model import Mechanism
 from .motion_arrays import XY, MotionArrays
@@ -109,3 +110,30 @@ def closed_form_state(m: Mechanism, th: np.ndarray, omega: float, alpha: float, 
     ok = np.asarray(s.assembles, dtype=bool).reshape(n)
     fixed_links = {crank.link.number} | ({d.slide.number} if isinstance(d, CircleAndGuide) else set())
     return ClosedFormState(th, pos, vel, acc, ang, alp, ok, model, frozenset(fixed_links))
+
+
+def closed_form_inverse(m: Mechanism, target) -> tuple[float, ...] | None:
+    """The crank angles (rad, in [0, 2 pi), ascending) at which the plain slider-crank's slider, or the
+    plain four-bar's rocker, stands at ``target`` (a :class:`~constructions.mechanisms.inverse_position.SliderAt`
+    or ``OutputAngle``), by the closed forms of :mod:`constructions.analytic.inverse`; None when ``m`` is
+    no plain slider-crank or four-bar, or the target is not its slider or rocker."""
+    parts = closed_form_parts(m)
+    if parts is None:
+        return None
+    crank, d, _ = parts
+    O1 = m.ground[crank.pivot].as_tuple()
+    if isinstance(d, CircleAndGuide):
+        if getattr(target, "block", None) != d.slide.number:
+            return None
+        return slider_crank_inverse(target.position, crank_pivot=O1, crank=crank.link.length,
+                                    coupler=d.link.length, guide_point=d.slide.through.as_tuple(),
+                                    guide_angle=d.slide.angle, branch=d.branch.sign)
+    b = crank.tip
+    arms = {d.first: d.link_a, d.second: d.link_b}
+    o2 = next(c for c in arms if c in m.ground)
+    rocker = arms[o2]
+    if getattr(target, "link", None) != rocker.number:
+        return None
+    sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
+    return four_bar_inverse(target.angle, crank_pivot=O1, rocker_pivot=m.ground[o2].as_tuple(),
+                            crank=crank.link.length, coupler=arms[b].length, rocker=rocker.length, branch=sign)

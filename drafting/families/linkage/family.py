@@ -28,6 +28,7 @@ if TYPE_CHECKING:
 from ..registry import Analysis, Family
 from .conventions import conventions
 from .given import given_lines
+from .inverse import inverse_analytic, inverse_measured, inverse_notes
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, LinkageScene, assembly_check, read_linkage
 from .vary import read_vary
@@ -187,6 +188,7 @@ def _measured(study) -> list:
             out += r.measured(m)
     if study.scene.torque is not None:
         out.append(Measured(f"alpha_{m.crank}", "angular acceleration", study.get("crank alpha")))
+    out += inverse_measured(study.scene)
     f = study.result("forces")
     if f is not None:
         got = f.measured(m)
@@ -221,6 +223,7 @@ def _analytic_values(study):
                 out[x.name + INSTANT_CENTRES] = out[x.name]
     if study.scene.torque is not None:
         out[f"alpha_{study.scene.mechanism.crank}"] = study.get("alpha check")
+    out.update(inverse_analytic(study.scene))
     if study.asked("forces"):
         eq, vw = study.get("force check")
         out.update(eq.values(study.scene.mechanism))
@@ -251,6 +254,7 @@ def _notes(study) -> tuple[str, ...]:
         w.append(f"\u03b1_{n} follows from the torque on the crank, T_{n} = {u.format('torque', s.torque)}"
                  + (", released from rest" if s.omega == 0 else "")
                  + ": its first column from the equilibrium of all links, its second by virtual work.")
+    w += inverse_notes(s)
     k = study.get("classification")
     if k is not None:
         line = k.summary(lambda v: s.units.format("length", v))
