@@ -72,7 +72,7 @@ class InversePosition:
 
     def describe(self, fmt: Formatter = si_format) -> str:
         """One sentence: the solutions, or why there is none."""
-        what = _what(self.target, fmt)
+        what = describe_target(self.target, fmt)
         if self.solutions:
             listed = ", ".join(fmt("angle", t) + (" (a limit position)" if touch else "")
                                for t, touch in zip(self.solutions, self.touching))
@@ -81,11 +81,16 @@ class InversePosition:
         if not self.reach:
             return f"No position: the mechanism assembles at no crank angle, so nothing puts {what}."
         spans = " and ".join(f"{fmt(self.kind, lo)} to {fmt(self.kind, hi)}" for lo, hi in self.reach)
-        moves = "slides" if self.kind == "length" else "swings"
-        return f"No position: over a turn of the crank it {moves} only from {spans}, so no crank angle puts {what}."
+        t = self.target
+        if isinstance(t, SliderAt):
+            moves, goal = f"block {t.block} travels only from {spans} along its guide", fmt("length", t.position)
+        else:
+            moves, goal = f"link {t.link} swings only from {spans}", fmt("angle", t.angle)
+        return f"No position: over a turn of the crank {moves}, so no crank angle puts it at {goal}."
 
 
-def _what(t: Target, fmt: Formatter) -> str:
+def describe_target(t: Target, fmt: Formatter = si_format) -> str:
+    """The target in words: "block 3 at 120 mm along its guide", "link 3 at 100 deg"."""
     if isinstance(t, SliderAt):
         return f"block {t.block} at {fmt('length', t.position)} along its guide"
     return f"link {t.link} at {fmt('angle', t.angle)}"
@@ -133,10 +138,8 @@ def inverse_position(m: Mechanism, target: Target, *, plan: tuple[PlanStep, ...]
         return v - goal if kind == "length" else math.remainder(v - goal, TURN)
 
     def residual(theta: float) -> float:
-        try:
-            return diff(quantity(m, target, locate(m, theta, plan).positions))
-        except DegenerateInput:
-            return math.nan
+        v = _value(m, target, plan, theta)
+        return diff(v) if math.isfinite(v) else math.nan
 
     r = np.array([diff(v) if math.isfinite(v) else math.nan for v in values])
     found: list[tuple[float, bool]] = []
@@ -159,7 +162,15 @@ def inverse_position(m: Mechanism, target: Target, *, plan: tuple[PlanStep, ...]
                     found.append((t, True))
     found = _merge(sorted((float(t) % TURN, touch) for t, touch in found))
     return InversePosition(target, tuple(t for t, _ in found), tuple(x for _, x in found),
-                           _reach(values, kind), kind)
+                           _reach(values, kind, grid, lambda t: _value(m, target, plan, t)), kind)
+
+
+def _value(m: Mechanism, target: Target, plan, theta: float) -> float:
+    """The quantity on the construction at crank angle ``theta``; NaN where it does not assemble."""
+    try:
+        return quantity(m, target, locate(m, theta, plan).positions)
+    except DegenerateInput:
+        return math.nan
 
 
 MERGE = 1e-6
@@ -230,27 +241,40 @@ def _golden(f, a: float, b: float) -> tuple[float, float]:
     return x, f(x)
 
 
-def _reach(values: np.ndarray, kind: str) -> tuple[tuple[float, float], ...]:
-    """The ranges the sampled quantity covers, one per stretch of assembling samples (angles unwrapped)."""
+def _reach(values: np.ndarray, kind: str, grid: np.ndarray, value_at) -> tuple[tuple[float, float], ...]:
+    """The ranges the quantity covers, one per stretch of assembling samples (angles unwrapped), each end
+    refined on the construction (golden section about the sample where it is reached)."""
+    n = values.size
     ok = np.isfinite(values)
     if not ok.any():
         return ()
-    if ok.all():
-        runs = [values]
-    else:
-        start = int(np.flatnonzero(~ok)[0])
-        v = np.roll(values, -start)
-        runs, cur = [], []
-        for x in v:
-            if math.isfinite(x):
-                cur.append(x)
-            elif cur:
-                runs.append(np.array(cur))
-                cur = []
-        if cur:
-            runs.append(np.array(cur))
+    start = 0 if ok.all() else int(np.flatnonzero(~ok)[0])
+    runs: list[list[int]] = []
+    cur: list[int] = []
+    for i in ((start + k) % n for k in range(n)):
+        if ok[i]:
+            cur.append(i)
+        elif cur:
+            runs.append(cur)
+            cur = []
+    if cur:
+        runs.append(cur)
+    step = TURN / n
     out = []
     for run in runs:
-        u = np.unwrap(run) if kind == "angle" else run
-        out.append((float(u.min()), float(u.max())))
+        v = values[run]
+        u = np.unwrap(v) if kind == "angle" else v
+        ends = []
+        for sign, i in ((1.0, int(np.argmin(u))), (-1.0, int(np.argmax(u)))):
+            t0, ref = float(grid[run[i]]), float(u[i])
+
+            def f(t: float, ref=ref, sign=sign) -> float:
+                q = value_at(t)
+                if not math.isfinite(q):
+                    return math.inf
+                return sign * (ref + (math.remainder(q - ref, TURN) if kind == "angle" else q - ref))
+            lo, hi = (t0 - step, t0 + step) if 0 < i < len(run) - 1 else (t0, t0)
+            fx = _golden(f, lo, hi)[1] if hi > lo else sign * ref
+            ends.append(sign * min(fx, sign * ref))        # never worse than the sample itself
+        out.append((ends[0], ends[1]))
     return tuple(out)

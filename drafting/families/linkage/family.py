@@ -16,6 +16,7 @@ from constructions.forces.effects import NO_EFFECTS
 from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
+from constructions.mechanisms.inverse_construction import inverse_step, with_inverse
 from constructions.mechanisms.pose import locate
 from constructions.quantities import Measured
 from constructions.polygons.acceleration import acceleration_polygon
@@ -47,6 +48,9 @@ def _loops(study):
 def _position(study):
     s = study.scene
     pose = locate(s.mechanism, s.angle, study.get("plan"), fmt=s.units.format)
+    if getattr(s, "inverse", None) is not None:
+        step = inverse_step(s.mechanism, s.inverse, study.get("plan"), s.solution)
+        pose = replace(pose, construction=with_inverse(pose.construction, step))
     if s.dimensions:
         from constructions.dimensions import dimension_links
         pose = replace(pose, construction=dimension_links(s.mechanism, pose))

@@ -4,7 +4,11 @@ in the scene's units."""
 
 from __future__ import annotations
 
+from constructions.mechanisms.inverse_position import describe_target
+
 from ...scene.unitset import direction_deg
+
+_ORDINAL = {1: "first", 2: "second", 3: "third", 4: "fourth"}
 
 
 def _sense(w: float) -> str:
@@ -39,6 +43,12 @@ def given_lines(study) -> list[str]:
             out.append(f"The {block} slides in a slot of link {sl.on}.")
     crank = m.link(m.crank)
     motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) at {f('angle', s.angle)}"]
+    inv = getattr(s, "inverse", None)
+    if inv is not None:
+        motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) turned to put "
+                  f"{describe_target(inv.target, s.units.format)}"
+                  + (f" (the {_ORDINAL.get(s.solution, f'{s.solution}th')} crank angle from 0\u00b0 "
+                     f"counter-clockwise)" if len(inv.solutions) > 1 else "")]
     if s.omega:
         motion.append(f"\u03c9_{crank.number} = {f('angular velocity', abs(s.omega))} {_sense(s.omega)}")
     else:
