@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import sweep_kernels
-from .analytic.inverse import four_bar_inverse, slider_crank_inverse
+from .analytic.inverse import four_bar_inverse, inverted_slider_crank_inverse, slider_crank_inverse
 from .mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines, assembly_plan)
 from .mechanisms.model import Mechanism
 from .motion_arrays import XY, MotionArrays
@@ -117,6 +117,9 @@ def closed_form_inverse(m: Mechanism, target) -> tuple[float, ...] | None:
     plain four-bar's rocker, stands at ``target`` (a :class:`~constructions.mechanisms.inverse_position.SliderAt`
     or ``OutputAngle``), by the closed forms of :mod:`constructions.analytic.inverse`; None when ``m`` is
     no plain slider-crank or four-bar, or the target is not its slider or rocker."""
+    inverted = _inverted_slider_crank(m, target)
+    if inverted is not None:
+        return inverted
     parts = closed_form_parts(m)
     if parts is None:
         return None
@@ -137,3 +140,20 @@ def closed_form_inverse(m: Mechanism, target) -> tuple[float, ...] | None:
     sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
     return four_bar_inverse(target.angle, crank_pivot=O1, rocker_pivot=m.ground[o2].as_tuple(),
                             crank=crank.link.length, coupler=arms[b].length, rocker=rocker.length, branch=sign)
+
+
+def _inverted_slider_crank(m: Mechanism, target) -> tuple[float, ...] | None:
+    """The closed form when ``target`` is the cylinder length of an inverted slider-crank: the block on the
+    crank tip slides in a slot (offset 0, along its link) of a link pivoted at its first joint."""
+    s = m.blocks().get(getattr(target, "block", None))
+    if s is None or s.on is None or s.offset != 0.0 or s.angle != 0.0:
+        return None
+    crank = m.link(m.crank)
+    pivot = m.crank_pivot()
+    first = m.link(s.on).joints[0]
+    branch = m.branches.get(s.joint)
+    if crank.other(pivot) != s.joint or first not in m.ground or branch is None or branch.reference != (first,):
+        return None
+    return inverted_slider_crank_inverse(target.position, crank_pivot=m.ground[pivot].as_tuple(),
+                                         crank=crank.length, slot_pivot=m.ground[first].as_tuple(),
+                                         branch=branch.sign)

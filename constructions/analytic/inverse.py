@@ -1,7 +1,9 @@
 """The inverse position problem in closed form: the crank angles that put a slider-crank's slider at a
 given stroke position, or a four-bar's output link at a given angle.
 
-Both are one circle-circle crossing once the far joint is placed: the slider's pin C stands at
+An inverted slider-crank (a cylinder pivoted at O3 whose rod is pinned to the crank tip B) is one
+crossing too: B on the crank circle and on the circle of radius |O3B| = the cylinder's length about O3.
+The others are one circle-circle crossing once the far joint is placed: the slider's pin C stands at
 G + s e on its guide (the four-bar's C at O2 + r3 (cos theta3, sin theta3)), and the crank tip B lies on
 the crank circle (O1, r1) and on the coupler circle (C, l).  With w = C - O1, d = |w|, u = w / d and
 n = k x u, B = O1 + a u + h_s n with a = (d^2 + r1^2 - l^2) / (2 d) and the half-chord
@@ -20,7 +22,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["four_bar_inverse", "slider_crank_inverse"]
+__all__ = ["four_bar_inverse", "inverted_slider_crank_inverse", "slider_crank_inverse"]
 
 
 def _crank_angles(o1: tuple[float, float], r1: float, c: tuple[float, float], l: float) -> list[tuple[float, tuple[float, float]]]:
@@ -72,3 +74,15 @@ def four_bar_inverse(output_angle: float, *, crank_pivot, rocker_pivot, crank: f
         if side == 0.0 or (side > 0) == (branch > 0):
             keep.append(th)
     return tuple(sorted(keep))
+
+
+def inverted_slider_crank_inverse(position: float, *, crank_pivot, crank: float, slot_pivot, branch: int
+                                  ) -> tuple[float, ...]:
+    """The crank angles (rad, in [0, 2 pi), ascending) at which the crank tip B stands ``position`` (m) along
+    the slot of a link pivoted at ``slot_pivot`` O3 (the slot through O3: a hydraulic cylinder pivoted at O3
+    whose rod is pinned at B), i.e. |O3B| = |position|: the crank circle (O1, r1) crossing the circle
+    (O3, |position|).  The slot runs from O3 towards B on ``branch`` +1 (B ahead of O3), away on -1, so
+    only a position of that sign is reached."""
+    if position == 0.0 or (position > 0) != (branch > 0):
+        return ()
+    return tuple(sorted(th for th, _ in _crank_angles(crank_pivot, crank, slot_pivot, abs(position))))

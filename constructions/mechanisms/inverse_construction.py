@@ -17,70 +17,79 @@ from ..entities import Arc, Circle, Diagram, Point, Role
 from ..geometry import Vec
 from ..record import Construction, Step, StepKind, Value
 from .assembly import CircleAndGuide, CrankTip, PlanStep, TwoCircles
-from .inverse_position import InversePosition, SliderAt, describe_target
-from .model import Link, Mechanism
+from .inverse_position import InversePosition, SliderAt
+from .model import Mechanism
 
 SPAN = math.radians(30)
 """The arc of the coupler's length drawn about the wanted joint, either side of each crossing."""
 
 
-def _coupler(m: Mechanism, inv: InversePosition, plan: tuple[PlanStep, ...]) -> tuple[str, Link, Vec] | None:
-    """(wanted joint, the coupler joining it to the crank tip, where the joint stands) when the target's
-    joint is one coupler from the crank tip; else None."""
+def _locus(m: Mechanism, inv: InversePosition, plan: tuple[PlanStep, ...]) -> tuple[str, Vec, float, str] | None:
+    """(the name of the point the crank tip's locus is drawn about, where it stands, the locus' radius,
+    the words that put it there) when the crank tip is one circle away from the target; else None."""
     crank = next(s for s in plan if isinstance(s, CrankTip))
     t = inv.target
+    if isinstance(t, SliderAt):
+        sl = m.blocks()[t.block]
+        if sl.on is not None:                   # a cylinder pivoted at the slotted link's first joint
+            first = m.link(sl.on).joints[0]
+            if sl.joint == crank.tip and first in m.ground and sl.offset == 0.0 and sl.angle == 0.0:
+                return first, m.ground[first], abs(t.position), f"{first}{crank.tip} = $s about {first}"
+            return None
+        for s in plan:
+            if isinstance(s, CircleAndGuide) and s.centre == crank.tip and s.joint == sl.joint:
+                at = sl.through + Vec.polar(t.position, sl.angle)
+                return (s.joint, at, s.link.length,
+                        f"{s.link.label} = $l about {s.joint}, marked at $s along the guide,")
+        return None
     for s in plan:
-        if isinstance(t, SliderAt) and isinstance(s, CircleAndGuide) and s.centre == crank.tip:
-            sl = m.blocks()[t.block]
-            if s.joint == sl.joint and s.slide.on is None:
-                return s.joint, s.link, sl.through + Vec.polar(t.position, sl.angle)
-        if not isinstance(t, SliderAt) and isinstance(s, TwoCircles):
+        if isinstance(s, TwoCircles):
             arms = {s.first: s.link_a, s.second: s.link_b}
             if crank.tip in arms and any(c in m.ground and arms[c].number == t.link for c in arms):
                 o2 = next(c for c in arms if c in m.ground)
-                r3 = s.radius_b if o2 == s.second and s.radius_b else s.radius_a if o2 == s.first and s.radius_a \
-                    else arms[o2].length
-                return s.joint, arms[crank.tip], m.ground[o2] + Vec.polar(r3, t.angle)
+                at = m.ground[o2] + Vec.polar(arms[o2].length, t.angle)
+                return (s.joint, at, arms[crank.tip].length,
+                        f"{arms[crank.tip].label} = $l about {s.joint}, with link {t.link} drawn at $phi,")
     return None
+
+
+PRIMES = ("", "'", "''", "'''")
 
 
 def inverse_step(m: Mechanism, inv: InversePosition, plan: tuple[PlanStep, ...], drawn: int) -> Step:
     """The step that finds the crank angles; ``drawn`` (from 1) is the solution the sheet draws."""
     crank = next(s for s in plan if isinstance(s, CrankTip))
     O1 = m.ground[crank.pivot]
-    angles = {f"t{i}": Value("angle", t) for i, t in enumerate(inv.solutions, 1)}
-    listed = ", ".join(f"${k}" for k in angles)
-    found = _coupler(m, inv, plan)
+    t = inv.target
+    values = {f"t{i}": Value("angle", th) for i, th in enumerate(inv.solutions, 1)}
+    listed = ", ".join(f"${k}" for k in values)
+    if isinstance(t, SliderAt):
+        values["s"] = Value("length", t.position)
+        what = f"block {t.block} at $s along {inv.along}"
+    else:
+        values["phi"] = Value("angle", t.angle)
+        what = f"link {t.link} at $phi"
+    found = _locus(m, inv, plan)
     if found is None:
-        return Step(f"The crank angles that put {describe_target(inv.target)}: turn the crank on the construction "
-                    f"until it does -- {listed}; draw solution {drawn}.", values=tuple(angles.items()),
-                    kind=StepKind.GIVEN)
-    joint, coupler, C = found
-    r, l = crank.link.length, coupler.length
-    primes = ["", "'", "''", "'''"]
+        return Step(f"The crank angles that put {what}: turn the crank on the construction until it does -- "
+                    f"{listed}; draw solution {drawn}.", values=tuple(values.items()), kind=StepKind.GIVEN)
+    name, C, radius, words = found
+    values |= {"l": Value("length", radius), "r": Value("length", crank.link.length)}
     tip = crank.tip
-    marks: list = [Circle("inverse crank circle", Role.PATH, Diagram.SPACE, O1, r),
-                   Point(f"inverse {joint}", Role.LABEL, Diagram.SPACE, C)]
+    marks: list = [Circle("inverse crank circle", Role.PATH, Diagram.SPACE, O1, crank.link.length),
+                   Point(f"inverse {name}", Role.LABEL, Diagram.SPACE, C)]
     order = [drawn - 1] + [i for i in range(len(inv.solutions)) if i != drawn - 1]
     for n, i in enumerate(order):
-        B = O1 + Vec.polar(r, inv.solutions[i])
+        B = O1 + Vec.polar(crank.link.length, inv.solutions[i])
         a = (B - C).angle()
-        marks.append(Arc(f"inverse arc {i + 1}", Role.PATH, Diagram.SPACE, C, l, a - SPAN / 2, a + SPAN / 2))
+        marks.append(Arc(f"inverse arc {i + 1}", Role.PATH, Diagram.SPACE, C, radius, a - SPAN / 2, a + SPAN / 2))
         if n:
-            marks.append(Point(f"inverse {tip}{primes[min(n, 3)]}", Role.LABEL, Diagram.SPACE, B,
-                               f"{tip}{primes[min(n, 3)]}"))
-    if isinstance(inv.target, SliderAt):
-        where = f"Mark {joint} at $s along the guide"
-        values = {"s": Value("length", inv.target.position)}
-    else:
-        where = f"Draw link {inv.target.link} at $phi: its end {joint}"
-        values = {"phi": Value("angle", inv.target.angle)}
-    others = "".join(f" and {tip}{primes[min(n, 3)]}" for n in range(1, len(order)))
-    words = (f"{where}; swing {coupler.label} = $l about {joint} to cut the crank circle ({crank.link.label} = "
-             f"$r about {crank.pivot}) at {tip}{others}: \u03b8_{crank.link.number} = {listed}. Draw solution "
-             f"{drawn}.")
-    values |= {"l": Value("length", l), "r": Value("length", r)} | angles
-    return Step(words, entities=tuple(marks), values=tuple(values.items()), kind=StepKind.GIVEN)
+            marks.append(Point(f"inverse {tip}{PRIMES[min(n, 3)]}", Role.LABEL, Diagram.SPACE, B,
+                               f"{tip}{PRIMES[min(n, 3)]}"))
+    others = "".join(f" and {tip}{PRIMES[min(n, 3)]}" for n in range(1, len(order)))
+    text = (f"To put {what}: swing {words} to cut the crank circle ({crank.link.label} = $r about "
+            f"{crank.pivot}) at {tip}{others}: \u03b8_{crank.link.number} = {listed}. Draw solution {drawn}.")
+    return Step(text, entities=tuple(marks), values=tuple(values.items()), kind=StepKind.GIVEN)
 
 
 def with_inverse(c: Construction, step: Step) -> Construction:

@@ -12,7 +12,8 @@ forms of a plain slider-crank and four-bar (:mod:`constructions.analytic.inverse
 :func:`constructions.closed_forms.closed_form_inverse`) check it.
 
 Positions: a block's position is measured along its fixed guide from the guide's ``through`` point, in
-the guide's direction; a link's angle is the direction from its fixed pivot to its other base joint (or,
+the guide's direction, or along the slot it runs in from the foot of the slotted link's first joint (a
+hydraulic cylinder's length, pin to pin, when the barrel is pivoted at that joint); a link's angle is the direction from its fixed pivot to its other base joint (or,
 for a link with no fixed pivot, from its first base joint to its second), CCW from +x, as the crank's.
 """
 
@@ -29,7 +30,7 @@ from ..formatting import Formatter, si_format
 from ..geometry import Vec
 from ..sweep import sweep
 from .assembly import PlanStep, assembly_plan
-from .model import Mechanism
+from .model import Mechanism, slide_line
 from .pose import locate
 
 TURN = 2 * math.pi
@@ -39,7 +40,8 @@ SAMPLES = 720
 
 @dataclass(frozen=True, slots=True)
 class SliderAt:
-    """Block ``block`` (on a fixed guide) at ``position`` (m) along its guide from the guide's point."""
+    """Block ``block`` at ``position`` (m) along its fixed guide from the guide's point, or along its slot from
+    the foot of the slotted link's first joint."""
 
     block: int
     position: float
@@ -69,10 +71,11 @@ class InversePosition:
     touching: tuple[bool, ...]
     reach: tuple[tuple[float, float], ...]
     kind: str                     # "length" (a slider position) or "angle" (a link's angle)
+    along: str = "its guide"      # what a block slides along: "its guide" or "the slot of link 3"
 
     def describe(self, fmt: Formatter = si_format) -> str:
         """One sentence: the solutions, or why there is none."""
-        what = describe_target(self.target, fmt)
+        what = describe_target(self.target, fmt, self.along)
         if self.solutions:
             listed = ", ".join(fmt("angle", t) + (" (a limit position)" if touch else "")
                                for t, touch in zip(self.solutions, self.touching))
@@ -83,16 +86,16 @@ class InversePosition:
         spans = " and ".join(f"{fmt(self.kind, lo)} to {fmt(self.kind, hi)}" for lo, hi in self.reach)
         t = self.target
         if isinstance(t, SliderAt):
-            moves, goal = f"block {t.block} travels only from {spans} along its guide", fmt("length", t.position)
+            moves, goal = f"block {t.block} travels only from {spans} along {self.along}", fmt("length", t.position)
         else:
             moves, goal = f"link {t.link} swings only from {spans}", fmt("angle", t.angle)
         return f"No position: over a turn of the crank {moves}, so no crank angle puts it at {goal}."
 
 
-def describe_target(t: Target, fmt: Formatter = si_format) -> str:
+def describe_target(t: Target, fmt: Formatter = si_format, along: str = "its guide") -> str:
     """The target in words: "block 3 at 120 mm along its guide", "link 3 at 100 deg"."""
     if isinstance(t, SliderAt):
-        return f"block {t.block} at {fmt('length', t.position)} along its guide"
+        return f"block {t.block} at {fmt('length', t.position)} along {along}"
     return f"link {t.link} at {fmt('angle', t.angle)}"
 
 
@@ -100,21 +103,19 @@ def quantity(m: Mechanism, target: Target, positions: Mapping[str, Vec]) -> floa
     """The block's position along its guide, or the link's angle (in (-pi, pi]), at ``positions``."""
     if isinstance(target, SliderAt):
         s = m.blocks()[target.block]
-        return (positions[s.joint] - s.through).dot(Vec.polar(1.0, s.angle))
+        line = slide_line(m, s, positions)
+        return (positions[s.joint] - line.point).dot(line.direction)
     k = m.link(target.link)
     a = next((j for j in k.joints if j in m.ground), k.joints[0])
     return (positions[k.other(a)] - positions[a]).angle()
 
 
 def check_target(m: Mechanism, target: Target) -> None:
-    """DegenerateInput unless ``target`` names a block on a fixed guide or a link other than the crank."""
+    """DegenerateInput unless ``target`` names a slider block or a link other than the crank."""
     if isinstance(target, SliderAt):
         s = m.blocks().get(target.block)
         if s is None:
             raise DegenerateInput(f"there is no slider block {target.block}")
-        if s.on is not None:
-            raise DegenerateInput(f"block {target.block} slides in a slot of link {s.on}: give the position of a "
-                                  f"block on a fixed guide")
     elif target.link == m.crank:
         raise DegenerateInput(f"link {target.link} is the crank: give its angle itself")
     else:
@@ -162,7 +163,12 @@ def inverse_position(m: Mechanism, target: Target, *, plan: tuple[PlanStep, ...]
                     found.append((t, True))
     found = _merge(sorted((float(t) % TURN, touch) for t, touch in found))
     return InversePosition(target, tuple(t for t, _ in found), tuple(x for _, x in found),
-                           _reach(values, kind, grid, lambda t: _value(m, target, plan, t)), kind)
+                           _reach(values, kind, grid, lambda t: _value(m, target, plan, t)), kind, _along(m, target))
+
+
+def _along(m: Mechanism, target: Target) -> str:
+    s = m.blocks().get(target.block) if isinstance(target, SliderAt) else None
+    return f"the slot of link {s.on}" if s is not None and s.on is not None else "its guide"
 
 
 def _value(m: Mechanism, target: Target, plan, theta: float) -> float:

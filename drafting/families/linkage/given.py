@@ -46,7 +46,7 @@ def given_lines(study) -> list[str]:
     inv = getattr(s, "inverse", None)
     if inv is not None:
         motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) turned to put "
-                  f"{describe_target(inv.target, s.units.format)}"
+                  f"{describe_target(inv.target, s.units.format, inv.along)}"
                   + (f" (the {_ORDINAL.get(s.solution, f'{s.solution}th')} crank angle from 0\u00b0 "
                      f"counter-clockwise)" if len(inv.solutions) > 1 else "")]
     if s.omega:
