@@ -28,10 +28,11 @@ from ..errors import DegenerateInput
 from ..geometry import Vec
 from ..mechanisms.model import Mechanism, Slide, slide_line
 from ..mechanisms.pose import Pose
+from ..record import Construction, Step, StepKind, Value
 from .acceleration import acceleration_polygon
 from .velocity import velocity_polygon
 
-__all__ = ["DrivenCrank", "along_line", "driven_crank"]
+__all__ = ["DrivenCrank", "along_line", "driven_crank", "driving_steps", "with_first"]
 
 
 def along_line(m: Mechanism, s: Slide, pos: Mapping[str, Vec], vel: Mapping[str, Vec], ang: Mapping[int, float],
@@ -87,3 +88,27 @@ def driven_crank(m: Mechanism, pose: Pose, block: int, speed: float, acceleratio
     aa = acceleration_polygon(m, va, 0.0)
     _, a0 = along_line(m, s, pose.positions, va.velocities, va.angular, aa.accelerations, aa.angular)
     return DrivenCrank(block, speed, acceleration, k, a0, omega, (acceleration - a0) / k)
+
+
+def driving_steps(dc: DrivenCrank, crank: int, along: str) -> tuple[Step, Step]:
+    """The steps that open the velocity and the acceleration polygon of a slider-driven mechanism: the
+    crank's omega and alpha from the block's speed and acceleration (module docstring)."""
+    w = "\u03c9"
+    sense = ("counter-clockwise" if dc.omega >= 0 else "clockwise", "counter-clockwise" if dc.alpha >= 0 else "clockwise")
+    v = Step(f"Block {dc.block} drives at $v along {along}. Drawn at {w}_{crank} = 1 rad/s the polygon gives it $k; "
+             f"velocities grow with {w}_{crank}, so {w}_{crank} = $v \u00f7 $k \u00d7 1 rad/s = $w {sense[0]}. "
+             f"The polygon is drawn at it.",
+             values=(("v", Value("velocity", dc.speed)), ("k", Value("velocity", dc.rate)),
+                     ("w", Value("angular velocity", abs(dc.omega)))), kind=StepKind.GIVEN)
+    a = Step(f"Block {dc.block} accelerates at $a along {along}. Drawn with \u03b1_{crank} = 0 the polygon gives it "
+             f"$a0; each 1 rad/s\u00b2 of \u03b1_{crank} adds $ka, so \u03b1_{crank} = ($a \u2212 $a0) "
+             f"\u00f7 $ka \u00d7 1 rad/s\u00b2 = $al {sense[1]}. The polygon is drawn at it.",
+             values=(("a", Value("acceleration", dc.acceleration)), ("a0", Value("acceleration", dc.free)),
+                     ("ka", Value("acceleration", dc.rate)), ("al", Value("angular acceleration", abs(dc.alpha)))),
+             kind=StepKind.GIVEN)
+    return v, a
+
+
+def with_first(c: Construction, step: Step) -> Construction:
+    """The record ``c`` with ``step`` before its first."""
+    return Construction(c.title, (step,) + c.steps)

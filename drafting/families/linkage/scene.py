@@ -16,12 +16,14 @@ from constructions.errors import DegenerateInput
 from constructions.forces.effects import Effects
 from constructions.geometry import Vec
 from constructions.mechanisms.assembly import assembly_plan
-from constructions.mechanisms.inverse_position import InversePosition, OutputAngle, SliderAt, inverse_position
+from constructions.mechanisms.inverse_position import InversePosition
+from constructions.polygons.driving_slider import DrivenCrank
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 
 from ...scene.effects import SECTIONS as EFFECT_SECTIONS, read_effects
 from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.unitset import Units
+from .input_position import DRIVING_KEYS, INVERSE_KEYS, read_driving, read_inverse
 
 
 SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"}) | EFFECT_SECTIONS
@@ -41,6 +43,7 @@ class LinkageScene(Scene):
     effects: Effects
     inverse: InversePosition | None = None   # [input] slider_at / output_angle: every crank angle found
     solution: int = 1       # which of them ``angle`` is (1 = the first from 0 deg CCW)
+    driven: DrivenCrank | None = None        # [input] slider_speed: the crank's omega and alpha follow
 
 
 def assembly_check(study):
@@ -156,7 +159,8 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
         if sl.joint not in points and sl.number is None:
             raise r.fail(f"slider[{i}].number", f"joint {sl.joint} is on no link, so it needs a block (a number)")
 
-    inp = r.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha", "torque"} | INVERSE_KEYS,
+    inp = r.table("input", {"link", "angle", "omega", "tip_speed", "sense", "alpha", "torque"} | INVERSE_KEYS
+                  | DRIVING_KEYS,
                   {"link"})
     crank_no = r.number("input.link", inp["link"])
     crank = next((x for x in links if x.number == crank_no), None)
@@ -169,6 +173,48 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
                               "along its guide) or output_angle (a link's angle): the crank angles follow from "
                               "either of the last two")
     angle = r.quantity("input.angle", inp["angle"], "angle", units) if "angle" in inp else 0.0
+    driving = "slider_speed" in inp
+    if driving:
+        extra = sorted({"omega", "tip_speed", "sense", "alpha", "torque"} & set(inp))
+        if extra:
+            raise r.fail(f"input.{extra[0]}", "a driving slider sets the crank's motion: give slider_speed and "
+                                              "slider_acceleration, not the crank's")
+        if "slider_at" not in inp:
+            raise r.fail("input.slider_at", "is missing: a driving slider needs its stroke position too")
+        omega = alpha = 0.0
+        torque = None
+    else:
+        if "slider_acceleration" in inp:
+            raise r.fail("input.slider_acceleration", "goes with slider_speed (a driving slider)")
+        omega, alpha, torque = _crank_motion(r, units, inp, crank)
+
+    assembly = r.named_table("assembly")
+    branches = {r.name(f"assembly.{j}", j): _branch(r, f"assembly.{j}", v) for j, v in assembly.items()}
+    for j in branches:
+        if j not in points:
+            raise r.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
+    m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
+    m, effects = read_effects(r, units, m)
+    inverse, solution, driven = None, 1, None
+    if "angle" not in inp:
+        inverse, solution = read_inverse(r, units, m, inp)
+        angle = inverse.solutions[solution - 1] if inverse is not None else angle
+        if driving and inverse is not None:
+            driven = read_driving(r, units, m, inp, inverse, angle)
+            omega, alpha = driven.omega, driven.alpha
+    else:
+        extra = sorted(INVERSE_KEYS & set(inp))
+        if extra:
+            raise r.fail(f"input.{extra[0]}", "goes with slider_at or output_angle, not with a crank angle")
+    if torque is not None and not effects.inertial:
+        raise r.fail("input.torque", "a torque on the crank sets its angular acceleration only through "
+                                     "masses: give the moving links a [[mass]], or give alpha instead")
+    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "torque": torque,
+            "effects": effects, "inverse": inverse, "solution": solution, "driven": driven}
+
+
+def _crank_motion(r: SceneReader, units: Units, inp: dict, crank: Link) -> tuple[float, float, float | None]:
+    """(omega, alpha, torque) of the crank from [input]."""
     sense = inp.get("sense")
     if ("omega" in inp) == ("tip_speed" in inp):
         raise r.fail("input", "give exactly one of omega (e.g. \"10 rad/s\", \"120 rpm\"; 0 at rest) or "
@@ -191,90 +237,7 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
                               "crank, from which alpha follows), not both")
     alpha = r.quantity("input.alpha", inp.get("alpha", 0), "angular acceleration", units)
     torque = r.quantity("input.torque", inp["torque"], "torque", units) if "torque" in inp else None
-
-    assembly = r.named_table("assembly")
-    branches = {r.name(f"assembly.{j}", j): _branch(r, f"assembly.{j}", v) for j, v in assembly.items()}
-    for j in branches:
-        if j not in points:
-            raise r.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
-    m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
-    m, effects = read_effects(r, units, m)
-    inverse, solution = None, 1
-    if "angle" not in inp:
-        inverse, solution = _inverse(r, units, m, inp)
-        angle = inverse.solutions[solution - 1] if inverse is not None else angle
-    else:
-        extra = sorted(INVERSE_KEYS & set(inp))
-        if extra:
-            raise r.fail(f"input.{extra[0]}", "goes with slider_at or output_angle, not with a crank angle")
-    if torque is not None and not effects.inertial:
-        raise r.fail("input.torque", "a torque on the crank sets its angular acceleration only through "
-                                     "masses: give the moving links a [[mass]], or give alpha instead")
-    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "torque": torque,
-            "effects": effects, "inverse": inverse, "solution": solution}
-
-
-INVERSE_KEYS = frozenset({"slider_at", "slider", "output_angle", "output", "solution"})
-"""[input] keys of the inverse position problem, in place of ``angle``: ``slider_at`` (length: the block's
-position along its fixed guide from the guide's ``through`` point, in the guide's direction) with ``slider``
-(the block's number; default the one block on a fixed guide), or ``output_angle`` (angle: a link's
-direction from its fixed pivot to its other joint) with ``output`` (the link's number; default the one
-link besides the crank that turns about a fixed pivot); ``solution`` (default 1) picks the crank angle
-drawn, counted from 0 deg counter-clockwise."""
-
-
-def _inverse(r: SceneReader, units: Units, m: Mechanism, inp: dict) -> tuple[InversePosition | None, int]:
-    """Every crank angle that puts the mechanism at the [input]'s slider_at or output_angle, and which
-    one is drawn; (None, 1) when the mechanism cannot be built dyad by dyad (the family's check says so)."""
-    if "slider_at" in inp:
-        if "output" in inp:
-            raise r.fail("input.output", "goes with output_angle, not slider_at")
-        fixed = sorted(n for n, s in m.blocks().items() if s.on is None)
-        if "slider" in inp:
-            n = r.number("input.slider", inp["slider"])
-            if n not in fixed:
-                raise r.fail("input.slider", f"there is no block {n} on a fixed guide"
-                                             + (f" (blocks on fixed guides: {', '.join(map(str, fixed))})" if fixed else ""))
-        elif len(fixed) == 1:
-            n = fixed[0]
-        else:
-            raise r.fail("input.slider", "name the block whose position is given: "
-                         + ("there is no block on a fixed guide" if not fixed
-                            else f"blocks {', '.join(map(str, fixed))} are on fixed guides"))
-        target: SliderAt | OutputAngle = SliderAt(n, r.quantity("input.slider_at", inp["slider_at"], "length", units))
-        key = "input.slider_at"
-    else:
-        if "slider" in inp:
-            raise r.fail("input.slider", "goes with slider_at, not output_angle")
-        pivoted = sorted(k.number for k in m.links if k.number != m.crank and any(j in m.ground for j in k.joints))
-        if "output" in inp:
-            n = r.number("input.output", inp["output"])
-            if n == m.crank or all(k.number != n for k in m.links):
-                raise r.fail("input.output", f"link {n} is " + ("the crank" if n == m.crank else "no link")
-                             + ": name the link whose angle is given")
-        elif len(pivoted) == 1:
-            n = pivoted[0]
-        else:
-            raise r.fail("input.output", "name the link whose angle is given (e.g. output = 3)")
-        target = OutputAngle(n, r.quantity("input.output_angle", inp["output_angle"], "angle", units))
-        key = "input.output_angle"
-    solution = inp.get("solution", 1)
-    if isinstance(solution, bool) or not isinstance(solution, int) or solution < 1:
-        raise r.fail("input.solution", "must be a whole number from 1: which crank angle is drawn, counted "
-                                       "from 0 deg counter-clockwise")
-    try:
-        plan = assembly_plan(m)
-    except DegenerateInput:
-        return None, 1
-    try:
-        found = inverse_position(m, target, plan=plan)
-    except DegenerateInput as e:
-        raise r.fail(key, str(e)) from None
-    if not found.solutions:
-        raise r.fail(key, found.describe(units.format))
-    if not 1 <= solution <= len(found.solutions):
-        raise r.fail("input.solution", f"must be 1 to {len(found.solutions)}: {found.describe(units.format)}")
-    return found, solution
+    return omega, alpha, torque
 
 
 def _branch(r: SceneReader, key: str, value: Any) -> Branch:
