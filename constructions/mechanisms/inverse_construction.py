@@ -77,14 +77,14 @@ def inverse_step(m: Mechanism, inv: InversePosition, plan: tuple[PlanStep, ...],
     values |= {"l": Value("length", radius), "r": Value("length", crank.link.length)}
     tip = crank.tip
     marks: list = [Circle("inverse crank circle", Role.PATH, Diagram.SPACE, O1, crank.link.length),
-                   Point(f"inverse {name}", Role.LABEL, Diagram.SPACE, C)]
+                   Point(f"inverse {name}", Role.PATH, Diagram.SPACE, C)]
     order = [drawn - 1] + [i for i in range(len(inv.solutions)) if i != drawn - 1]
     for n, i in enumerate(order):
         B = O1 + Vec.polar(crank.link.length, inv.solutions[i])
         a = (B - C).angle()
         marks.append(Arc(f"inverse arc {i + 1}", Role.PATH, Diagram.SPACE, C, radius, a - SPAN / 2, a + SPAN / 2))
         if n:
-            marks.append(Point(f"inverse {tip}{PRIMES[min(n, 3)]}", Role.LABEL, Diagram.SPACE, B,
+            marks.append(Point(f"inverse {tip}{PRIMES[min(n, 3)]}", Role.PATH, Diagram.SPACE, B,
                                f"{tip}{PRIMES[min(n, 3)]}"))
     others = "".join(f" and {tip}{PRIMES[min(n, 3)]}" for n in range(1, len(order)))
     text = (f"To put {what}: swing {words} to cut the crank circle ({crank.link.label} = $r about "

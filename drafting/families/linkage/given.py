@@ -49,11 +49,16 @@ def given_lines(study) -> list[str]:
                   f"{describe_target(inv.target, s.units.format, inv.along)}"
                   + (f" (the {_ORDINAL.get(s.solution, f'{s.solution}th')} crank angle from 0\u00b0 "
                      f"counter-clockwise)" if len(inv.solutions) > 1 else "")]
-    if s.omega:
+    dc = getattr(s, "driven", None)
+    if dc is not None:                  # a driving slider: the crank's rates are answers, not data
+        motion.append(f"block {dc.block} driven at {f('velocity', dc.speed)}"
+                      + (f" and {f('acceleration', dc.acceleration)}" if "acceleration" in study.needed else "")
+                      + f" along {inv.along} (positive {'out along the slot' if 'slot' in inv.along else 'along the guide'})")
+    elif s.omega:
         motion.append(f"\u03c9_{crank.number} = {f('angular velocity', abs(s.omega))} {_sense(s.omega)}")
     else:
         motion.append("at rest")
-    if any(a in study.needed for a in ("acceleration", "forces")):
+    if dc is None and any(a in study.needed for a in ("acceleration", "forces")):
         if s.torque is not None:
             motion.append(f"driven by a torque of {f('torque', abs(s.torque))} {_sense(s.torque)}".rstrip())
         else:

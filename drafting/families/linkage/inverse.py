@@ -1,5 +1,5 @@
 """The inverse position problem on a linkage sheet: every crank angle that puts the slider at the scene's
-``slider_at`` (or a link at its ``output_angle``), as results -- theta_1 (1), theta_1 (2) ... read off the
+``slider_at`` (or a link at its ``output_angle``), as results -- theta_1, theta_1', theta_1'' ... read off the
 construction (:func:`constructions.mechanisms.inverse_position.inverse_position`) beside the closed form
 of a plain slider-crank or four-bar (:func:`constructions.closed_forms.closed_form_inverse`) -- and as a
 note saying which of them the sheet draws; and a driving slider's crank rates, read off the polygons,
@@ -14,8 +14,9 @@ from constructions.quantities import Measured
 
 
 def solution_name(crank: int, i: int) -> str:
-    """The results' name of the i-th crank angle (1 = the first from 0 deg CCW): theta_1 (2)."""
-    return f"theta_{crank} ({i})"
+    """The results' name of the i-th crank angle (1 = the first from 0 deg CCW), primed as the notes
+    prime a second position: theta_1, theta_1', theta_1''."""
+    return f"theta_{crank}" + "'" * (i - 1)
 
 
 def inverse_measured(scene) -> list[Measured]:
