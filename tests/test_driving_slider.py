@@ -79,15 +79,15 @@ def test_boom_scene_to_1e_9_and_the_rod_runs_as_given():
     speed, acc = along_line(m, m.blocks()[2], va.pose.positions, va.velocities, va.angular, aa.accelerations,
                             aa.angular)
     assert speed == pytest.approx(0.05, rel=1e-12) and abs(acc) <= 1e-12
-    # the boom angle: B on the circle of 600 mm about O1 and of 800 mm about O3 = (200, -500) mm
+    # the boom angle: B on the circle of 600 mm about O1 and of 900 mm about O3 = (200, -500) mm
     d = math.hypot(0.2, -0.5)
-    c = (0.6 ** 2 + d * d - 0.8 ** 2) / (2 * 0.6 * d)
+    c = (0.6 ** 2 + d * d - 0.9 ** 2) / (2 * 0.6 * d)
     assert v["theta_1"].analytic == pytest.approx(math.atan2(-0.5, 0.2) + math.acos(c), rel=1e-12)
     assert any("Block 2 drives the mechanism at 50 mm/s" in n for n in s.notes)
 
 
 @pytest.mark.parametrize("change, key, words", [
-    ({'slider_at = "800 mm"': 'angle = "20 deg"'}, "input.slider_at", "needs its stroke position"),
+    ({'slider_at = "900 mm"': 'angle = "20 deg"'}, "input.slider_at", "needs its stroke position"),
     ({'slider_speed = "50 mm/s"': 'slider_speed = "50 mm/s"\nomega = "1 rad/s"'}, "input.omega",
      "a driving slider sets the crank's motion"),
     ({'slider_speed = "50 mm/s"': 'omega = "1 rad/s"'}, "input.slider_acceleration", "goes with slider_speed"),
