@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import sweep_kernels
+from .analytic.inverse import four_bar_inverse, inverted_slider_crank_inverse, slider_crank_inverse
 from .mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines, assembly_plan)
 from .mechanisms.model import Mechanism
 from .motion_arrays import XY, MotionArrays
@@ -109,3 +110,50 @@ def closed_form_state(m: Mechanism, th: np.ndarray, omega: float, alpha: float, 
     ok = np.asarray(s.assembles, dtype=bool).reshape(n)
     fixed_links = {crank.link.number} | ({d.slide.number} if isinstance(d, CircleAndGuide) else set())
     return ClosedFormState(th, pos, vel, acc, ang, alp, ok, model, frozenset(fixed_links))
+
+
+def closed_form_inverse(m: Mechanism, target) -> tuple[float, ...] | None:
+    """The crank angles (rad, in [0, 2 pi), ascending) at which the plain slider-crank's slider, or the
+    plain four-bar's rocker, stands at ``target`` (a :class:`~constructions.mechanisms.inverse_position.SliderAt`
+    or ``OutputAngle``), by the closed forms of :mod:`constructions.analytic.inverse`; None when ``m`` is
+    no plain slider-crank or four-bar, or the target is not its slider or rocker."""
+    inverted = _inverted_slider_crank(m, target)
+    if inverted is not None:
+        return inverted
+    parts = closed_form_parts(m)
+    if parts is None:
+        return None
+    crank, d, _ = parts
+    O1 = m.ground[crank.pivot].as_tuple()
+    if isinstance(d, CircleAndGuide):
+        if getattr(target, "block", None) != d.slide.number:
+            return None
+        return slider_crank_inverse(target.position, crank_pivot=O1, crank=crank.link.length,
+                                    coupler=d.link.length, guide_point=d.slide.through.as_tuple(),
+                                    guide_angle=d.slide.angle, branch=d.branch.sign)
+    b = crank.tip
+    arms = {d.first: d.link_a, d.second: d.link_b}
+    o2 = next(c for c in arms if c in m.ground)
+    rocker = arms[o2]
+    if getattr(target, "link", None) != rocker.number:
+        return None
+    sign = d.branch.sign if d.branch.reference == (b, o2) else -d.branch.sign
+    return four_bar_inverse(target.angle, crank_pivot=O1, rocker_pivot=m.ground[o2].as_tuple(),
+                            crank=crank.link.length, coupler=arms[b].length, rocker=rocker.length, branch=sign)
+
+
+def _inverted_slider_crank(m: Mechanism, target) -> tuple[float, ...] | None:
+    """The closed form when ``target`` is the cylinder length of an inverted slider-crank: the block on the
+    crank tip slides in a slot (offset 0, along its link) of a link pivoted at its first joint."""
+    s = m.blocks().get(getattr(target, "block", None))
+    if s is None or s.on is None or s.offset != 0.0 or s.angle != 0.0:
+        return None
+    crank = m.link(m.crank)
+    pivot = m.crank_pivot()
+    first = m.link(s.on).joints[0]
+    branch = m.branches.get(s.joint)
+    if crank.other(pivot) != s.joint or first not in m.ground or branch is None or branch.reference != (first,):
+        return None
+    return inverted_slider_crank_inverse(target.position, crank_pivot=m.ground[pivot].as_tuple(),
+                                         crank=crank.length, slot_pivot=m.ground[first].as_tuple(),
+                                         branch=branch.sign)

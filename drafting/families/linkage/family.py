@@ -16,9 +16,11 @@ from constructions.forces.effects import NO_EFFECTS
 from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
+from constructions.mechanisms.inverse_construction import inverse_step, with_inverse
 from constructions.mechanisms.pose import locate
 from constructions.quantities import Measured
 from constructions.polygons.acceleration import acceleration_polygon
+from constructions.polygons.driving_slider import driving_steps, with_first
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Construction
 
@@ -28,6 +30,7 @@ if TYPE_CHECKING:
 from ..registry import Analysis, Family
 from .conventions import conventions
 from .given import given_lines
+from .inverse import driven_analytic, driven_measured, driven_notes, inverse_analytic, inverse_measured, inverse_notes
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, TABLES, LinkageScene, assembly_check, read_linkage
 from .vary import read_vary
@@ -46,6 +49,9 @@ def _loops(study):
 def _position(study):
     s = study.scene
     pose = locate(s.mechanism, s.angle, study.get("plan"), fmt=s.units.format)
+    if getattr(s, "inverse", None) is not None:
+        step = inverse_step(s.mechanism, s.inverse, study.get("plan"), s.solution)
+        pose = replace(pose, construction=with_inverse(pose.construction, step))
     if s.dimensions:
         from constructions.dimensions import dimension_links
         pose = replace(pose, construction=dimension_links(s.mechanism, pose))
@@ -54,7 +60,11 @@ def _position(study):
 
 def _velocity(study):
     s = study.scene
-    return velocity_polygon(s.mechanism, study.get("position"), s.omega)
+    va = velocity_polygon(s.mechanism, study.get("position"), s.omega)
+    if getattr(s, "driven", None) is not None:
+        step = driving_steps(s.driven, s.mechanism.crank, s.inverse.along)[0]
+        va = replace(va, construction=with_first(va.construction, step))
+    return va
 
 
 def _alpha(study) -> float:
@@ -82,7 +92,11 @@ def _alpha_by_virtual_work(study) -> float:
 
 def _acceleration(study):
     s = study.scene
-    return acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
+    aa = acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
+    if getattr(s, "driven", None) is not None:
+        step = driving_steps(s.driven, s.mechanism.crank, s.inverse.along)[1]
+        aa = replace(aa, construction=with_first(aa.construction, step))
+    return aa
 
 
 def _instant_centres(study):
@@ -133,6 +147,9 @@ def _turn(study):
 
 
 def _cannot_sweep(scene) -> str | None:
+    if getattr(scene, "driven", None) is not None:
+        return ("input.slider_speed: a sweep turns the crank at a steady speed; a slider that drives at a given "
+                "speed turns it unsteadily, which this version does not sweep")
     if scene.torque is not None:
         return ("input.torque: a sweep needs the crank's motion (omega and alpha); at a given torque the motion "
                 "over the cycle is a simulation, which this version does not run")
@@ -187,6 +204,7 @@ def _measured(study) -> list:
             out += r.measured(m)
     if study.scene.torque is not None:
         out.append(Measured(f"alpha_{m.crank}", "angular acceleration", study.get("crank alpha")))
+    out += inverse_measured(study.scene) + driven_measured(study.scene)
     f = study.result("forces")
     if f is not None:
         got = f.measured(m)
@@ -221,6 +239,8 @@ def _analytic_values(study):
                 out[x.name + INSTANT_CENTRES] = out[x.name]
     if study.scene.torque is not None:
         out[f"alpha_{study.scene.mechanism.crank}"] = study.get("alpha check")
+    out.update(inverse_analytic(study.scene))
+    out.update(driven_analytic(study.scene, study.get("position").positions))
     if study.asked("forces"):
         eq, vw = study.get("force check")
         out.update(eq.values(study.scene.mechanism))
@@ -251,6 +271,7 @@ def _notes(study) -> tuple[str, ...]:
         w.append(f"\u03b1_{n} follows from the torque on the crank, T_{n} = {u.format('torque', s.torque)}"
                  + (", released from rest" if s.omega == 0 else "")
                  + ": its first column from the equilibrium of all links, its second by virtual work.")
+    w += inverse_notes(s) + driven_notes(s)
     k = study.get("classification")
     if k is not None:
         line = k.summary(lambda v: s.units.format("length", v))

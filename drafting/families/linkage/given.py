@@ -4,7 +4,11 @@ in the scene's units."""
 
 from __future__ import annotations
 
+from constructions.mechanisms.inverse_position import describe_target
+
 from ...scene.unitset import direction_deg
+
+_ORDINAL = {1: "first", 2: "second", 3: "third", 4: "fourth"}
 
 
 def _sense(w: float) -> str:
@@ -39,11 +43,22 @@ def given_lines(study) -> list[str]:
             out.append(f"The {block} slides in a slot of link {sl.on}.")
     crank = m.link(m.crank)
     motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) at {f('angle', s.angle)}"]
-    if s.omega:
+    inv = getattr(s, "inverse", None)
+    if inv is not None:
+        motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) turned to put "
+                  f"{describe_target(inv.target, s.units.format, inv.along)}"
+                  + (f" (the {_ORDINAL.get(s.solution, f'{s.solution}th')} crank angle from 0\u00b0 "
+                     f"counter-clockwise)" if len(inv.solutions) > 1 else "")]
+    dc = getattr(s, "driven", None)
+    if dc is not None:                  # a driving slider: the crank's rates are answers, not data
+        motion.append(f"block {dc.block} driven at {f('velocity', dc.speed)}"
+                      + (f" and {f('acceleration', dc.acceleration)}" if "acceleration" in study.needed else "")
+                      + f" along {inv.along} (positive {'out along the slot' if 'slot' in inv.along else 'along the guide'})")
+    elif s.omega:
         motion.append(f"\u03c9_{crank.number} = {f('angular velocity', abs(s.omega))} {_sense(s.omega)}")
     else:
         motion.append("at rest")
-    if any(a in study.needed for a in ("acceleration", "forces")):
+    if dc is None and any(a in study.needed for a in ("acceleration", "forces")):
         if s.torque is not None:
             motion.append(f"driven by a torque of {f('torque', abs(s.torque))} {_sense(s.torque)}".rstrip())
         else:

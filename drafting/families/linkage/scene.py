@@ -16,6 +16,8 @@ from constructions.errors import DegenerateInput
 from constructions.forces.effects import Effects
 from constructions.geometry import Vec
 from constructions.mechanisms.assembly import assembly_plan
+from constructions.mechanisms.inverse_position import InversePosition
+from constructions.polygons.driving_slider import DrivenCrank
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 
 from ...scene.effect_keys import TABLES as EFFECT_TABLES
@@ -23,6 +25,7 @@ from ...scene.effects import SECTIONS as EFFECT_SECTIONS, read_effects
 from ...scene.keys import Key, KeyTable
 from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.unitset import Units
+from .input_position import DRIVING_KEYS, INVERSE_KEYS, read_driving, read_inverse
 
 
 SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"}) | EFFECT_SECTIONS
@@ -53,7 +56,21 @@ SLIDER_KEYS = KeyTable("slider", "a joint sliding along a fixed guide, or in the
 ), array=True)
 INPUT_KEYS = KeyTable("input", "the driving crank and its motion", (
     Key("link", "whole number", None, "the crank: joins a fixed pivot to a moving joint", required=True),
-    Key("angle", "angle", None, "the crank angle, CCW from +x", required=True),
+    Key("angle", "angle", None, "the crank angle, CCW from +x (exactly one of angle, slider_at, output_angle)"),
+    Key("slider_at", "length", None, "or the inverse problem: a block's position along its fixed guide from the "
+                                     "guide's through point, or along its slot from the slotted link's first "
+                                     "joint (a cylinder's length); every crank angle that puts it there is found"),
+    Key("slider", "whole number", None, "which block slider_at places (default: the one on a fixed guide, else "
+                                        "the only block)"),
+    Key("output_angle", "angle", None, "or the inverse problem: a link's direction from its fixed pivot to its "
+                                       "other joint"),
+    Key("output", "whole number", None, "which link output_angle sets (default: the one non-crank link on a "
+                                        "fixed pivot)"),
+    Key("solution", "whole number", 1, "which of the crank angles found is drawn, counted from 0 deg CCW"),
+    Key("slider_speed", "velocity", None, "a driving slider (with slider_at): the block's speed along its guide "
+                                          "or out along its slot, signed; in place of omega"),
+    Key("slider_acceleration", "acceleration", 0, "a driving slider's acceleration, signed as slider_speed; in "
+                                                  "place of alpha"),
     Key("omega", "angular velocity", None, "its angular velocity (signed, CCW +; 0: at rest); or tip_speed"),
     Key("tip_speed", "velocity", None, "or the speed of the crank tip, positive, with sense"),
     Key("sense", "text", None, "the sense of a positive omega or tip_speed", choices=("ccw", "cw")),
@@ -80,6 +97,9 @@ class LinkageScene(Scene):
     alpha: float            # crank angular acceleration, rad/s^2 CCW positive
     torque: float | None    # torque on the crank, N m CCW positive: alpha follows from it (not given)
     effects: Effects
+    inverse: InversePosition | None = None   # [input] slider_at / output_angle: every crank angle found
+    solution: int = 1       # which of them ``angle`` is (1 = the first from 0 deg CCW)
+    driven: DrivenCrank | None = None        # [input] slider_speed: the crank's omega and alpha follow
 
 
 def assembly_check(study):
@@ -201,7 +221,53 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
         raise r.fail("input.link", f"there is no link {crank_no}")
     if sum(j in ground for j in crank.joints) != 1:
         raise r.fail("input.link", f"link {crank_no} must join one fixed pivot in [frame] to a moving joint")
-    angle = r.quantity("input.angle", inp["angle"], "angle", units)
+    if sum(k in inp for k in ("angle", "slider_at", "output_angle")) != 1:
+        raise r.fail("input", "give exactly one of angle (the crank angle), slider_at (the block's position "
+                              "along its guide) or output_angle (a link's angle): the crank angles follow from "
+                              "either of the last two")
+    angle = r.quantity("input.angle", inp["angle"], "angle", units) if "angle" in inp else 0.0
+    driving = "slider_speed" in inp
+    if driving:
+        extra = sorted({"omega", "tip_speed", "sense", "alpha", "torque"} & set(inp))
+        if extra:
+            raise r.fail(f"input.{extra[0]}", "a driving slider sets the crank's motion: give slider_speed and "
+                                              "slider_acceleration, not the crank's")
+        if "slider_at" not in inp:
+            raise r.fail("input.slider_at", "is missing: a driving slider needs its stroke position too")
+        omega = alpha = 0.0
+        torque = None
+    else:
+        if "slider_acceleration" in inp:
+            raise r.fail("input.slider_acceleration", "goes with slider_speed (a driving slider)")
+        omega, alpha, torque = _crank_motion(r, units, inp, crank)
+
+    assembly = r.named_table("assembly")
+    branches = {r.name(f"assembly.{j}", j): _branch(r, f"assembly.{j}", v) for j, v in assembly.items()}
+    for j in branches:
+        if j not in points:
+            raise r.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
+    m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
+    m, effects = read_effects(r, units, m)
+    inverse, solution, driven = None, 1, None
+    if "angle" not in inp:
+        inverse, solution = read_inverse(r, units, m, inp)
+        angle = inverse.solutions[solution - 1] if inverse is not None else angle
+        if driving and inverse is not None:
+            driven = read_driving(r, units, m, inp, inverse, angle)
+            omega, alpha = driven.omega, driven.alpha
+    else:
+        extra = sorted(INVERSE_KEYS & set(inp))
+        if extra:
+            raise r.fail(f"input.{extra[0]}", "goes with slider_at or output_angle, not with a crank angle")
+    if torque is not None and not effects.inertial:
+        raise r.fail("input.torque", "a torque on the crank sets its angular acceleration only through "
+                                     "masses: give the moving links a [[mass]], or give alpha instead")
+    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "torque": torque,
+            "effects": effects, "inverse": inverse, "solution": solution, "driven": driven}
+
+
+def _crank_motion(r: SceneReader, units: Units, inp: dict, crank: Link) -> tuple[float, float, float | None]:
+    """(omega, alpha, torque) of the crank from [input]."""
     sense = inp.get("sense")
     if ("omega" in inp) == ("tip_speed" in inp):
         raise r.fail("input", "give exactly one of omega (e.g. \"10 rad/s\", \"120 rpm\"; 0 at rest) or "
@@ -224,19 +290,7 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
                               "crank, from which alpha follows), not both")
     alpha = r.quantity("input.alpha", inp.get("alpha", 0), "angular acceleration", units)
     torque = r.quantity("input.torque", inp["torque"], "torque", units) if "torque" in inp else None
-
-    assembly = r.named_table("assembly")
-    branches = {r.name(f"assembly.{j}", j): _branch(r, f"assembly.{j}", v) for j, v in assembly.items()}
-    for j in branches:
-        if j not in points:
-            raise r.fail(f"assembly.{j}", f"{j} is not a joint of the mechanism")
-    m = Mechanism(ground, tuple(links), tuple(slides), tuple(attached), crank_no, branches)
-    m, effects = read_effects(r, units, m)
-    if torque is not None and not effects.inertial:
-        raise r.fail("input.torque", "a torque on the crank sets its angular acceleration only through "
-                                     "masses: give the moving links a [[mass]], or give alpha instead")
-    return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "torque": torque,
-            "effects": effects}
+    return omega, alpha, torque
 
 
 def _branch(r: SceneReader, key: str, value: Any) -> Branch:
