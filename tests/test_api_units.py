@@ -111,3 +111,15 @@ def test_solve_json_keeps_its_fields_and_adds_each_value_in_scene_units_and_si(c
     assert vc["graphical"]["angle_deg"] == pytest.approx(180.0) and vc["si"]["difference"] < 1e-12
     w = rows["omega_2"]
     assert w["kind"] == "angular velocity" and w["unit"] == "rad/s" and w["graphical"] == w["si"]["graphical"] < 0
+
+
+def test_a_torque_prints_in_the_order_written_and_a_ratio_has_no_unit():
+    study = drafting.load(GALLERY / "notes-dynamic-example-1.toml")
+    t = study.results["F_12"].graphical
+    assert f"{t.in_scene_units().units:~P}" == "N" and t.to("kN").magnitude == pytest.approx(t.norm() / 1000)
+    from drafting.scene.units import quantity
+    assert str(quantity(2.0, "torque", "N m")) == "2.0 N·m"
+    assert quantity(2.0, "torque", "lbf*in").magnitude == pytest.approx(2.0 / (4.4482216152605 * 0.0254), rel=1e-12)
+    cr = drafting.load(GALLERY / "gear-pair-20-40.toml").results["C.R."]
+    assert cr.unit == "" and cr.graphical.in_scene_units().dimensionless
+    assert cr.graphical.in_scene_units().magnitude == pytest.approx(1.6352, abs=1e-4)

@@ -85,6 +85,7 @@ def registry():
     except Exception:                   # an unwritable or broken cache: the definitions themselves
         reg = pint.UnitRegistry()
     reg.formatter.default_format = "~P"           # a Quantity prints with symbols: "568.5 mm/s"
+    reg.formatter.default_sort_func = None        # in the order written: N·m, not m·N
     return reg
 
 

@@ -119,6 +119,8 @@ class Result:
         self.comparison, self.units = comparison, units
 
     def __getattr__(self, name: str) -> Any:
+        if name == "comparison":          # not yet set (a copy being made): no recursion
+            raise AttributeError(name)
         return getattr(self.comparison, name)
 
     @property
