@@ -3,6 +3,8 @@
     import drafting
     study = drafting.load("gallery/notes-velocity-example-1.toml")   # or a dict, or drafting.loads(text)
     study.results["V_C"].graphical            # the value read off the construction (SI)
+    study.results["V_C"].graphical.to("mm/s")  # the same as a pint Quantity (.in_scene_units(): the scene's)
+    print(study.table())                      # the results table: rows in the scene's units (.to_csv())
     sheets = study.sheets()                   # the worked sheets, one or more pages
     sheets[0].save("example.pdf")             # .svg, .pdf or .png, by the suffix
     study                                     # in Jupyter: the results table and the first sheet, inline

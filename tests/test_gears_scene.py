@@ -50,7 +50,7 @@ def test_the_20_40_pair_scene_agrees_and_reads_its_contact_ratio(capsys):
             - (r1 + r2) * math.sin(phi))
     assert r["C.R."].graphical == pytest.approx(path / (math.pi * m * math.cos(phi)), rel=1e-12)
     assert abs(r["C.R."].graphical - r["C.R."].analytic) <= 1e-9 * r["C.R."].analytic
-    row = next(t for t in study.table() if t[0] == "C.R.")
+    row = next(t for t in study.table().text if t[0] == "C.R.")
     assert row[1:3] == ("1.635", "1.635") and not row[3].endswith(" ")
 
 

@@ -152,7 +152,7 @@ def test_in_headless_chromium_no_value_shows_before_its_step(tmp_path):
     dom = _chromium(probed.as_uri(), "--dump-dom")
     seen = json.loads(html.unescape(re.search(r'<pre id="probe">(.*?)</pre>', dom, re.S).group(1)))
     study = drafting.load(scene)
-    results = {v for row in study.table() for v in row[1:3]}                  # graphical and analytic columns
+    results = {v for row in study.table().text for v in row[1:3]}                  # graphical and analytic columns
     fmt = SheetFormatter(study.scene.units, {k: v for sh in study.sheets() for k, v in sh.diagram_scales.items()})
     later = {m for st in study.construction.steps[1:] if any(v.kind not in ("scale", "paper length")
                                                              for _, v in st.values)

@@ -274,5 +274,44 @@ def test_the_csv_goes_round_one_turn_from_the_scene_angle_without_float_noise(tm
     cells = [c for r in body for c in r if c]
     assert all(len(c.lstrip("-").replace(".", "").lstrip("0").split("e")[0]) <= 12 for c in cells), cells
     from drafting.app.sweep_cmd import significant
+    # 12 digits of the column's largest value: -1e-300 beside 60 is rounding noise, written 0.0 (not -0.0)
     assert significant(np.array([59.99999999999999, 10.000000000000007, 0.0, -1e-300, np.nan])).tolist()[:4] == \
-        [60.0, 10.0, 0.0, -1e-300]
+        [60.0, 10.0, 0.0, 0.0]
+
+
+def test_rounding_keeps_twelve_digits_of_each_column_and_no_noise_near_zero():
+    """Each column to 12 significant digits of its largest value: a velocity of -4.44e-14 mm/s in a column of
+    hundreds is 0.0, the nearest float of each 12-digit decimal has a short repr, large and tiny columns
+    alike, and a column's rounding does not reach into another's."""
+    from drafting.app.sweep_cmd import rows_of, significant
+    table = np.array([[60.30000000000001, -4.4408920984999995e-14, 123456789.01234567, 3.0000000000000004e-12],
+                      [359.99999999999994, 567.8901234567891, -0.5, 1.2345678901234567e-12],
+                      [np.nan, 1e-300, 987654321.0987654, np.inf]])
+    out = significant(table)
+    assert out[0].tolist() == [60.3, 0.0, 123456789.012, 3e-12]
+    assert out[1].tolist() == [360.0, 567.890123457, -0.5, 1.23456789012e-12]
+    assert math.isnan(out[2, 0]) and out[2, 1] == 0.0 and out[2, 2] == 987654321.099 and out[2, 3] == math.inf
+    big = significant(np.array([1.0000000000000002e20, 123456789012345.67, -3.3333333333333333e19]))
+    assert big.tolist() == [1e20, 123457000000000.0, -3.3333333333e19]
+    assert next(rows_of(out[:1])) == "60.3,0.0,123456789.012,3e-12"
+
+
+def test_a_scene_at_zero_runs_0_to_355_and_the_summary_stays_within_the_turn(tmp_path, capsys):
+    """Starting at 0 the angle column runs 0, 5, ..., 355 (one turn in the step); the printed summary names
+    the start, the step and the last angle within the turn (60, step 5, to 55 -- not 415)."""
+    text = (GALLERY / "cycle-four-bar.toml").read_text()
+    assert 'angle = "60 deg"' in text
+    scene = tmp_path / "at-zero.toml"
+    scene.write_text(text.replace('angle = "60 deg"', 'angle = "0 deg"'))
+    dest = tmp_path / "zero.csv"
+    code, _, _ = _run(capsys, scene, "--csv", dest)
+    body = list(csv.reader(dest.open(newline="", encoding="utf-8")))[1:]
+    assert code == 0 and [r[0] for r in body] == [f"{5 * k}.0" for k in range(72)]
+    code, out, _ = _run(capsys, GALLERY / "cycle-four-bar.toml")
+    assert code == 0 and "72 crank angles from 60\u00b0 round one turn in steps of 5\u00b0 (to 55\u00b0)" in out
+    dest = tmp_path / "tenth.csv"
+    code, _, _ = _run(capsys, GALLERY / "cycle-four-bar.toml", "--every", "0.1deg", "--csv", dest)
+    first = [r[0] for r in list(csv.reader(dest.open(newline="", encoding="utf-8")))[1:]]
+    assert code == 0 and len(first) == 3600 and first[:2] == ["60.0", "60.1"] and first[-1] == "59.9"
+    assert first[2998:3002] == ["359.8", "359.9", "0.0", "0.1"]
+    assert all(len(c.split(".")[1]) == 1 for c in first)                     # 0.1 steps, not 60.30000000000001

@@ -108,7 +108,7 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
     suffix = f" ({label})" if label else ""
     worked = compose_sheets(study.construction, _info(study, date, s.title + suffix, s.drawing_number,
                                                         study.notes + study.warnings),
-                            [ResultRow(q, g, a, d) for q, g, a, d in study.table()])
+                            [ResultRow(q, g, a, d) for q, g, a, d in study.table().text])
     scales = {k: v for sh in worked for k, v in sh.diagram_scales.items()}
     stated = _stated(study)
     every = key_items(study, scales)

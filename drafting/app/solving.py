@@ -71,16 +71,10 @@ def located(study: Study, e: ConstructionError) -> str:
 
 def results_text(study: Study) -> str:
     """The results table as aligned plain text."""
-    head = ("quantity", "graphical", "analytic", "difference")
-    rows = [head] + study.table()
-    if len(rows) == 1:
+    table = study.table()
+    if not len(table):
         return f"{study.scene.title}\n  (no results to compare: the scene asks for {', '.join(study.scene.analyses)})"
-    widths = [max(len(r[i]) for r in rows) for i in range(4)]
-    lines = [study.scene.title]
-    for k, r in enumerate(rows):
-        lines.append("  " + "  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
-        if k == 0:
-            lines.append("  " + "  ".join("-" * w for w in widths))
+    lines = [study.scene.title] + ["  " + line for line in table.lines()]
     bad = study.disagreements()
     model = study.model
     if model:

@@ -117,18 +117,37 @@ def table(scene, s) -> tuple[list[str], np.ndarray]:
 
 
 SIGNIFICANT = 12
-"""Digits a CSV keeps: the engine agrees with the closed forms to ~1e-9, so 12 significant digits hold
-everything it knows and none of the rounding noise of the last bits (59.99999999999999 is written 60.0)."""
+"""Digits a CSV keeps, counted from the largest value of each column: the engine agrees with the closed forms
+to ~1e-9 of a quantity's scale, so 12 digits hold everything it knows and none of the rounding noise of the
+last bits (59.99999999999999 is written 60.0, and a velocity of 4.4e-14 mm/s in a column of hundreds 0.0)."""
+
+_EXACT_POWER = 22
+"""10**k is a float exactly up to k = 22: dividing or multiplying by it rounds once, to the nearest float of
+the decimal, whose shortest repr then has at most :data:`SIGNIFICANT` digits."""
 
 
 def significant(values: np.ndarray) -> np.ndarray:
-    """``values`` rounded to :data:`SIGNIFICANT` significant digits (zeros and non-finite values kept)."""
-    v = np.asarray(values, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        mag = np.where(np.isfinite(v) & (v != 0), np.floor(np.log10(np.abs(v))), 0.0)
-        scale = 10.0 ** (SIGNIFICANT - 1 - mag)
-        out = np.round(v * scale) / scale
-    return np.where(np.isfinite(out), out, v)
+    """``values`` (a column, or a table of columns) rounded to a fixed number of decimals per column: those that
+    keep :data:`SIGNIFICANT` significant digits of the column's largest finite magnitude.  Non-finite values
+    are kept, -0.0 becomes 0.0; a column whose largest value is below 1e-11 is rounded value by value."""
+    v = np.array(values, dtype=float)
+    cols = v.reshape(v.shape[0], -1) if v.ndim else v.reshape(1, 1)
+    for j in range(cols.shape[1]):
+        c = cols[:, j]
+        finite = np.isfinite(c)
+        big = float(np.max(np.abs(c[finite]))) if finite.any() else 0.0
+        if big == 0.0:
+            continue
+        k = SIGNIFICANT - 1 - math.floor(math.log10(big))      # decimals to keep
+        with np.errstate(invalid="ignore", over="ignore"):
+            if 0 <= k <= _EXACT_POWER:
+                r = np.round(c * 10.0 ** k) / 10.0 ** k
+            elif -_EXACT_POWER <= k < 0:
+                r = np.round(c / 10.0 ** -k) * 10.0 ** -k
+            else:                                              # a column of tiny values: digits by text
+                r = np.array([float(f"{x:.{SIGNIFICANT}g}") for x in c])
+        cols[:, j] = np.where(finite, r + 0.0, c)
+    return cols.reshape(v.shape)
 
 
 def rows_of(values: np.ndarray):
@@ -176,10 +195,11 @@ def summary(scene, s) -> str:
     ang = [u.convert("angle", float(t)) for t in s.thetas]
     n, ok = s.thetas.size, int(np.count_nonzero(s.assembles))
     step = (ang[1] - ang[0]) if n > 1 else 0.0
+    turn = u.convert("angle", 2 * math.pi)
+    ang = [float(a) for a in np.mod(significant(np.array(ang)), turn)]      # within one turn: 415 -> 55
     lines = [scene.title,
-             f"  {n} crank angles from {_fmt(ang[0])} to {with_unit(_fmt(ang[-1]), ua)} "
-             f"(step {with_unit(_fmt(step), ua)}), "
-             f"{s.model}: {ok} assembled"]
+             f"  {n} crank angles from {with_unit(_fmt(ang[0]), ua)} round one turn in steps of "
+             f"{with_unit(_fmt(step), ua)} (to {with_unit(_fmt(ang[-1]), ua)}), {s.model}: {ok} assembled"]
     gaps = s.gaps()
     if gaps:
         spans = ", ".join(f"{_fmt(ang[i])}..{with_unit(_fmt(ang[j - 1]), ua)}" for i, j in gaps)

@@ -8,7 +8,6 @@ accelerations.  ``Study.ran`` lists what has been computed so far (e.g. "positio
 
 from __future__ import annotations
 
-import re
 from functools import cached_property
 from typing import Any, Mapping
 
@@ -19,8 +18,10 @@ from constructions.record import Construction
 
 from ..families.registry import Family, family
 from ..scene.reader import Scene, SceneError
-from ..scene.units import with_unit
-from ..scene.unitset import direction_deg
+from .results import Result
+from .table import CSV_HEADER, Table, difference_text, display_name, json_values, value_text
+
+__all__ = ["Study", "results_csv", "display_name", "CSV_HEADER"]
 
 
 class Study:
@@ -136,11 +137,12 @@ class Study:
         return self.family.model_name(self)
 
     @property
-    def results(self) -> dict[str, Comparison]:
+    def results(self) -> dict[str, Result]:
         """Every compared quantity by name ("V_C", "omega_2", "F_32"): ``.graphical`` read off the
         construction, ``.analytic``, ``.difference``, ``.agrees`` (SI values; vectors as Vec, rates CCW
-        positive).  :meth:`table` has the same rows as text in the scene's units."""
-        return {c.name: c for c in self.comparisons}
+        positive), each convertible: ``.graphical.to("mm/s")``, ``.graphical.in_scene_units()``
+        (:mod:`drafting.study.results`).  :meth:`table` has the same rows in the scene's units."""
+        return {c.name: Result(c, self.scene.units) for c in self.comparisons}
 
     def sheets(self) -> list:
         """The worked sheets (:class:`~drafting.backends.public_sheet.Sheet`, one per page): ``sheet.save("x.pdf")``."""
@@ -151,7 +153,7 @@ class Study:
         """Jupyter: the title, the results table in the scene's units and the first sheet, inline."""
         from html import escape
         rows = "".join(f"<tr><td>{escape(q)}</td><td>{escape(g)}</td><td>{escape(a)}</td><td>{escape(d)}</td></tr>"
-                       for q, g, a, d in self.table())
+                       for q, g, a, d in self.table().text)
         head = "<tr><th>quantity</th><th>graphical</th><th>analytic</th><th>difference</th></tr>"
         table = f"<table>{head}{rows}</table>" if rows else ""
         words = "".join(f"<li>{escape(w)}</li>" for w in self.notes + self.warnings)
@@ -165,30 +167,23 @@ class Study:
 
     # -- presentation of values in the scene's units -------------------------------------------------
     def value_text(self, c: Comparison, value: Vec | float | None) -> str:
-        u = self.scene.units
-        if value is None:
-            return "n/a"
-        if isinstance(value, Vec):
-            return f"{u.format(c.kind, value.norm())} at {direction_deg(value):.1f}\u00b0"
-        if c.kind not in _RATE_KINDS:          # a length, an angle, a force magnitude: no sense of turning
-            return u.format(c.kind, value) if value < 0 else u.format(c.kind, abs(value))
-        sense = "CCW" if value > 0 else "CW" if value < 0 else ""
-        return f"{u.format(c.kind, abs(value))} {sense}".strip()
+        return value_text(self.scene.units, c, value)
 
     def difference_text(self, c: Comparison) -> str:
-        if c.difference is None:
-            return "n/a"
-        return with_unit(f"{self.scene.units.convert(c.kind, c.difference):.1e}", self.scene.units.symbol(c.kind))
+        return difference_text(self.scene.units, c)
 
-    def table(self) -> list[tuple[str, str, str, str]]:
-        return [(display_name(c.name), self.value_text(c, c.graphical), self.value_text(c, c.analytic),
-                 self.difference_text(c)) for c in self.comparisons]
+    def table(self) -> Table:
+        """The results in the scene's units: named :class:`~drafting.study.table.Row` s of numbers (``.rows``),
+        ``print``-able, ``.to_csv()``, ``.records()``; ``.text`` the sheet's own cells."""
+        return Table.of(self.scene.units, self.comparisons)
 
     def to_json(self) -> dict[str, Any]:
         """Machine-readable results in the scene's units, and the list of analyses that ran."""
         u = self.scene.units
         out: dict[str, Any] = {"scene": str(self.scene.path), "kind": self.scene.kind, "title": self.scene.title,
-                               "units": u.as_dict()}
+                               "units": u.as_dict(),
+                               "units_note": "values are in the scene's units (units); each check row gives its "
+                                             "unit and, under si, the same values in SI"}
         out.update(self.family.json(self))
         if self.comparisons:
             out["check"] = {
@@ -196,53 +191,13 @@ class Study:
                 "tolerance_relative": min(c.tolerance for c in self.comparisons),
                 "agrees": (not self.disagreements()) if self.model else None,
                 "rows": [{"quantity": c.name, "relative_difference": c.relative, "tolerance": c.tolerance,
-                          "agrees": c.agrees} for c in self.comparisons]}
+                          "agrees": c.agrees, **json_values(u, c)} for c in self.comparisons]}
         out["notes"] = list(self.notes)
         out["warnings"] = list(self.warnings)
         out["analyses"] = list(self.ran)
         return out
 
 
-_RATE_KINDS = frozenset({"angular velocity", "angular acceleration", "torque"})
-"""Scalar kinds that turn one way or the other (written with CCW / CW)."""
-
-
-CSV_HEADER = ("quantity", "kind", "unit", "graphical", "graphical x", "graphical y", "graphical angle (deg)",
-              "analytic", "analytic x", "analytic y", "analytic angle (deg)", "difference", "agrees")
-
-
 def results_csv(study: "Study") -> str:
-    """The results table as CSV in the scene's units, one row per quantity: a vector as its magnitude,
-    components and direction, a rate or torque signed (CCW positive); the unit of each row in its
-    ``unit`` column, the header naming what each column holds.  Empty cells where there is no value."""
-    import csv
-    import io
-    u = study.scene.units
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(CSV_HEADER)
-
-    def cells(kind, v):
-        if v is None:
-            return ["", "", "", ""]
-        if isinstance(v, Vec):
-            return [repr(u.convert(kind, v.norm())), repr(u.convert(kind, v.x)), repr(u.convert(kind, v.y)),
-                    repr(direction_deg(v))]
-        return [repr(u.convert(kind, v)), "", "", ""]
-    for c in study.comparisons:
-        diff = "" if c.difference is None else repr(u.convert(c.kind, c.difference))
-        agrees = "" if c.agrees is None else ("yes" if c.agrees else "no")
-        w.writerow([c.name, c.kind, u.symbol(c.kind), *cells(c.kind, c.graphical), *cells(c.kind, c.analytic),
-                    diff, agrees])
-    return buf.getvalue()
-
-
-_GREEK = {"alpha": "\u03b1", "beta": "\u03b2", "gamma": "\u03b3", "delta": "\u03b4", "theta": "\u03b8",
-          "mu": "\u03bc", "rho": "\u03c1", "phi": "\u03c6", "psi": "\u03c8", "omega": "\u03c9"}
-_GREEK_WORD = re.compile(r"^(" + "|".join(_GREEK) + r")(?=_|'|$)")
-
-
-def display_name(name: str) -> str:
-    """A result's name as a sheet sets it: omega_2 -> ω_2, phi' -> φ', phi_max -> φ_max (the rest of the
-    name is the notes' markup already)."""
-    return _GREEK_WORD.sub(lambda m: _GREEK[m[1]], name)
+    """The results table as CSV in the scene's units (:meth:`~drafting.study.table.Table.to_csv`)."""
+    return study.table().to_csv()

@@ -21,7 +21,7 @@ def sheets_for(study):
     s = study.scene
     info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
                      date=sheet_date(), units=s.units, notes=study.notes + study.warnings, scales=s.scales)
-    rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table()]
+    rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table().text]
     return tuple(Sheet.of(page) for page in compose_sheets(study.construction, info, rows))
 
 
