@@ -72,8 +72,7 @@ PAIR_KEYS = KeyTable("pair", "a pair in mesh: gear 1, the pinion, drives gear 2"
     Key("centre_distance", "length", None, "the centre distance (for a rack: O1 to the rack's pitch line); "
                                            "default: the standard one"),
     Key("internal", "true/false", False, "gear 2 is an internal gear, a ring about the pinion"),
-    Key("speed", "angular velocity", None, "the pinion's speed (> 0): adds the pitch-line speed and the "
-                                           "sliding velocities at the start and end of contact"),
+    Key("speed", "angular velocity", None, "the pinion's speed (> 0): the pitch-line and sliding speeds"),
 ))
 GEAR_KEYS = KeyTable("gear", "one gear of the train", (
     Key("name", "text", None, "the gear's name, e.g. \"2\"", required=True),
@@ -91,8 +90,7 @@ MESH_KEYS = KeyTable("mesh", "two gears of the train in mesh", (
 TRAIN_KEYS = KeyTable("train", "the train as a whole", (
     Key("coaxial", "list", None, "pairs of shafts whose axes must coincide (a reverted train), e.g. "
                                  "[[\"1\", \"4\"]]"),
-    Key("planets", "whole number", 1, "planets spaced equally round the carrier of a simple planetary train, "
-                                      "1 to 24: loads per planet; refused unless they assemble and clear"),
+    Key("planets", "whole number", 1, "planets equally spaced round a simple planetary's carrier, 1 to 24"),
 ))
 CASE_KEYS = KeyTable("case", "one way the train is driven (a planetary train's cases: which member is held)", (
     Key("name", "text", None, "the case's name, e.g. \"carrier held\""),

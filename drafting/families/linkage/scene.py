@@ -25,7 +25,7 @@ from ...scene.effects import SECTIONS as EFFECT_SECTIONS, read_effects
 from ...scene.keys import Key, KeyTable
 from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.unitset import Units
-from .input_position import DRIVING_KEYS, INVERSE_KEYS, read_driving, read_inverse
+from .input_position import INVERSE_KEYS, read_driving, read_inverse
 
 
 SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"}) | EFFECT_SECTIONS
