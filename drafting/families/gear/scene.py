@@ -1,32 +1,9 @@
 """The gear families' sections of a scene file.
 
-A pair in mesh (``kind = "gear pair"``)::
-
-    [teeth]     module = "5 mm" | diametral_pitch = 8 (teeth per inch of pitch diameter);
-                pressure_angle = "20 deg"; system = "full depth" | "stub" (or addendum = 1.0, dedendum = 1.25,
-                the constants in modules); cutter_tip = 0.25 (the tip radius of the rack cutter that
-                generates the teeth, in modules; default c / (1 - sin phi), 0.38 at 20 deg full depth:
-                it decides the fillet and, below the undercut limit, the undercut drawn)
-    [pair]      pinion = 20 (teeth of gear 1, the driver); gear = 40 (teeth of gear 2) or "rack";
-                centre_distance = "152 mm" (optional; for a rack, from O1 to the rack's pitch line);
-                internal = true (gear 2 is an internal gear, a ring, about the pinion); speed = "1000 rpm"
-                (optional, the pinion's: the pitch-line speed and the sliding velocity at the tips)
-
-A gear train (``kind = "gear train"``)::
-
-    [teeth]     module, pressure_angle (as above; the train is laid out and loaded with them)
-    [[gear]]    name = "2"; teeth = 45; shaft = "2" (the member it turns with, default its name: gears on one
-                shaft make a compound gear); carrier = "C" (the arm holding its axis, default the frame);
-                internal = true (a ring)
-    [[mesh]]    gears = ["1", "2"]; angle = "0 deg" (the direction from the first gear's centre to the pitch
-                point; default 0, 90 deg in a planetary train)
-    [train]     coaxial = [["1", "4"]] (shafts whose axes must coincide: a reverted train); planets = 3 (planets
-                spaced equally round the carrier, default 1: each carries 1/n of the load; refused unless
-                (N_S + N_R)/n is whole and neighbouring planets clear, 2 (r_S + r_P) sin(pi/n) > d_aP)
-    [[case]]    name = "carrier held"; driven = "1"; speed = "1000 rpm"; sense = "cw"; held = "C" (a planetary
-                train needs one member held, or a second driven: driven2 = "R", speed2 = "50 rpm",
-                sense2 = "cw", a differential); power = "30 kW" and output = "3" (optional: torques, tooth
-                loads; one driven member only)
+A pair in mesh (``kind = "gear pair"``: ``[teeth]``, ``[pair]``) and a gear train (``kind = "gear train"``:
+``[teeth]``, ``[[gear]]``, ``[[mesh]]``, ``[train]``, ``[[case]]``); each section's keys, with their units,
+defaults and meanings, are the key tables below (:data:`PAIR_TABLES`, :data:`TRAIN_TABLES`), from which
+docs/scene-reference.md and ``drafting keys`` are generated.
 
 Read with the public scene reader, so every error is one sentence naming the file and the key.  Reading
 only reads: whether the pair meshes and each case of a train can be solved are the families' checks
