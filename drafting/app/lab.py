@@ -51,7 +51,7 @@ _POSITION_ROLES = SHOWN_ROLES | {Role.PATH}
 _SENSE_WORDS = re.compile(r"\b(counter-clockwise|anticlockwise|anti-clockwise|clockwise|CCW|CW)\b")
 
 KEY_CSV_HEADER = ("quantity", "kind", "unit", "answer", "direction (deg)", "sense", "tolerance",
-                  "direction tolerance (deg)", "as printed")
+                  "direction tolerance (deg)", "tolerance basis", "as printed")
 
 
 @dataclass(frozen=True)
@@ -78,7 +78,7 @@ class Lab:
 
 def item_cells(i: KeyItem, units) -> list[str]:
     """One key row: quantity, kind, unit, answer (magnitude), direction, sense, tolerance, direction
-    tolerance, the text as printed."""
+    tolerance, how the tolerance was found (:attr:`KeyItem.basis`), the text as printed."""
     v = i.value
     if isinstance(v, Vec):
         mag, direction, sense = units.convert(i.kind, v.norm()), f"{i.direction:.6g}", ""
@@ -90,7 +90,7 @@ def item_cells(i: KeyItem, units) -> list[str]:
             mag = units.convert(i.kind, float(v))
     return [i.name, i.kind, units.symbol(i.kind), f"{mag:.10g}", direction, sense,
             f"{units.convert(i.kind, i.tolerance):.4g}" if i.kind != "angle" else f"{math.degrees(i.tolerance):.4g}",
-            f"{i.direction_tolerance:.3g}" if i.direction_tolerance is not None else "", i.text]
+            f"{i.direction_tolerance:.3g}" if i.direction_tolerance is not None else "", i.basis, i.text]
 
 
 def _info(study: Study, date: str, title: str, number: str, notes: Sequence[str]) -> SheetInfo:
@@ -122,7 +122,8 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
     told = [f"{i.shown} = {i.text} is stated by the problem (not asked)." for i in every if i not in items]
     key_notes = tuple(told) + ("Accepted at drawing accuracy: 1 mm on paper at the worked sheet's scale for a "
                          "value read off a diagram (its direction within the angle 1 mm subtends, at least "
-                         "1\u00b0); 2 % for a value worked out from one; the sense of a rate must be right.",) \
+                         "1\u00b0); a value worked out from readings (V/L, F h) within the error propagated from theirs; the "
+                         "sense of a rate must be right.",) \
         + ((f"The worked solution and the problem sheet are drawn at: {drawn}.",) if drawn else ())
     key = compose_sheets(Construction(s.title, ()), _info(study, date, f"Answer key: {s.title}{suffix}",
                                                           f"{s.drawing_number}-K", key_notes), key_rows,
