@@ -99,10 +99,10 @@ def _info(study: Study, date: str, title: str, number: str, notes: Sequence[str]
                      units=s.units, notes=tuple(notes), scales=s.scales)
 
 
-def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
+def lab_for(study: Study, *, epoch: int | None = None, label: str = "", bare: bool = False) -> Lab:
     """The problem sheet, worked solution and key of a solved ``study`` (run with the space diagram
     dimensioned if the problem sheet is to carry dimensions: :func:`dimensioned`).  ``label`` is added
-    to the titles (a batch's "variant 7")."""
+    to the titles (a batch's "variant 7"); ``bare``: the problem sheet without the construction steps."""
     s = study.scene
     date = sheet_date(epoch)
     suffix = f" ({label})" if label else ""
@@ -114,7 +114,7 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
     every = key_items(study, scales)
     items = tuple(i for i in every if i.magnitude_text not in stated)    # what the problem states is not asked
     given = tuple(given_lines(study, items))
-    problem = problem_sheets(study, scales, given, items, date, suffix)
+    problem = problem_sheets(study, scales, given, items, date, suffix, bare=bare)
     comps = {c.name: c for c in study.comparisons}
     key_rows = [ResultRow(i.shown, i.text, i.analytic or "n/a", study.difference_text(comps[i.name]),
                           f"accept {i.tolerance_text}") for i in items]
@@ -159,10 +159,11 @@ def _given_like(step: Step) -> bool:
     return bool(step.entities) and all(e.diagram.kind == "space" and e.role in _POSITION_ROLES for e in step.entities)
 
 
-def problem_construction(c: Construction) -> tuple[Construction, set]:
+def problem_construction(c: Construction, bare: bool = False) -> tuple[Construction, set]:
     """The construction as a problem sheet shows it, and the values it may print: the space diagram
     keeps what the problem states; a sense of turning in a step that works something out is blanked (the
-    crank's own is in the given data)."""
+    crank's own is in the given data).  ``bare``: every step keeps its entities but not its words, equation or table
+    (the problem without the recipe: its data are in the Given list)."""
     steps = []
     shown = set()
     for st in c.steps:
@@ -174,6 +175,9 @@ def problem_construction(c: Construction) -> tuple[Construction, set]:
         words = st.words
         if not given:           # a sense of turning found on the way (the Coriolis rule names omega_3's) is an answer
             words = _SENSE_WORDS.sub(BLANK, words)
+        if bare:                # the data are in the Given list; the steps' words are the recipe
+            steps.append(replace(st, entities=ents, words="", equation=None, table=()))
+            continue
         steps.append(replace(st, entities=ents, words=words))
     return Construction(c.title, tuple(steps)), shown
 
@@ -195,9 +199,9 @@ def blank_panel(panel, scale=None):
 
 
 def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[KeyItem], date: str,
-                   suffix: str = "") -> tuple[Sheet, ...]:
+                   suffix: str = "", bare: bool = False) -> tuple[Sheet, ...]:
     s = study.scene
-    c, shown = problem_construction(study.construction)
+    c, shown = problem_construction(study.construction, bare)
     rows = [ResultRow(i.shown, ANSWER_LINE, "", "") for i in items]
     info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
 
