@@ -168,3 +168,56 @@ def test_a_hostile_answers_file_is_one_sentence(tmp_path, capsys):
     code, f = check(tmp_path, "V_C,568.5 mm/s,180,,\n")            # empty trailing fields are no answer
     out, err = capsys.readouterr()
     assert code in (0, 1) and err == "" and verdicts(out)["V_C"] == "right", (code, out, err)
+
+
+def slow_example_1(tmp_path) -> Path:
+    """Example 1 with the crank's tip at 94.17 mm/s: omega_2 = 0.3956 rad/s CW, V_CB 37.19 mm/s drawn at
+    1 mm = 2 mm/s, BC 94 mm at 1 mm = 2 mm."""
+    f = tmp_path / "slow.toml"
+    f.write_text(EXAMPLE_1.read_text().replace('tip_speed = "500 mm/s"', 'tip_speed = "94.17 mm/s"'))
+    return f
+
+
+def test_a_small_rate_is_marked_at_the_error_propagated_from_its_readings(tmp_path, capsys):
+    """omega_2 = V_CB / BC: 1 mm at 2 mm/s on V_CB and 1 mm at 2 mm on BC give +- (2 + 0.3956 x 2) / 94
+    = +- 0.0297 rad/s; the issue's 0.31 rad/s (0.0856 off) is wrong, 0.37 right."""
+    scene = slow_example_1(tmp_path)
+    code, _ = check(tmp_path, "V_B,94.17 mm/s at 160 deg\nV_C,107 mm/s at 180 deg\nomega_2,0.31 rad/s cw\n",
+                    scene=scene)
+    out = capsys.readouterr().out
+    assert code == 1
+    got = verdicts(out)
+    assert (got["V_B"], got["V_C"], got["ω_2"]) == ("right", "right", "wrong")
+    assert "expected 0.3956 rad/s CW (± 0.02969 rad/s)" in out
+    code, _ = check(tmp_path, "omega_2,0.37 rad/s cw\n", scene=scene)
+    assert verdicts(capsys.readouterr().out)["ω_2"] == "right"
+
+
+def test_every_key_value_is_marked_right_and_every_item_states_its_tolerance_basis(tmp_path, capsys):
+    from drafting.app.lab import dimensioned, lab_for
+    from drafting.app.solving import load_study, solve_study
+    from drafting.study.study import Study
+    for scene in (EXAMPLE_1, ROOT / "gallery" / "four-bar-dalembert.toml", GEARS, slow_example_1(tmp_path)):
+        lab = lab_for(solve_study(Study(dimensioned(load_study(scene).scene))))
+        rows = list(csv.DictReader(io.StringIO(lab.key_csv())))
+        assert all(r["tolerance"] and r["tolerance basis"] for r in rows), scene
+        lines = []
+        for row in rows:
+            at = f" at {row['direction (deg)']} deg" if row["direction (deg)"] else ""
+            lines.append(f"{row['quantity']},{row['answer']}{at} {row['sense']}".rstrip())   # in the scene's units
+        code, _ = check(tmp_path, "\n".join(lines) + "\n", scene=scene)
+        said = capsys.readouterr()
+        assert code == 0, said
+    basis = {r["quantity"]: r["tolerance basis"] for r in rows}
+    assert basis["V_CB"] == "1 mm on the velocity polygon at 1 mm = 2 mm/s"
+    assert basis["omega_2"] == ("propagated from V_CB ± 2 mm/s (1 mm on the velocity polygon at 1 mm = 2 mm/s) "
+                                "and BC ± 2 mm (1 mm on the space diagram at 1 mm = 2 mm)")
+
+
+def test_a_torque_is_marked_at_the_error_propagated_from_force_and_arm():
+    from drafting.app.lab import dimensioned, lab_for
+    from drafting.app.solving import load_study, solve_study
+    from drafting.study.study import Study
+    lab = lab_for(solve_study(Study(dimensioned(load_study(ROOT / "gallery" / "four-bar-dalembert.toml").scene))))
+    t2 = next(i for i in lab.items if i.name == "T_2")
+    assert t2.basis.startswith("propagated from F ± 0.5 N") and "h ± 5 mm (1 mm on the space diagram" in t2.basis

@@ -145,3 +145,20 @@ def test_a_scene_that_says_dimensions_false_keeps_its_problem_sheet_undimensione
         bad = tmp_path / "bad.toml"
         bad.write_text(src.replace("[drawing]\n", '[drawing]\ndimensions = "yes"\n', 1))
         load_scene(bad)
+
+
+def test_lab_bare_writes_the_problem_sheet_without_the_step_recipe(tmp_path, capsys):
+    """--lab bare: the given data, the dimensioned space diagram and the empty panels; no "Construction"
+    steps and no vector equations (``--lab`` keeps them)."""
+    scene = ROOT / "gallery" / "notes-velocity-example-1.toml"
+    assert main(["render", str(scene), "--lab", "bare", "--format", "svg", "-o", str(tmp_path / "bare")]) == 0
+    assert main(["render", str(scene), "--lab", "--format", "svg", "-o", str(tmp_path / "full")]) == 0
+    capsys.readouterr()
+    bare = " ".join(svg_texts((tmp_path / "bare" / "notes-velocity-example-1-problem.svg").read_text()))
+    full = " ".join(svg_texts((tmp_path / "full" / "notes-velocity-example-1-problem.svg").read_text()))
+    for words in ("Construction", "Vector equations", "Relative velocity equation", "Draw the crank"):
+        assert words in full and words not in bare, words
+    for words in ("Given", "Links: O", "Find: V", "Velocity polygon", "94 mm"):
+        assert words in bare, words
+    assert (tmp_path / "bare" / "notes-velocity-example-1-key.csv").read_text() == \
+        (tmp_path / "full" / "notes-velocity-example-1-key.csv").read_text()

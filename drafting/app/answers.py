@@ -11,10 +11,14 @@ Drawing accuracy (the tolerance of a pencil, not of the engine's 1e-9 check):
   otherwise, with several diagrams of its kind (force polygons of several links), the coarsest counts.
 - A direction is accepted within the angle 1 mm subtends at the tip of the vector as drawn, and never
   less than :data:`DIRECTION_MIN_DEG` (1 degree, a protractor's reading).
-- A value worked out from a reading (an angular velocity is V_CB / BC, a torque a force times an arm) is
-  accepted within :data:`DERIVED_REL` = 2 %: 1 mm in the 50 mm a known vector is drawn at least
-  (DESIGN.md), and never less than 2 % of the largest value of its kind in the key (a rate that is zero
-  is not asked to the last digit).  An angle is accepted within 1 degree.
+- A value worked out from readings (an angular velocity is V_CB / BC, an angular acceleration A^t / L, a
+  torque a force times an arm) is accepted within the error propagated to first order from the readings
+  it comes from, each at its own drawing accuracy (:mod:`drafting.app.accuracy`: a polygon reading 1 mm at
+  its polygon's scale, a length off the space diagram 1 mm at the space diagram's scale), found in the
+  answer step that works it out.  A small rate is so marked as tightly as its own readings allow.  A value
+  the record works out otherwise (a gear train's speeds from tooth numbers, a ratio) is accepted within
+  :data:`DERIVED_REL` = 2 % of itself (2 % of the largest of its kind when it is zero).  An angle is
+  accepted within 1 degree.
 - A rate's sense (CW / CCW) must be right: "2.1 rad/s cw" or a signed "-2.1 rad/s".
 
 An answers file is CSV (``name,value`` rows, an optional header, the value with its unit: ``V_C,568
@@ -37,17 +41,16 @@ from typing import Iterable, Mapping, Sequence
 from constructions.geometry import Vec
 from constructions.quantities import key as quantity_key
 
+from .accuracy import PAPER_MM, derivations, reading_tolerance
 from ..scene import limits
 from ..scene.reader import read_input_text
 from ..scene.textsafe import cut, one_line, printable
 from ..scene.units import UnitError, to_si
 
-PAPER_MM = 1.0
-"""A length on paper is drawn and read to this (mm): half a millimetre each."""
 DIRECTION_MIN_DEG = 1.0
 """A direction is never asked closer than this (degrees)."""
 DERIVED_REL = 0.02
-"""A value worked out from a reading: 1 mm in 50 mm."""
+"""A value worked out other than from readings: 2 % of itself."""
 ANGLE_TOL_DEG = 1.0
 """An angle measured with a protractor."""
 MAX_ANSWERS_BYTES = 64 * 1024
@@ -80,6 +83,7 @@ class KeyItem:
     tolerance_text: str  # "± 10.00 mm/s, ± 1.0°"
     direction_tolerance: float | None = None   # degrees, vectors only
     analytic: str = ""
+    basis: str = ""      # how the tolerance was found: "1 mm on the velocity polygon at 1 mm = 10 mm/s"
 
     @property
     def number_text(self) -> str:
@@ -94,36 +98,50 @@ class KeyItem:
         return None
 
 
-def tolerances(study, comparisons, scales: Mapping[str, object]) -> dict[str, tuple[float, float | None]]:
+def tolerances(study, comparisons, scales: Mapping[str, object]) -> dict[str, tuple[float, float | None, str]]:
     """Each comparison's tolerance at drawing accuracy: name -> (SI tolerance, direction tolerance in
-    degrees or None).  ``scales`` are the worked sheets' diagram scales (key -> DiagramScale)."""
-    coarsest: dict[str, float] = {}
+    degrees or None, how the tolerance was found).  ``scales`` are the worked sheets' diagram scales (key ->
+    DiagramScale)."""
+    from ..study.study import display_name
+    u = study.scene.units
+    coarsest: dict[str, object] = {}
     for s in scales.values():
-        coarsest[s.quantity] = max(coarsest.get(s.quantity, 0.0), s.units_per_mm)
+        if s.quantity not in coarsest or s.units_per_mm > coarsest[s.quantity].units_per_mm:
+            coarsest[s.quantity] = s
     largest: dict[str, float] = {}
     for c in comparisons:
         v = _expected(c)
         if v is not None:
             largest[c.kind] = max(largest.get(c.kind, 0.0), _magnitude(v))
-    out: dict[str, tuple[float, float | None]] = {}
+    derived = derivations(study.construction, scales)
+    out: dict[str, tuple[float, float | None, str]] = {}
     for c in comparisons:
         v = _expected(c)
         if v is None:
             continue
         mag = _magnitude(v)
         own = scales.get(c.diagram) if c.diagram else None
-        upm = own.units_per_mm if own is not None else coarsest.get(DIAGRAM_KIND.get(c.kind, ""))
+        scale = own if own is not None else coarsest.get(DIAGRAM_KIND.get(c.kind, ""))
+        upm = scale.units_per_mm if scale is not None else None
+        d = derived.get(display_name(c.name))
         if c.kind == "angle":
-            tol = math.radians(ANGLE_TOL_DEG)
+            tol, basis = math.radians(ANGLE_TOL_DEG), f"{ANGLE_TOL_DEG:g} deg with a protractor"
         elif upm is not None:
-            tol = PAPER_MM * upm
+            tol, basis = PAPER_MM * upm, reading_tolerance(c.kind, scales, scale.key)[1]
+        elif d is not None:
+            tol = d.tolerance
+            basis = "propagated from " + " and ".join(
+                f"{r.symbol} \u00b1 {u.format(r.kind, r.tolerance)} ({r.basis})" for r in d.readings)
+        elif mag > 0:
+            tol, basis = DERIVED_REL * mag, f"{DERIVED_REL:.0%} of the value (worked out, not read off a diagram)"
         else:
-            tol = DERIVED_REL * max(mag, largest.get(c.kind, 0.0))
+            tol = DERIVED_REL * largest.get(c.kind, 0.0)
+            basis = f"{DERIVED_REL:.0%} of the largest {c.kind} of the key (the value is zero)"
         dtol = None
         if isinstance(v, Vec) and mag > tol:           # a vector within its tolerance of zero has no direction
             paper = mag / upm if upm else 50.0          # no diagram of its kind: as a 50 mm vector
             dtol = max(DIRECTION_MIN_DEG, math.degrees(math.atan2(PAPER_MM, paper)))
-        out[c.name] = (tol, dtol)
+        out[c.name] = (tol, dtol, basis)
     return out
 
 
@@ -147,13 +165,13 @@ def key_items(study, scales: Mapping[str, object]) -> list[KeyItem]:
     for c in comps:
         v = _expected(c)
         text = study.value_text(c, v)
-        tol, dtol = tols[c.name]
+        tol, dtol, basis = tols[c.name]
         mag = u.format(c.kind, _magnitude(v))
         tol_text = f"\u00b1 {u.format(c.kind, tol)}" if c.kind != "angle" else f"\u00b1 {ANGLE_TOL_DEG:g}\u00b0"
         if dtol is not None:
             tol_text += f", \u00b1 {dtol:.1f}\u00b0"
         items.append(KeyItem(c.name, display_name(c.name), c.kind, v, text, mag, tol, tol_text, dtol,
-                             study.value_text(c, c.analytic) if c.analytic is not None else ""))
+                             study.value_text(c, c.analytic) if c.analytic is not None else "", basis))
     return items
 
 

@@ -77,9 +77,10 @@ def parser() -> argparse.ArgumentParser:
     r.add_argument("--format", type=_formats, default=list(FORMATS),
                    help="comma-separated: svg,pdf,png (default: all), and html for the step-through page")
     r.add_argument("--paper", choices=PAPERS, help="override the scene's paper size")
-    r.add_argument("--lab", action="store_true",
+    r.add_argument("--lab", nargs="?", const="full", choices=("full", "bare"),
                    help="also the problem sheet (SCENE-problem.*: given data, empty panels at the stated "
-                        "scales, no answers) and the answer key (SCENE-key.* and SCENE-key.csv)")
+                        "scales, no answers) and the answer key (SCENE-key.* and SCENE-key.csv); "
+                        "--lab bare: the problem sheet without the construction steps")
     r.add_argument("--workers", type=_positive, metavar="N",
                    help="processes for several scenes (default: the cores; 1: one after the other)")
     s = sub.add_parser("solve", help="solve a scene and print its results",

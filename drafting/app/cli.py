@@ -39,11 +39,11 @@ from ..scene.textsafe import safe_streams
 
 
 def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
-               lab: bool = False) -> tuple[str | None, str, int]:
+               lab: str | None = None) -> tuple[str | None, str, int]:
     """Render one scene: ``(error, text, code)`` -- the one-line error (None when it rendered), what to
     print (its results and the files written) and the exit code it stands for (0, or the UserError's: the
     same as ``solve`` and ``check`` give for the scene).  ``lab``: the problem sheet and the answer key beside the worked
-    solution (drafting.app.lab), all written together."""
+    solution (drafting.app.lab), all written together ("bare": the problem sheet without its steps)."""
     from ..backends.files import ExportError
     from ..render.errors import LayoutError
     try:
@@ -67,7 +67,7 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
 
 
 def _write_together(study: Study, out: Path, stem: str, sheet_formats: Sequence[str], page: bool,
-                    lab: bool) -> list[Path]:
+                    lab: str | None) -> list[Path]:
     """The sheets of one render (with ``lab``, the problem sheet, worked solution and key) and, with
     ``page``, its step-through page: one plan, all written together or not at all (a full disk or a
     signal while the page is written leaves no sheet either)."""
@@ -76,7 +76,8 @@ def _write_together(study: Study, out: Path, stem: str, sheet_formats: Sequence[
     if lab:
         from ..layout.sheet import source_date_epoch
         from .lab import lab_for, lab_plan
-        plan = lab_plan(lab_for(study, epoch=source_date_epoch()), out, stem, sheet_formats)
+        plan = lab_plan(lab_for(study, epoch=source_date_epoch(), bare=lab == "bare"), out, stem,
+                        sheet_formats)
     else:
         plan = sheet_plan(sheets, out, stem, sheet_formats) if sheet_formats else []
     if page:

@@ -51,7 +51,7 @@ _POSITION_ROLES = SHOWN_ROLES | {Role.PATH}
 _SENSE_WORDS = re.compile(r"\b(counter-clockwise|anticlockwise|anti-clockwise|clockwise|CCW|CW)\b")
 
 KEY_CSV_HEADER = ("quantity", "kind", "unit", "answer", "direction (deg)", "sense", "tolerance",
-                  "direction tolerance (deg)", "as printed")
+                  "direction tolerance (deg)", "tolerance basis", "as printed")
 
 
 @dataclass(frozen=True)
@@ -78,7 +78,7 @@ class Lab:
 
 def item_cells(i: KeyItem, units) -> list[str]:
     """One key row: quantity, kind, unit, answer (magnitude), direction, sense, tolerance, direction
-    tolerance, the text as printed."""
+    tolerance, how the tolerance was found (:attr:`KeyItem.basis`), the text as printed."""
     v = i.value
     if isinstance(v, Vec):
         mag, direction, sense = units.convert(i.kind, v.norm()), f"{i.direction:.6g}", ""
@@ -90,7 +90,7 @@ def item_cells(i: KeyItem, units) -> list[str]:
             mag = units.convert(i.kind, float(v))
     return [i.name, i.kind, units.symbol(i.kind), f"{mag:.10g}", direction, sense,
             f"{units.convert(i.kind, i.tolerance):.4g}" if i.kind != "angle" else f"{math.degrees(i.tolerance):.4g}",
-            f"{i.direction_tolerance:.3g}" if i.direction_tolerance is not None else "", i.text]
+            f"{i.direction_tolerance:.3g}" if i.direction_tolerance is not None else "", i.basis, i.text]
 
 
 def _info(study: Study, date: str, title: str, number: str, notes: Sequence[str]) -> SheetInfo:
@@ -99,10 +99,10 @@ def _info(study: Study, date: str, title: str, number: str, notes: Sequence[str]
                      units=s.units, notes=tuple(notes), scales=s.scales)
 
 
-def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
+def lab_for(study: Study, *, epoch: int | None = None, label: str = "", bare: bool = False) -> Lab:
     """The problem sheet, worked solution and key of a solved ``study`` (run with the space diagram
     dimensioned if the problem sheet is to carry dimensions: :func:`dimensioned`).  ``label`` is added
-    to the titles (a batch's "variant 7")."""
+    to the titles (a batch's "variant 7"); ``bare``: the problem sheet without the construction steps."""
     s = study.scene
     date = sheet_date(epoch)
     suffix = f" ({label})" if label else ""
@@ -114,7 +114,7 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
     every = key_items(study, scales)
     items = tuple(i for i in every if i.magnitude_text not in stated)    # what the problem states is not asked
     given = tuple(given_lines(study, items))
-    problem = problem_sheets(study, scales, given, items, date, suffix)
+    problem = problem_sheets(study, scales, given, items, date, suffix, bare=bare)
     comps = {c.name: c for c in study.comparisons}
     key_rows = [ResultRow(i.shown, i.text, i.analytic or "n/a", study.difference_text(comps[i.name]),
                           f"accept {i.tolerance_text}") for i in items]
@@ -122,7 +122,8 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "") -> Lab:
     told = [f"{i.shown} = {i.text} is stated by the problem (not asked)." for i in every if i not in items]
     key_notes = tuple(told) + ("Accepted at drawing accuracy: 1 mm on paper at the worked sheet's scale for a "
                          "value read off a diagram (its direction within the angle 1 mm subtends, at least "
-                         "1\u00b0); 2 % for a value worked out from one; the sense of a rate must be right.",) \
+                         "1\u00b0); a value worked out from readings (V/L, F h) within the error propagated from theirs; the "
+                         "sense of a rate must be right.",) \
         + ((f"The worked solution and the problem sheet are drawn at: {drawn}.",) if drawn else ())
     key = compose_sheets(Construction(s.title, ()), _info(study, date, f"Answer key: {s.title}{suffix}",
                                                           f"{s.drawing_number}-K", key_notes), key_rows,
@@ -158,10 +159,11 @@ def _given_like(step: Step) -> bool:
     return bool(step.entities) and all(e.diagram.kind == "space" and e.role in _POSITION_ROLES for e in step.entities)
 
 
-def problem_construction(c: Construction) -> tuple[Construction, set]:
+def problem_construction(c: Construction, bare: bool = False) -> tuple[Construction, set]:
     """The construction as a problem sheet shows it, and the values it may print: the space diagram
     keeps what the problem states; a sense of turning in a step that works something out is blanked (the
-    crank's own is in the given data)."""
+    crank's own is in the given data).  ``bare``: every step keeps its entities but not its words, equation or table
+    (the problem without the recipe: its data are in the Given list)."""
     steps = []
     shown = set()
     for st in c.steps:
@@ -173,6 +175,9 @@ def problem_construction(c: Construction) -> tuple[Construction, set]:
         words = st.words
         if not given:           # a sense of turning found on the way (the Coriolis rule names omega_3's) is an answer
             words = _SENSE_WORDS.sub(BLANK, words)
+        if bare:                # the data are in the Given list; the steps' words are the recipe
+            steps.append(replace(st, entities=ents, words="", equation=None, table=()))
+            continue
         steps.append(replace(st, entities=ents, words=words))
     return Construction(c.title, tuple(steps)), shown
 
@@ -194,9 +199,9 @@ def blank_panel(panel, scale=None):
 
 
 def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[KeyItem], date: str,
-                   suffix: str = "") -> tuple[Sheet, ...]:
+                   suffix: str = "", bare: bool = False) -> tuple[Sheet, ...]:
     s = study.scene
-    c, shown = problem_construction(study.construction)
+    c, shown = problem_construction(study.construction, bare)
     rows = [ResultRow(i.shown, ANSWER_LINE, "", "") for i in items]
     info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
 
