@@ -12,6 +12,7 @@ import numpy as np
 from typing import TYPE_CHECKING, Mapping, NamedTuple
 
 from constructions.mechanisms.classify import classify_four_bar
+from constructions.forces.bodies import torque_name
 from constructions.forces.effects import NO_EFFECTS
 from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
@@ -27,6 +28,7 @@ if TYPE_CHECKING:
 
 from ..registry import Analysis, Family
 from .conventions import conventions
+from .force_output import driving_torque_words
 from .given import given_lines
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, LinkageScene, assembly_check, read_linkage
@@ -190,9 +192,8 @@ def _measured(study) -> list:
     f = study.result("forces")
     if f is not None:
         got = f.measured(m)
-        out += got
-        t = next(x for x in got if x.kind == "torque")
-        out.append(replace(t, name=t.name + VIRTUAL_WORK))
+        i = next(i for i, x in enumerate(got) if x.name == torque_name(m))
+        out += [*got[:i + 1], replace(got[i], name=got[i].name + VIRTUAL_WORK), *got[i + 1:]]
     return out
 
 
@@ -224,7 +225,6 @@ def _analytic_values(study):
     if study.asked("forces"):
         eq, vw = study.get("force check")
         out.update(eq.values(study.scene.mechanism))
-        from constructions.forces.bodies import torque_name
         out[torque_name(study.scene.mechanism) + VIRTUAL_WORK] = vw
     return out or None
 
@@ -263,6 +263,8 @@ def _notes(study) -> tuple[str, ...]:
         if mu is not None:
             line += f", {mu:.0f}\u00b0 as drawn"
         w.append(line[:1].upper() + line[1:] + ".")
+    if s.torque is None and study.result("forces") is not None:
+        w.append(driving_torque_words(study))
     for lp in study.get("loops"):
         q, _, j, o = lp.k.joints
         w.append(f"Loop {q}-{lp.k.joints[1]}-{j}-{o}, driven by link {lp.input}, by its lengths a "
