@@ -182,7 +182,8 @@ def _record(d: Drawing) -> ForceAnalysis:
         loads.append(Arrow(f"space: {ld.name} {i}", Role.LOAD, Diagram.SPACE, at - ld.force.unit() * (0.3 * m.size),
                            at, ld.name))
     if loads:
-        rec = rec.then("The loads as given, on the space diagram.", *loads, kind=StepKind.GIVEN)
+        given = "".join(f" {ld.given}." for ld in d.effects.loads if ld.given)
+        rec = rec.then("The loads as given, on the space diagram." + given, *loads, kind=StepKind.GIVEN)
     for sp in d.effects.springs:
         args, kw = _spring(d, sp)
         rec = rec.then(*args, **kw, kind=StepKind.GIVEN)

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Mapping, NamedTuple
 from constructions.mechanisms.classify import classify_four_bar
 from constructions.forces.bodies import torque_name
 from constructions.forces.effects import NO_EFFECTS
+from constructions.forces.inverse import with_load
 from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
@@ -29,6 +30,7 @@ if TYPE_CHECKING:
 from ..registry import Analysis, Family
 from .conventions import conventions
 from .force_output import driving_torque_words
+from .inverse import INVERSE_ANALYSES, inverse_note, inverse_rows
 from .given import given_lines
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, LinkageScene, assembly_check, read_linkage
@@ -142,7 +144,9 @@ def _cannot_sweep(scene) -> str | None:
 
 
 def _effects(study):
-    return getattr(study.scene, "effects", None) or NO_EFFECTS
+    """The scene's effects, with the load a given torque holds at the magnitude found for it."""
+    e = getattr(study.scene, "effects", None) or NO_EFFECTS
+    return e if e.balance is None else with_load(e, study.get("load for torque"))
 
 
 def _forces(study):
@@ -189,6 +193,7 @@ def _measured(study) -> list:
             out += r.measured(m)
     if study.scene.torque is not None:
         out.append(Measured(f"alpha_{m.crank}", "angular acceleration", study.get("crank alpha")))
+    out += inverse_rows(study, "load for torque")
     f = study.result("forces")
     if f is not None:
         got = f.measured(m)
@@ -222,6 +227,7 @@ def _analytic_values(study):
                 out[x.name + INSTANT_CENTRES] = out[x.name]
     if study.scene.torque is not None:
         out[f"alpha_{study.scene.mechanism.crank}"] = study.get("alpha check")
+    out.update((x.name, x.value) for x in inverse_rows(study, "load check"))
     if study.asked("forces"):
         eq, vw = study.get("force check")
         out.update(eq.values(study.scene.mechanism))
@@ -263,6 +269,7 @@ def _notes(study) -> tuple[str, ...]:
         if mu is not None:
             line += f", {mu:.0f}\u00b0 as drawn"
         w.append(line[:1].upper() + line[1:] + ".")
+    w += inverse_note(study)
     if s.torque is None and study.result("forces") is not None:
         w.append(driving_torque_words(study))
     for lp in study.get("loops"):
@@ -326,6 +333,7 @@ LINKAGE = Family(
         "force check": Analysis("force check", ("position",), _force_check,
                                 label="equilibrium system and virtual work"),
         "turn": Analysis("turn", ("plan",), _turn, label="sweep over the given crank angles"),
+        **INVERSE_ANALYSES,
     },
     askable=("position", "velocity", "acceleration", "forces", "instant centres", "sweep"),
     measured=_measured,
