@@ -62,8 +62,8 @@ def load_for_torque(m, angle: float, omega: float, alpha: float, effects: Effect
     a, ra = 0.0, t(0.0) - target
     b, rb = 1.0, t(1.0) - target
     if abs(rb - ra) <= DEAD_ARM * m.size:          # the torque per newton of the load is its lever arm
-        raise DegenerateInput(f"the load {effects.balance.load} does no work on the crank here (the mechanism "
-                              f"stands at a dead centre for it): no magnitude of it changes the driving "
+        raise DegenerateInput(f"the load {effects.balance.load} does no work on the crank here (as the crank "
+                              f"turns, its point moves square to its line): no magnitude of it changes the driving "
                               f"torque, so the torque cannot fix it")
     scale = max(abs(target), abs(ra + target), abs(rb + target))
     for _ in range(STEPS):

@@ -191,7 +191,10 @@ def _record(d: Drawing) -> ForceAnalysis:
                             lambda b: d.acceleration.angular.get(b, 0.0)) if d.effects.inertial else ()
     for il in inertia:
         what = f"Inertia of {body_label(m, il.body)} (D'Alembert)"
-        if il.acting:
+        if il.acting and not il.turns:                 # a point mass (a block): no couple, no offset
+            rec = rec.then(f"{what}: F_I{il.body} = \u2212m a_G = $f at {il.centre}.",
+                           values={"f": force_value(il.force.norm())}, kind=StepKind.GIVEN)
+        elif il.acting:
             rec = rec.then(f"{what}: F_I{il.body} = \u2212m a_G = $f at {il.centre}, offset $h so that it also stands "
                            f"for the inertia couple I_G \u03b1 = $c (h = I_G \u03b1 / (m a_G)).",
                            values={"f": force_value(il.force.norm()), "h": Value("length", il.offset),

@@ -67,6 +67,12 @@ def forces_json(study) -> dict[str, Any]:
             **u.rate_json(t, "torque"), "name": driver_name(m),
             "meaning": f"the torque the frame (the motor) must apply to link {m.crank}",
             "power_W": t * s.omega, "motor": power_role(t, s.omega), "words": driving_torque_words(study)}}}
+    b = s.effects.balance
+    if b is not None:
+        found = next(ld for ld in s.effects.loads if ld.name == b.load)
+        out["found_load"] = {b.load: {**u.vector_json(found.force * study.get("load for torque"), "force"),
+                                      "magnitude_by_virtual_work": u.convert("force", study.get("load check")),
+                                      "for_torque": u.rate_json(b.torque, "torque")}}
     if f.inertia:
         out["inertia"] = {
             inertia_name(il.body): {
