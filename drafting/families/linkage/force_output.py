@@ -48,7 +48,7 @@ def driving_torque_words(study) -> str:
         return head + (f", with \u03c9_{n} {rot}: its power T\u03c9 = {_power(t * w)} is positive, so the motor "
                        f"drives the mechanism.")
     return head + (f", against \u03c9_{n} {rot}: its power T\u03c9 = \u2212{_power(-t * w)} is negative, so the motor "
-                   f"brakes, absorbing the power with which the loads drive the crank (as on a power stroke).")
+                   f"brakes: it absorbs the power with which the loads drive the crank.")
 
 
 def forces_json(study) -> dict[str, Any]:
