@@ -144,14 +144,23 @@ def test_the_motor_brakes_on_a_power_stroke_and_drives_against_compression():
     stroke = loads(engine())                 # P pushes the piston towards the crank as it moves that way
     t = stroke.to_json()["forces"]["driving_torque"]["T_2"]
     assert closed_form(THETA, W)["v_c"] < 0 and t["value"] < 0 and t["motor"] == "brakes"
-    assert "the motor brakes" in t["words"] and t["words"] in stroke.notes
+    assert "the motor brakes" in t["words"]
+    assert "T_2 is T_12, the torque of the frame (the motor) on link 2; T\u03c9 = \u221268.58 kW < 0: the motor brakes." \
+        in stroke.notes                                        # T omega = -342.88 N m x 200 rad/s
     # the same crank angle turning the other way: the piston moves out against P, the motor drives
     back = loads(engine(sense="cw")).to_json()["forces"]["driving_torque"]["T_2"]
     assert back["value"] < 0 and back["motor"] == "drives" and "the motor drives" in back["words"]
+    assert any(n.endswith("> 0: the motor drives.") for n in loads(engine(sense="cw")).notes)
     assert power_role(2.0, -1.0) == "brakes" and power_role(2.0, 1.0) == "drives" and power_role(2.0, 0.0) == "holds"
 
 
 NOTHING = "Nothing loads the mechanism"
+
+
+def test_the_sheet_leaves_the_inertia_and_friction_rows_to_its_steps():
+    from constructions.forces.dalembert import off_sheet
+    assert [n for n in ("F_I3", "C_I3", "h_I3", "F_14^f") if off_sheet(n)] == ["F_I3", "C_I3", "h_I3", "F_14^f"]
+    assert not [n for n in ("F_14", "T_2", "F_32", "P", "A_CB^t") if off_sheet(n)]
 
 
 def test_a_forces_scene_with_nothing_to_balance_warns_once():

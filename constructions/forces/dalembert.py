@@ -81,6 +81,12 @@ def friction_rows(friction: Mapping[Contact | SlotPin, Vec], condition: float = 
     return [Measured(friction_name(c), "force", f, condition) for c, f in friction.items()]
 
 
+def off_sheet(name: str) -> bool:
+    """True for the rows :func:`inertia_rows` and :func:`friction_rows` write: the sheet's results table
+    leaves them out (its steps state the inertia forces; ``solve``'s table, CSV and JSON list them all)."""
+    return name.startswith(("F_I", "C_I", "h_I")) or name.endswith("^f")
+
+
 def friction_name(c: Contact | SlotPin) -> str:
     """F_03^f: the friction force of the guide 0 on the block 3 (the part of F_03 along the guide)."""
     return force_name(c.guide, c.block if isinstance(c, Contact) else c.carrier) + "^f"

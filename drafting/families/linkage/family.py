@@ -29,7 +29,7 @@ if TYPE_CHECKING:
 
 from ..registry import Analysis, Family
 from .conventions import conventions
-from .force_output import driving_torque_words
+from .force_output import driving_torque_note
 from .inverse import INVERSE_ANALYSES, inverse_note, inverse_rows
 from .given import given_lines
 from .output import linkage_json, transmission_at_pose
@@ -271,7 +271,7 @@ def _notes(study) -> tuple[str, ...]:
         w.append(line[:1].upper() + line[1:] + ".")
     w += inverse_note(study)
     if s.torque is None and study.result("forces") is not None:
-        w.append(driving_torque_words(study))
+        w.append(driving_torque_note(study))
     for lp in study.get("loops"):
         q, _, j, o = lp.k.joints
         w.append(f"Loop {q}-{lp.k.joints[1]}-{j}-{o}, driven by link {lp.input}, by its lengths a "

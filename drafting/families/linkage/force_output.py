@@ -51,6 +51,18 @@ def driving_torque_words(study) -> str:
                    f"brakes: it absorbs the power with which the loads drive the crank.")
 
 
+def driving_torque_note(study) -> str:
+    """The notes' one line on the driving torque: who applies it, and whether the motor drives or brakes."""
+    s, f = study.scene, study.result("forces")
+    m, t, w = s.mechanism, f.torque, s.omega
+    head = f"{torque_name(m)} is {driver_name(m)}, the torque of the frame (the motor) on link {m.crank}"
+    role = power_role(t, w)
+    if role == "holds":
+        return head + ": it does no work here."
+    return head + (f"; T\u03c9 = {_power(t * w)} > 0: the motor drives." if role == "drives" else
+                   f"; T\u03c9 = \u2212{_power(-t * w)} < 0: the motor brakes.")
+
+
 def forces_json(study) -> dict[str, Any]:
     """The force analysis as JSON: joint forces, the driving torque with its driver and power, the inertia
     force, couple and offset of every body with mass, and the friction force at every slide with mu."""
