@@ -20,6 +20,7 @@ from ..polygons.common import rounding_estimate
 from ..record import StepKind, Value
 from ..tolerance import PARALLEL_SINE, WARN_SINE
 from .bodies import force_name
+from .dalembert import inertia_loads, inertia_name
 from .effects import Effects
 
 ORIGIN = Vec(0.0, 0.0)
@@ -83,18 +84,13 @@ def known_forces(m: Mechanism, pose: Pose, effects: Effects, acceleration=None
         if effects.gravity is not None:
             forces.setdefault(ms.body, []).append(Force(f"W_{ms.body}", ms.body, g_at,
                                                         effects.gravity * ms.mass, "weight"))
-        if acceleration is None:
-            continue
-        a_g = acceleration.accelerations[ms.centre]
-        al = acceleration.angular.get(ms.body, 0.0)
-        f_i = a_g * (-ms.mass)
-        c_i = -ms.inertia * al
-        if f_i.dot(f_i) > 0:                            # (a subnormal force squares to 0: none)
-            # one force on the offset line: d x F_I = C_I, d square to F_I, h = |C_I| / |F_I|
-            d = f_i.perp() * (-c_i / f_i.dot(f_i))
-            forces.setdefault(ms.body, []).append(Force(f"F_I{ms.body}", ms.body, g_at + d, f_i, "inertia"))
-        elif c_i != 0.0:
-            couples[ms.body] = couples.get(ms.body, 0.0) + c_i
+    if acceleration is not None:
+        for il in inertia_loads(effects, acceleration.accelerations, lambda b: acceleration.angular.get(b, 0.0)):
+            if il.acting:                                # one force on the offset line: d x F_I = C_I
+                forces.setdefault(il.body, []).append(Force(inertia_name(il.body), il.body,
+                                                            pos[il.centre] + il.shift(), il.force, "inertia"))
+            elif il.couple != 0.0:
+                couples[il.body] = couples.get(il.body, 0.0) + il.couple
     return forces, couples
 
 

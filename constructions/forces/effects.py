@@ -15,12 +15,24 @@ from ..geometry import Vec
 
 @dataclass(frozen=True, slots=True)
 class Load:
-    """An external force ``force`` (N) on body ``body``, acting at its point ``at``."""
+    """An external force ``force`` (N) on body ``body``, acting at its point ``at``; ``given`` says how the
+    scene gave it when that was not as a force (a gas pressure on a bore: "p \u03c0 d\u00b2/4 with ...")."""
 
     name: str
     body: int
     at: str
     force: Vec
+    given: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class Balance:
+    """The inverse static problem: the load named ``load`` -- its line and direction given, its force a
+    unit vector along them -- has the magnitude that needs the driving torque ``torque`` (N m, CCW positive)
+    on the crank (:mod:`.inverse`)."""
+
+    load: str
+    torque: float
 
 
 @dataclass(frozen=True, slots=True)
@@ -76,7 +88,8 @@ class Spring:
 class Effects:
     """Everything that loads a mechanism.  ``gravity`` is the acceleration of gravity as a vector (None:
     no weights); ``friction`` maps a slider block (or a pin in a slot, by its joint name) to its mu;
-    ``fixed`` names the fixed points springs may be anchored to, with their positions."""
+    ``fixed`` names the fixed points springs may be anchored to, with their positions; ``balance`` is the
+    load to be found for a given driving torque (None: every load is given)."""
 
     loads: tuple[Load, ...] = ()
     couples: tuple[Couple, ...] = ()
@@ -85,6 +98,7 @@ class Effects:
     gravity: Vec | None = None
     friction: dict[int | str, float] = field(default_factory=dict)
     fixed: dict[str, Vec] = field(default_factory=dict)
+    balance: Balance | None = None
 
     @property
     def inertial(self) -> bool:

@@ -35,6 +35,7 @@ from ..mechanisms.pose import locate
 from ..mechanisms.topology import Connection, Contact, Pin, SlotPin, connections, moving_bodies, points_of_body
 from ..tolerance import NEGLIGIBLE, SIGN_SLACK, SINGULAR_RCOND
 from .bodies import force_name, torque_name
+from .dalembert import InertiaLoad, friction_rows, inertia_loads, inertia_rows
 from .effects import Effects
 
 ZERO = Vec(0.0, 0.0)
@@ -49,7 +50,8 @@ class Equilibrium:
     couple of the guide on the block (N m, 0 for a pin in a slot); ``friction`` holds the friction part of
     that force where friction acts; ``torque`` is the driving torque on the crank by the frame (CCW+);
     ``condition`` the reciprocal condition number of the row- and column-scaled system; ``warnings``
-    names the slides whose friction was left out because nothing slides there."""
+    names the slides whose friction was left out because nothing slides there; ``inertia`` each massive
+    body's inertia force and couple from the analytic accelerations."""
 
     pins: Mapping[Pin, Vec]
     contacts: Mapping[Contact | SlotPin, tuple[Vec, float]]
@@ -57,9 +59,11 @@ class Equilibrium:
     condition: float
     friction: Mapping[Contact | SlotPin, Vec] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
+    inertia: tuple[InertiaLoad, ...] = ()
 
     def values(self, m: Mechanism) -> dict[str, Vec | float]:
-        """Every force under the notes' names, both ways round (F_ji = -F_ij), and the driving torque."""
+        """Every force under the notes' names, both ways round (F_ji = -F_ij), the driving torque, the inertia
+        forces and couples and the friction forces."""
         out: dict[str, Vec | float] = {}
         for p, f in self.pins.items():
             out[force_name(p.carrier, p.other)] = f
@@ -69,6 +73,7 @@ class Equilibrium:
             out[force_name(c.guide, on)] = f
             out[force_name(on, c.guide)] = -f
         out[torque_name(m)] = self.torque
+        out.update((x.name, x.value) for x in inertia_rows(self.inertia) + friction_rows(self.friction))
         return out
 
 
@@ -291,7 +296,9 @@ def equilibrium(m: Mechanism, angle: float, omega: float, alpha: float, effects:
         if c in along:
             friction[c] = t * (along[c] * float(x[i]))
         contacts[c] = (n * float(x[i]) + friction.get(c, ZERO), float(x[i + 1]) if isinstance(c, Contact) else 0.0)
-    return Equilibrium(pins, contacts, float(x[-1]), rcond, friction, tuple(warnings))
+    inertia = inertia_loads(effects, kin.accelerations, lambda b: _body_rate(m, b, kin.angular_acceleration)
+                            ) if effects.inertial else ()
+    return Equilibrium(pins, contacts, float(x[-1]), rcond, friction, tuple(warnings), inertia)
 
 
 def _solve(A: np.ndarray, rhs: np.ndarray, size: float, angle: float) -> tuple[np.ndarray, float]:

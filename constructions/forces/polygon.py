@@ -38,7 +38,7 @@ from ..mechanisms.topology import Contact, Pin, frame_number
 from ..geometry import Vec
 from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines,
                                    assembly_plan)
-from ..mechanisms.model import Mechanism
+from ..mechanisms.model import Mechanism, slide_line
 from ..mechanisms.pose import Pose
 from ..quantities import Measured
 from ..entities import Arrow, Curve, Diagram, Role, Segment
@@ -46,6 +46,8 @@ from ..record import Construction, StepKind, Value
 from .bodies import force_name, torque_name
 from .board import Drawing, Force, ForcesNotDrawn, body_label, force_value, known_forces, resultant
 from .crank import driving_crank
+from .dalembert import InertiaLoad, friction_rows, inertia_loads, inertia_rows
+from .friction import friction_at
 from .free_body_links import free_bodies
 from .dyads import rrp, rrr
 from .effects import Effects, Spring
@@ -60,7 +62,9 @@ class ForceAnalysis:
 
     ``pins[pin]`` is the force of ``pin.carrier`` on ``pin.other``; ``contacts[c]`` is the total force of the
     guide on the block (or on the pin in a slot) and the guide's couple on the block; ``torque`` is the
-    driving torque on the crank.  ``conditions`` maps each polygon to the sine at which its closing lines
+    driving torque on the crank; ``inertia`` each massive body's inertia force and couple (from the
+    acceleration polygon); ``friction`` the friction part of the guide's force, along the guide, at every
+    slide where mu is set.  ``conditions`` maps each polygon to the sine at which its closing lines
     crossed."""
 
     construction: Construction
@@ -74,6 +78,8 @@ class ForceAnalysis:
     inertial: bool = False
     acceleration_condition: float = 1.0
     bodies: Mapping[int, tuple[Force, ...]] = field(default_factory=dict)
+    inertia: tuple[InertiaLoad, ...] = ()
+    friction: Mapping[object, Vec] = field(default_factory=dict)
 
     @property
     def worst_condition(self) -> float:
@@ -97,7 +103,7 @@ class ForceAnalysis:
             body = k.block if isinstance(k, Contact) else k.carrier
             out.append(Measured(force_name(k.guide, body), "force", v, c))
         out.append(Measured(torque_name(m), "torque", self.torque, c))
-        return out
+        return out + inertia_rows(self.inertia, self.acceleration_condition) + friction_rows(self.friction, c)
 
 
 def force_analysis(m: Mechanism, pose: Pose, effects: Effects, *, velocity=None, acceleration=None) -> ForceAnalysis:
@@ -108,6 +114,8 @@ def force_analysis(m: Mechanism, pose: Pose, effects: Effects, *, velocity=None,
     if effects.friction and velocity is None:
         raise ValueError("friction acts against the sliding velocity: pass the velocity polygon")
     d = Drawing(m, pose, effects, velocity, acceleration)
+    if not any(x.vector.dot(x.vector) > 0 for fs in d.forces.values() for x in fs) and not any(d.couples.values()):
+        d.warnings.append(NOTHING_TO_BALANCE)
     plan = assembly_plan(m)
     for step in reversed(plan[1:]):
         if isinstance(step, FixedToLink):
@@ -128,6 +136,11 @@ def force_analysis(m: Mechanism, pose: Pose, effects: Effects, *, velocity=None,
 
 
 # -- the record ---------------------------------------------------------------------------------------
+
+NOTHING_TO_BALANCE = ("Nothing loads the mechanism: no load, couple, spring, weight or inertia force acts on it "
+                      "here (the scene gives none, or they are all zero at this pose), so every joint force and "
+                      "the driving torque are zero.")
+"""The warning of a force analysis with nothing to balance."""
 
 SPRING_COILS = 6
 """The zigzags of a spring drawn on the space diagram."""
@@ -169,33 +182,31 @@ def _record(d: Drawing) -> ForceAnalysis:
         loads.append(Arrow(f"space: {ld.name} {i}", Role.LOAD, Diagram.SPACE, at - ld.force.unit() * (0.3 * m.size),
                            at, ld.name))
     if loads:
-        rec = rec.then("The loads as given, on the space diagram.", *loads, kind=StepKind.GIVEN)
+        given = "".join(f" {ld.given}." for ld in d.effects.loads if ld.given)
+        rec = rec.then("The loads as given, on the space diagram." + given, *loads, kind=StepKind.GIVEN)
     for sp in d.effects.springs:
         args, kw = _spring(d, sp)
         rec = rec.then(*args, **kw, kind=StepKind.GIVEN)
-    if d.effects.inertial:
-        for ms in d.effects.masses:
-            a_g = d.acceleration.accelerations[ms.centre]
-            al = d.acceleration.angular.get(ms.body, 0.0)
-            f = a_g.norm() * ms.mass
-            c = ms.inertia * abs(al)
-            h = c / f if f > 0 else 0.0
-            if f > 0:
-                rec = rec.then(f"Inertia of {body_label(m, ms.body)} (D'Alembert): F_I{ms.body} = \u2212m a_G = $f "
-                               f"at {ms.centre}, offset $h so that it also stands for the inertia couple "
-                               f"I_G \u03b1 = $c (h = I_G \u03b1 / (m a_G)).",
-                               values={"f": force_value(f), "h": Value("length", h), "c": Value("torque", c)},
-                               kind=StepKind.GIVEN)
-            elif c > 0:
-                sense = "CCW" if al < 0 else "CW"          # -I_G alpha
-                rec = rec.then(f"Inertia of {body_label(m, ms.body)} (D'Alembert): its centre of gravity "
-                               f"{ms.centre} does not accelerate, so there is no inertia force, only the inertia "
-                               f"couple \u2212I_G \u03b1 = $c {sense}.", values={"c": Value("torque", c)},
-                               kind=StepKind.GIVEN)
-            else:
-                rec = rec.then(f"Inertia of {body_label(m, ms.body)} (D'Alembert): neither its centre of gravity "
-                               f"{ms.centre} nor its turning accelerates: no inertia force or couple.",
-                               kind=StepKind.GIVEN)
+    inertia = inertia_loads(d.effects, d.acceleration.accelerations,
+                            lambda b: d.acceleration.angular.get(b, 0.0)) if d.effects.inertial else ()
+    for il in inertia:
+        what = f"Inertia of {body_label(m, il.body)} (D'Alembert)"
+        if il.acting and not il.turns:                 # a point mass (a block): no couple, no offset
+            rec = rec.then(f"{what}: F_I{il.body} = \u2212m a_G = $f at {il.centre}.",
+                           values={"f": force_value(il.force.norm())}, kind=StepKind.GIVEN)
+        elif il.acting:
+            rec = rec.then(f"{what}: F_I{il.body} = \u2212m a_G = $f at {il.centre}, offset $h so that it also stands "
+                           f"for the inertia couple I_G \u03b1 = $c (h = I_G \u03b1 / (m a_G)).",
+                           values={"f": force_value(il.force.norm()), "h": Value("length", il.offset),
+                                   "c": Value("torque", abs(il.couple))}, kind=StepKind.GIVEN)
+        elif il.couple != 0.0:
+            sense = "CCW" if il.couple > 0 else "CW"          # -I_G alpha
+            rec = rec.then(f"{what}: its centre of gravity {il.centre} does not accelerate, so there is no inertia "
+                           f"force, only the inertia couple \u2212I_G \u03b1 = $c {sense}.",
+                           values={"c": Value("torque", abs(il.couple))}, kind=StepKind.GIVEN)
+        else:
+            rec = rec.then(f"{what}: neither its centre of gravity {il.centre} nor its turning accelerates: no "
+                           f"inertia force or couple.", kind=StepKind.GIVEN)
     bodies = free_bodies(d)                       # (moves the lines the constructions drew on the free bodies)
     for words, entities, eq, values, kind in d.steps:
         rec = rec.then(words, *entities, equation=eq, values=values, kind=kind)
@@ -204,4 +215,14 @@ def _record(d: Drawing) -> ForceAnalysis:
     acc_cond = d.acceleration.worst_condition if d.acceleration is not None else 1.0
     return ForceAnalysis(rec, dict(d.pins), dict(d.contacts), d.torque, dict(d.cond), tuple(d.warnings),
                          d.scale, m.size, d.effects.inertial, acc_cond,
-                         {b: tuple(v) for b, v in d.forces.items()})
+                         {b: tuple(v) for b, v in d.forces.items()}, inertia, _friction(d))
+
+
+def _friction(d: Drawing) -> dict[object, Vec]:
+    """The friction part of each guide's force read off its polygon: its component along the guide."""
+    out: dict[object, Vec] = {}
+    for c, (f, _) in d.contacts.items():
+        if friction_at(d, c.slide):
+            t = slide_line(d.m, c.slide, d.pos).direction.unit()
+            out[c] = t * f.dot(t)
+    return out

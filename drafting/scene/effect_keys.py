@@ -13,8 +13,14 @@ LOAD_KEYS = KeyTable("load", "an external force on a point of a body", (
     Key("name", "text", None, "the load's name (loads, couples and springs each need their own)", required=True),
     Key("link", "whole number", None, "the body: a link or slider-block number", required=True),
     Key("at", "text", None, "the point of that body it acts at (a joint or a [[point]])", required=True),
-    Key("force", "force", None, "the magnitude", required=True),
+    Key("force", "force", None, "the magnitude (or pressure and bore, or torque: exactly one of them)"),
     Key("angle", "angle", None, "its direction, CCW from +x", required=True),
+    Key("pressure", "pressure", None, "a gas pressure on a piston (a block on a fixed guide), with bore: "
+                                      "F = p pi d^2/4 along the line of stroke (a plain number is MPa)"),
+    Key("bore", "length", None, "the bore the pressure acts on (with pressure)"),
+    Key("torque", "torque", None, "the driving torque this load holds: its magnitude is then the unknown, "
+                                  "found by equilibrium and checked by virtual work (one such load)"),
+    Key("sense", "text", None, "the sense of a positive torque (with torque)", choices=("ccw", "cw")),
 ), array=True)
 COUPLE_KEYS = KeyTable("couple", "an external couple on a body", (
     Key("name", "text", None, "the couple's name", required=True),

@@ -16,13 +16,14 @@ from dataclasses import replace
 from typing import Any
 
 from constructions.forces import inertia as inertia_of
-from constructions.forces.effects import NO_EFFECTS, Couple, Effects, End, Load, Mass, Spring
+from constructions.forces.effects import NO_EFFECTS, Balance, Couple, Effects, End, Mass, Spring
 from constructions.geometry import Vec
 from constructions.mechanisms.model import Attached, Mechanism
 
 from . import limits
 from .effect_keys import COUPLE_KEYS, FRICTION_KEYS, GRAVITY_KEYS, LOAD_KEYS, MASS_KEYS, SPRING_KEYS
 from .keys import KeyTable
+from .loads import polar, read_loads
 from .unitset import Units
 
 SECTIONS = frozenset({"gravity", "load", "couple", "mass", "spring", "friction"})
@@ -62,6 +63,7 @@ class _EffectsReader:
         self.blocks = m.blocks()
         self.links = {k.number: k for k in m.links}
         self.names: dict[str, str] = {}          # effect name -> the key that gave it
+        self.balance: Balance | None = None       # the load to be found for a given torque
 
     # -- helpers -------------------------------------------------------------------------------------
     def fail(self, key: str, problem: str):
@@ -129,7 +131,7 @@ class _EffectsReader:
         couples = tuple(self.couples())
         springs, fixed = self.springs()
         friction = self.friction()
-        return m, Effects(loads, couples, masses, springs, gravity, friction, fixed)
+        return m, Effects(loads, couples, masses, springs, gravity, friction, fixed, self.balance)
 
     def gravity(self) -> Vec | None:
         if "gravity" not in self.r.data:
@@ -279,15 +281,8 @@ class _EffectsReader:
         return inertia_of.shape_inertia(shape, mass, *values)
 
     def loads(self):
-        for k, t in self.items("load", LOAD_KEYS):
-            name = self.name(f"{k}.name", t["name"])
-            body = self.body(f"{k}.link", t["link"])
-            at = self.point(f"{k}.at", t["at"], body)
-            force = self.quantity(f"{k}.force", t["force"], "force")
-            if force < 0:
-                raise self.fail(f"{k}.force", "is the magnitude: give it positive and turn angle by 180 deg")
-            angle = self.quantity(f"{k}.angle", t["angle"], "angle")
-            yield Load(name, body, at, polar(force, angle))
+        loads, self.balance = read_loads(self, LOAD_KEYS)
+        return loads
 
     def couples(self):
         for k, t in self.items("couple", COUPLE_KEYS):
@@ -360,14 +355,6 @@ class _EffectsReader:
                                            f"angle of at most 84 deg), e.g. 0.15")
             out[n], where[n] = float(mu), k
         return out
-
-
-def polar(length: float, angle: float) -> Vec:
-    """``length`` at ``angle``, exact along the axes (180 deg gives (-F, 0), not (-F, 4.9e-15))."""
-    q = angle / (math.pi / 2)
-    if abs(q - round(q)) < 1e-12:
-        return Vec(*((length, 0.0), (0.0, length), (-length, 0.0), (0.0, -length))[round(q) % 4])
-    return Vec.polar(length, angle)
 
 
 def _shape_of(dimension: str) -> str:

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from typing import Any, Iterator
 
 QUANTITIES = ("length", "velocity", "acceleration", "angular velocity", "angular acceleration", "angle", "force",
-              "torque", "mass", "moment of inertia", "stiffness", "power")
+              "torque", "mass", "moment of inertia", "stiffness", "power", "pressure")
 """The kinds of quantity a key's value may be (given in ``[units]``' unit of that kind, or with its own)."""
 VALUES = ("text", "whole number", "number", "true/false", "point", "list", "table", "unit")
 """What a key's value is when it is no quantity."""

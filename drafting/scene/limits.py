@@ -60,6 +60,7 @@ MAGNITUDES: dict[str, tuple[float, float]] = {
     "moment of inertia": (1e-15, 1e12),
     "stiffness": (1e-12, 1e15),
     "power": (1e-12, 1e12),
+    "pressure": (1e-12, 1e15),
     "angle": (0.0, 2 * math.pi * 1e4),
 }
 LENGTH_RATIO = 1e6

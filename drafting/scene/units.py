@@ -32,6 +32,7 @@ KINDS: dict[str, tuple[str, str]] = {
     "moment of inertia": ("kg m^2", "[mass] * [length] ** 2"),
     "stiffness": ("N/m", "[mass] / [time] ** 2"),
     "power": ("W", "[mass] * [length] ** 2 / [time] ** 3"),
+    "pressure": ("Pa", "[mass] / [length] / [time] ** 2"),
     "ratio": ("", ""),              # a plain number (a contact ratio): no unit at all
 }
 
@@ -48,13 +49,14 @@ DEFAULT_UNITS: dict[str, str] = {
     "moment of inertia": "kg m^2",
     "stiffness": "N/mm",
     "power": "kW",
+    "pressure": "MPa",
     "ratio": "",
 }
 
 _EXAMPLES = {"length": "50 mm", "velocity": "500 mm/s", "angular velocity": "10 rad/s", "angle": "70 deg",
              "acceleration": "2000 mm/s^2", "angular acceleration": "5 rad/s^2", "force": "100 N",
              "torque": "20 N m", "mass": "2.5 kg", "moment of inertia": "0.01 kg m^2",
-             "stiffness": "2 N/mm", "power": "30 kW", "ratio": "1.6"}
+             "stiffness": "2 N/mm", "power": "30 kW", "pressure": "2 MPa", "ratio": "1.6"}
 
 # names pint does not know that people write
 _ALIASES = {"rev": "revolution", "revs": "revolution", "\u00b0": "degree", "sec": "second"}

@@ -8,6 +8,8 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
+from constructions.forces.dalembert import off_sheet
+
 
 def builtin_example() -> Path:
     """The scene ``drafting`` renders with no arguments: the notes' velocity Example 1."""
@@ -21,7 +23,8 @@ def sheets_for(study):
     s = study.scene
     info = SheetInfo(title=s.title, drawing_number=s.drawing_number, paper=s.paper, orientation=s.orientation,
                      date=sheet_date(), units=s.units, notes=study.notes + study.warnings, scales=s.scales)
-    rows = [ResultRow(q, g, a, d) for q, g, a, d in study.table().text]
+    rows = [ResultRow(q, g, a, d) for (q, g, a, d), c in zip(study.table().text, study.comparisons)
+            if not off_sheet(c.name)]
     return tuple(Sheet.of(page) for page in compose_sheets(study.construction, info, rows))
 
 

@@ -12,7 +12,9 @@ import numpy as np
 from typing import TYPE_CHECKING, Mapping, NamedTuple
 
 from constructions.mechanisms.classify import classify_four_bar
+from constructions.forces.bodies import torque_name
 from constructions.forces.effects import NO_EFFECTS
+from constructions.forces.inverse import with_load
 from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
@@ -29,8 +31,10 @@ if TYPE_CHECKING:
 
 from ..registry import Analysis, Family
 from .conventions import conventions
+from .force_output import driving_torque_note
 from .given import given_lines
 from .inverse import driven_analytic, driven_measured, driven_notes, inverse_analytic, inverse_measured, inverse_notes
+from .inverse_load import LOAD_ANALYSES, found_load_note, found_load_rows
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, TABLES, LinkageScene, assembly_check, read_linkage
 from .vary import read_vary
@@ -157,7 +161,9 @@ def _cannot_sweep(scene) -> str | None:
 
 
 def _effects(study):
-    return getattr(study.scene, "effects", None) or NO_EFFECTS
+    """The scene's effects, with the load a given torque holds at the magnitude found for it."""
+    e = getattr(study.scene, "effects", None) or NO_EFFECTS
+    return e if e.balance is None else with_load(e, study.get("load for torque"))
 
 
 def _forces(study):
@@ -205,12 +211,12 @@ def _measured(study) -> list:
     if study.scene.torque is not None:
         out.append(Measured(f"alpha_{m.crank}", "angular acceleration", study.get("crank alpha")))
     out += inverse_measured(study.scene) + driven_measured(study.scene)
+    out += found_load_rows(study, "load for torque")
     f = study.result("forces")
     if f is not None:
         got = f.measured(m)
-        out += got
-        t = next(x for x in got if x.kind == "torque")
-        out.append(replace(t, name=t.name + VIRTUAL_WORK))
+        i = next(i for i, x in enumerate(got) if x.name == torque_name(m))
+        out += [*got[:i + 1], replace(got[i], name=got[i].name + VIRTUAL_WORK), *got[i + 1:]]
     return out
 
 
@@ -241,10 +247,10 @@ def _analytic_values(study):
         out[f"alpha_{study.scene.mechanism.crank}"] = study.get("alpha check")
     out.update(inverse_analytic(study.scene))
     out.update(driven_analytic(study.scene, study.get("position").positions))
+    out.update((x.name, x.value) for x in found_load_rows(study, "load check"))
     if study.asked("forces"):
         eq, vw = study.get("force check")
         out.update(eq.values(study.scene.mechanism))
-        from constructions.forces.bodies import torque_name
         out[torque_name(study.scene.mechanism) + VIRTUAL_WORK] = vw
     return out or None
 
@@ -284,6 +290,9 @@ def _notes(study) -> tuple[str, ...]:
         if mu is not None:
             line += f", {mu:.0f}\u00b0 as drawn"
         w.append(line[:1].upper() + line[1:] + ".")
+    w += found_load_note(study)
+    if s.torque is None and study.result("forces") is not None:
+        w.append(driving_torque_note(study))
     for lp in study.get("loops"):
         q, _, j, o = lp.k.joints
         w.append(f"Loop {q}-{lp.k.joints[1]}-{j}-{o}, driven by link {lp.input}, by its lengths a "
@@ -345,6 +354,7 @@ LINKAGE = Family(
         "force check": Analysis("force check", ("position",), _force_check,
                                 label="equilibrium system and virtual work"),
         "turn": Analysis("turn", ("plan",), _turn, label="sweep over the given crank angles"),
+        **LOAD_ANALYSES,
     },
     askable=("position", "velocity", "acceleration", "forces", "instant centres", "sweep"),
     measured=_measured,

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from ...scene.unitset import direction_deg
+from .force_output import forces_json
 
 
 def transmission_at_pose(study) -> float | None:
@@ -79,11 +80,6 @@ def linkage_json(study) -> dict[str, Any]:
                              else {"at_infinity": True, "direction_deg": direction_deg(c.direction) % 180})
             for q, c in sorted(ic.centres.items())}
         out["instant_centres_missing"] = [centre_name(q) for q in ic.missing]
-    f = study.result("forces")
-    if f is not None:
-        rows = {x.name: x.value for x in f.measured(m)}
-        out["forces"] = {
-            "dynamic": f.inertial,
-            "forces": {n: u.vector_json(v, "force") for n, v in rows.items() if not isinstance(v, float)},
-            "driving_torque": {n: u.rate_json(v, "torque") for n, v in rows.items() if isinstance(v, float)}}
+    if study.result("forces") is not None:
+        out["forces"] = forces_json(study)
     return out

@@ -262,6 +262,9 @@ def read_linkage(r: SceneReader, units: Units) -> dict:
     if torque is not None and not effects.inertial:
         raise r.fail("input.torque", "a torque on the crank sets its angular acceleration only through "
                                      "masses: give the moving links a [[mass]], or give alpha instead")
+    if torque is not None and effects.balance is not None:
+        raise r.fail("input.torque", f"the load {effects.balance.load} is already found from a torque on the "
+                                     f"crank; give the torque there or here, not both")
     return {"mechanism": m, "angle": angle, "omega": omega, "alpha": alpha, "torque": torque,
             "effects": effects, "inverse": inverse, "solution": solution, "driven": driven}
 
