@@ -11,9 +11,11 @@ rad, where the curvature of f drowns in rounding).
 from __future__ import annotations
 
 import math
+import os
 import statistics
 import sys
 import time
+from datetime import datetime, timezone
 from pathlib import Path
 
 CHECKOUT = Path(__file__).resolve().parents[1]
@@ -21,6 +23,7 @@ sys.path.insert(0, str(CHECKOUT))             # run from a checkout, uninstalled
 
 import numpy as np  # noqa: E402
 
+from drafting.app.bench import machine_speed  # noqa: E402
 from drafting.scene.reader import load_scene, parse_scene  # noqa: E402
 
 GALLERY = CHECKOUT / "gallery"
@@ -124,3 +127,11 @@ def e(x: float) -> str:
 def ms(seconds: float) -> str:
     v = seconds * 1e3
     return f"{v:.3g}"
+
+
+def machine() -> str:
+    """The date, the machine's load and the speed of a fixed loop of plain Python in this run (the
+    yardstick of ``drafting bench``: 7.5-8.1 ms on the project's machine when quiet)."""
+    load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
+    return (f"{datetime.now(timezone.utc):%Y-%m-%d %H:%M} UTC, load average {load} on {os.cpu_count()} cores, "
+            f"yardstick loop {machine_speed() * 1e3:.1f} ms")

@@ -30,7 +30,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
 
-from accuracy_common import crank_rocker, e, markdown, ms, quick_return, slider_crank, timed  # noqa: E402
+from accuracy_common import crank_rocker, e, machine, markdown, ms, quick_return, slider_crank, timed  # noqa: E402
 from constructions.mechanisms import constraint_continuation, constraint_kinematics  # noqa: E402
 from constructions.mechanisms.constraint_continuation import continue_constraints  # noqa: E402
 from constructions.sweep import sweep  # noqa: E402
@@ -121,7 +121,7 @@ def rows(mechanism: str, tolerances=TOLERANCES, angles: int = ANGLES, repeat: in
     for tol in tolerances:
         with tolerance(tol):
             got, t = timed(_run, scene, th, repeat=repeat)
-        kinds = [dict(zip(names, (getattr(got, k)[n] for n in names))) for k in ("positions", "velocities", "accelerations")]
+        kinds = [{n: getattr(got, k)[n] for n in names} for k in ("positions", "velocities", "accelerations")]
         errs = [_error(kinds[0], ref["positions"], names, size)]
         errs += [_error(kinds[i], ref[k], names, _largest(ref[k], names))
                  for i, k in ((1, "velocities"), (2, "accelerations"))]
@@ -143,4 +143,5 @@ def tables(tolerances=TOLERANCES, angles: int = ANGLES, repeat: int = 3) -> str:
 
 
 if __name__ == "__main__":
+    print(machine())
     print(tables())

@@ -24,8 +24,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
 
-from accuracy_common import (OFFSET, TURN, crank_rocker, e, exact_max, markdown, ms, slider_crank,  # noqa: E402
-                             timed)
+from accuracy_common import (OFFSET, TURN, crank_rocker, e, exact_max, machine, markdown, ms,  # noqa: E402
+                             slider_crank, timed)
 from constructions.mechanisms.classify import classify_four_bar  # noqa: E402
 from constructions.mechanisms.cycle import transmission_angles  # noqa: E402
 from constructions.sweep import sweep  # noqa: E402
@@ -163,4 +163,5 @@ def tables(steps=STEPS_DEG, repeat: int = 5) -> str:
 
 
 if __name__ == "__main__":
+    print(machine())
     print(tables())
