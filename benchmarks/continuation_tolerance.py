@@ -129,12 +129,20 @@ def rows(mechanism: str, tolerances=TOLERANCES, angles: int = ANGLES, repeat: in
     return out, t_ref
 
 
-def tables(tolerances=TOLERANCES, angles: int = ANGLES, repeat: int = 3) -> str:
+MECHANISMS = (("crank-rocker", "the crank-rocker (gallery/cycle-four-bar.toml), closed form"),
+              ("slider-crank", "the offset slider-crank, closed form"),
+              ("quick-return", "the slotted-lever quick-return (gallery), closed form of P and Q"))
+
+
+def measure(tolerances=TOLERANCES, angles: int = ANGLES, repeat: int = 3):
+    """name -> (rows, closed form's seconds) for every mechanism."""
+    return {name: rows(name, tolerances, angles, repeat) for name, _ in MECHANISMS}
+
+
+def tables(measured, angles: int = ANGLES) -> str:
     parts = []
-    for name, what in (("crank-rocker", "the crank-rocker (gallery/cycle-four-bar.toml), closed form"),
-                       ("slider-crank", "the offset slider-crank, closed form"),
-                       ("quick-return", "the slotted-lever quick-return (gallery), closed form of P and Q")):
-        data, t_ref = rows(name, tolerances, angles, repeat)
+    for name, what in MECHANISMS:
+        data, t_ref = measured[name]
         parts.append(f"{angles} angles, {what}: {ms(t_ref)} ms\n\n" + markdown(
             ["tolerance (residual)", "continuation (ms)", "positions (/ size)", "velocities (/ largest)",
              "accelerations (/ largest)"],
@@ -142,6 +150,11 @@ def tables(tolerances=TOLERANCES, angles: int = ANGLES, repeat: int = 3) -> str:
     return "\n\n".join(parts)
 
 
+def chart_series(measured):
+    """(name, [(ms, the larger of the velocity and acceleration errors), ...]) a mechanism each."""
+    return [(name, [(t * 1e3, max(v, a)) for _, t, _, v, a in measured[name][0]]) for name, _ in MECHANISMS]
+
+
 if __name__ == "__main__":
     print(machine())
-    print(tables())
+    print(tables(measure()))

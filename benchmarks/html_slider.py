@@ -110,15 +110,28 @@ def page_bytes() -> int:
 COLUMNS = ("rocker angle", "transmission angle", "pin C", "pin D", "omega_4", "alpha_4", "omega_3", "alpha_3")
 
 
-def table(counts=POSES, reference: int = REFERENCE, repeat: int = 3) -> str:
+def table(measured) -> str:
     head = ["poses (step)", "card (ms)", "card (kB)", "rocker angle (deg)", "transmission angle (deg)",
             "pin C (mm)", "coupler point D (mm)", "omega_4 (/ largest)", "alpha_4 (/ largest)",
             "omega_3 (/ largest)", "alpha_3 (/ largest)"]
     return markdown(head, [[f"{n} ({360 / n:g} deg)", ms(t), f"{size / 1e3:.0f}"] + [e(err[c]) for c in COLUMNS]
-                           for n, t, size, err in rows(counts, reference, repeat)])
+                           for n, t, size, err in measured])
+
+
+def chart_series(measured):
+    """(name, [(card kB, error), ...]): the rates as a fraction of their largest, the coupler point's
+    position of the frame's length (60 mm)."""
+    out = [(f"{c} (/ largest)", [(size / 1e3, err[c]) for _, _, size, err in measured])
+           for c in ("omega_4", "alpha_4", "omega_3", "alpha_3")]
+    return out + [("coupler point D (/ frame)", [(size / 1e3, err["pin D"] / 60.0) for _, _, size, err in measured])]
+
+
+def report(measured) -> str:
+    """The table and the whole page's size at the default poses."""
+    return (f"{table(measured)}\n\nThe whole page at {family.SWEEP_STEPS} poses (sheet, steps and card): "
+            f"{page_bytes() / 1e3:.0f} kB")
 
 
 if __name__ == "__main__":
     print(machine())
-    print(table())
-    print(f"\nThe whole page at {family.SWEEP_STEPS} poses (sheet, steps and card): {page_bytes() / 1e3:.0f} kB")
+    print(report(rows()))

@@ -145,9 +145,13 @@ def slider_rows(steps=STEPS_DEG, repeat: int = 5):
     return out, ex
 
 
-def tables(steps=STEPS_DEG, repeat: int = 5) -> str:
-    fb, fx = four_bar_rows(steps, repeat)
-    sc, sx = slider_rows(steps, repeat)
+def measure(steps=STEPS_DEG, repeat: int = 5):
+    """Both mechanisms' rows and exact values: (four-bar rows, exact, slider rows, exact)."""
+    return four_bar_rows(steps, repeat) + slider_rows(steps, repeat)
+
+
+def tables(measured) -> str:
+    fb, fx, sc, sx = measured
     a = markdown(["step (deg)", "angles", "sweep + extremes (ms)", "transmission angle extremes (deg)",
                   "limit positions: rocker angle (deg)", "limit positions: crank angle (deg)",
                   "largest omega_4 (relative)", "largest alpha_4 (relative)"],
@@ -162,6 +166,20 @@ def tables(steps=STEPS_DEG, repeat: int = 5) -> str:
             f"{sx['x'][1] * 1e3:.6f} mm, largest |V_C| {sx['v']:.9g} m/s, |A_C| {sx['a']:.9g} m/s^2\n\n{b}")
 
 
+def chart_series(measured):
+    """(name, [(ms, relative error), ...]) for the chart: angles as a fraction of their range."""
+    fb, fx, sc, sx = measured
+    mu, swing = DEG(fx["mu"][1] - fx["mu"][0]), DEG(fx["rocker"][0] - fx["rocker"][1])
+    stroke = sx["x"][0] - sx["x"][1]
+
+    def of(rows, i, scale):
+        return [(t * 1e3, err[i] / scale) for _, _, t, err in rows]
+    return [("transmission angle extremes / range", of(fb, 0, mu)),
+            ("rocker's limit positions / swing", of(fb, 1, swing)),
+            ("largest omega_4", of(fb, 3, 1.0)), ("largest alpha_4", of(fb, 4, 1.0)),
+            ("slider's dead centres / stroke", of(sc, 0, stroke)), ("largest V_C", of(sc, 2, 1.0))]
+
+
 if __name__ == "__main__":
     print(machine())
-    print(tables())
+    print(tables(measure()))

@@ -56,3 +56,12 @@ def test_the_slider_shows_values_nearer_with_more_poses_and_restores_its_count()
     assert (n1, n2) == (36, 72) and size2 > size1
     assert all(fine[k] < coarse[k] for k in slider.COLUMNS)
     assert family.SWEEP_STEPS == before
+
+
+def test_a_chart_of_each_section_is_written(tmp_path):
+    chart = benchmark("loglog_chart")
+    m = slider.rows(counts=(36, 72), reference=720, repeat=1)
+    chart.chart(slider.chart_series(m), tmp_path / "slider.svg", "card (kB)", "error")
+    svg = (tmp_path / "slider.svg").read_text()
+    assert svg.count("<polyline") == 5 and "coupler point D (/ frame)" in svg
+    assert (tmp_path / "slider.png").stat().st_size > 1000
