@@ -2,14 +2,14 @@
 extremes, the limit positions (the rocker's swing, a slider's dead centres), the largest velocity and
 acceleration of the output -- against the exact values, for a crank-rocker and an offset slider-crank.
 
-The sweep is :func:`constructions.sweep.sweep` (the closed forms over arrays) at one turn of crank angles in
-steps of 10, 5, 1 (a sheet's sweep), 0.5, 0.1 and 0.01 deg; a value found by sampling is the largest (or
-smallest) sample.  The exact values: the transmission angle's extremes and the limit positions in closed
-form (:func:`constructions.mechanisms.classify.classify_four_bar`; for the slider, x = sqrt((l +- r)^2 - e^2)),
-the largest velocity and acceleration by zooming in on the largest sample until the bracket is below 1e-12
-rad (:func:`accuracy_common.refine_max`).  Each error is the worst over eight starting angles a step apart
-/ 8 (a sweep starts at the scene's angle, which may or may not land on an extreme); the time is the median
-of 5 sweeps with the sampling of their extremes, one core.
+The sweep is :func:`constructions.sweep.sweep` (the closed forms over arrays) at one turn of crank angles
+in steps of 10, 5 (``drafting sweep``'s default), 1 (a sheet's sweep), 0.5, 0.1 and 0.01 deg; a value found
+by sampling is the largest (or smallest) sample.  The exact values: the transmission angle's extremes and
+the limit positions in closed form (:func:`constructions.mechanisms.classify.classify_four_bar`; for the
+slider, x = sqrt((l +- r)^2 - e^2)), the largest velocity and acceleration by zooming in on the largest
+sample until the bracket is below 1e-12 rad (:func:`accuracy_common.refine_max`).  Each error is the worst
+over eight starting angles an eighth of a step apart (a sweep starts at the scene's angle, which may or may
+not land on an extreme); the time is the median of 5 sweeps with the sampling of their extremes, one core.
 
 Usage: ``python benchmarks/sweep_step.py``.
 """
