@@ -19,6 +19,9 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # run from a checkout, uninstalled
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import loglog_chart as ch  # noqa: E402
 
 import numpy as np  # noqa: E402
 from shapely.geometry import Polygon  # noqa: E402
@@ -120,108 +123,27 @@ def rows():
     return out
 
 
-# -- the chart: error against time, log-log (svgwrite; the PNG through cairosvg) ------------------------------
-
-W, H = 180.0, 140.0                     # mm
-X0, X1, Y0, Y1 = 24.0, 172.0, 8.0, 104.0  # the plot area
-FONT = "DejaVu Sans"
-MARKS = ("circle", "square", "triangle", "diamond")
-DASHES = (None, "4,1.2", "1.2,1", "6,1.2,1.2,1.2")
-
-
-def _pos(ms, err, xr, yr):
-    x = X0 + (math.log10(ms) - xr[0]) / (xr[1] - xr[0]) * (X1 - X0)
-    y = Y1 - (math.log10(err) - yr[0]) / (yr[1] - yr[0]) * (Y1 - Y0)
-    return x, y
-
-
-def _mark(dwg, g, kind, x, y, r=1.3):
-    st = dict(fill="white", stroke="black", stroke_width=0.3)
-    if kind == "circle":
-        g.add(dwg.circle((x, y), r, **st))
-    elif kind == "square":
-        g.add(dwg.rect((x - r, y - r), (2 * r, 2 * r), **st))
-    elif kind == "triangle":
-        g.add(dwg.polygon([(x, y - 1.25 * r), (x - 1.15 * r, y + 0.8 * r), (x + 1.15 * r, y + 0.8 * r)], **st))
-    else:
-        g.add(dwg.polygon([(x, y - 1.35 * r), (x + r, y), (x, y + 1.35 * r), (x - r, y)], **st))
-
-
-SUPERSCRIPT = str.maketrans("-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079")
-
-
-def _power(dwg, x, y, k, anchor):
-    """10^k with the exponent in superscript digits (one text run: no shifted tspan to drift)."""
-    return dwg.text("10" + str(k).translate(SUPERSCRIPT), insert=(x, y), font_size=3.0, font_family=FONT,
-                    text_anchor=anchor)
-
-
-def _label(dwg, g, text, x, y, anchor="start", size=3.0):
-    """A label on a white ground (it crosses grid lines)."""
-    w = 0.56 * size * len(text)
-    left = x - (w if anchor == "end" else w / 2 if anchor == "middle" else 0.0)
-    g.add(dwg.rect((left - 0.6, y - size * 0.85), (w + 1.2, size * 1.15), fill="white"))
-    g.add(dwg.text(text, insert=(x, y), font_size=size, font_family=FONT, text_anchor=anchor))
-
+# -- the chart: error against time, log-log (benchmarks/loglog_chart.py) -----------------------------------
 
 def chart_svg(data, path: Path, default_rel: float = 1e-6) -> None:
     """The log-log chart of error against milliseconds, one line and marker per method."""
-    import svgwrite
-    xr = (math.floor(math.log10(min(r[3] for r in data))), math.ceil(math.log10(max(r[3] for r in data))))
-    yr = (math.floor(math.log10(min(r[4] for r in data))), math.ceil(math.log10(max(r[4] for r in data))))
-    dwg = svgwrite.Drawing(str(path), size=(f"{W}mm", f"{H}mm"), viewBox=f"0 0 {W} {H}", profile="full")
-    dwg.add(dwg.rect((0, 0), (W, H), fill="white"))
-    g = dwg.g()
-    dwg.add(g)
-    for k in range(xr[0], xr[1] + 1):                       # decades: grid lines and numbers
-        for m in range(1, 10):
-            v = math.log10(m) + k
-            if v > xr[1]:
-                break
-            x = _pos(10 ** v, 10 ** yr[0], xr, yr)[0]
-            g.add(dwg.line((x, Y0), (x, Y1), stroke="#bbbbbb" if m == 1 else "#e4e4e4", stroke_width=0.2))
-        x = _pos(10 ** k, 10 ** yr[0], xr, yr)[0]
-        g.add(_power(dwg, x, Y1 + 5.0, k, "middle"))
-    for k in range(yr[0], yr[1] + 1):
-        y = _pos(10 ** xr[0], 10 ** k, xr, yr)[1]
-        g.add(dwg.line((X0, y), (X1, y), stroke="#bbbbbb", stroke_width=0.2))
-        g.add(_power(dwg, X0 - 1.5, y + 1.0, k, "end"))
-    g.add(dwg.rect((X0, Y0), (X1 - X0, Y1 - Y0), fill="none", stroke="black", stroke_width=0.35))
+    xr, yr = ch.ranges([r[3] for r in data], [r[4] for r in data])
+    dwg, g = ch.axes(path, xr, yr)
     # the 1 ms aimed at, and the default tolerance
-    x1ms = _pos(1.0, 10 ** yr[0], xr, yr)[0]
-    g.add(dwg.line((x1ms, Y0), (x1ms, Y1), stroke="black", stroke_width=0.25, stroke_dasharray="2,1"))
-    ytol = _pos(10 ** xr[0], default_rel, xr, yr)[1]
-    g.add(dwg.line((X0, ytol), (X1, ytol), stroke="black", stroke_width=0.25, stroke_dasharray="2,1"))
-    for i, name in enumerate(SERIES):
-        pts = sorted([_pos(r[3], r[4], xr, yr) for r in data if r[0] == name], key=lambda q: -q[1])
-        line = dwg.polyline(pts, fill="none", stroke="black", stroke_width=0.35)
-        if DASHES[i]:
-            line["stroke-dasharray"] = DASHES[i]
-        g.add(line)
-        for x, y in pts:
-            _mark(dwg, g, MARKS[i], x, y)
-    _label(dwg, g, "1 ms", x1ms + 1.2, Y0 + 4.0)
-    _label(dwg, g, "1e-6 of the cam size", X1 - 2.0, ytol + 4.2, "end")
+    x1ms = ch.pos(1.0, 10 ** yr[0], xr, yr)[0]
+    g.add(dwg.line((x1ms, ch.Y0), (x1ms, ch.Y1), stroke="black", stroke_width=0.25, stroke_dasharray="2,1"))
+    ytol = ch.pos(10 ** xr[0], default_rel, xr, yr)[1]
+    g.add(dwg.line((ch.X0, ytol), (ch.X1, ytol), stroke="black", stroke_width=0.25, stroke_dasharray="2,1"))
+    ch.lines(dwg, g, [(name, [(r[3], r[4]) for r in data if r[0] == name]) for name in SERIES], xr, yr)
+    ch.label(dwg, g, "1 ms", x1ms + 1.2, ch.Y0 + 4.0)
+    ch.label(dwg, g, "1e-6 of the cam size", ch.X1 - 2.0, ytol + 4.2, "end")
     # the default: circled, its label at the lower left of the point
-    dx, dy = next(_pos(r[3], r[4], xr, yr) for r in data if r[0] == SERIES[1] and r[1] == default_rel)
+    dx, dy = next(ch.pos(r[3], r[4], xr, yr) for r in data if r[0] == SERIES[1] and r[1] == default_rel)
     g.add(dwg.circle((dx, dy), 2.6, fill="none", stroke="black", stroke_width=0.3))
     g.add(dwg.line((dx - 1.9, dy + 1.9), (dx - 8.0, dy + 8.0), stroke="black", stroke_width=0.25))
-    _label(dwg, g, "the default (1e-6)", dx - 8.5, dy + 11.0, "end")
-    # the legend: under the chart, two columns
-    for i, name in enumerate(SERIES):
-        lx, y = X0 + (i % 2) * 76.0, H - 13.0 + 5.0 * (i // 2)
-        line = dwg.line((lx, y - 1.0), (lx + 14.0, y - 1.0), stroke="black", stroke_width=0.35)
-        if DASHES[i]:
-            line["stroke-dasharray"] = DASHES[i]
-        g.add(line)
-        _mark(dwg, g, MARKS[i], lx + 7.0, y - 1.0, 1.1)
-        g.add(dwg.text(name, insert=(lx + 16.0, y), font_size=3.0, font_family=FONT))
-    g.add(dwg.text("time per profile (ms, median of %d runs)" % REPEAT, insert=((X0 + X1) / 2, Y1 + 12.0),
-                   font_size=3.5, font_family=FONT, text_anchor="middle"))
-    yl = dwg.text("largest error / cam size (no unit)", insert=(6.0, (Y0 + Y1) / 2), font_size=3.5,
-                  font_family=FONT, text_anchor="middle")
-    yl.rotate(-90, center=(6.0, (Y0 + Y1) / 2))
-    g.add(yl)
+    ch.label(dwg, g, "the default (1e-6)", dx - 8.5, dy + 11.0, "end")
+    ch.legend(dwg, g, SERIES)
+    ch.titles(dwg, g, "time per profile (ms, median of %d runs)" % REPEAT, "largest error / cam size (no unit)")
     dwg.save()             # not pretty: whitespace between a number and its exponent would show
 
 
@@ -237,8 +159,7 @@ def main(argv=None) -> int:
               f"{name:34} {n:7d} {m:7d} {ms:8.3f} {err:13.2e}")
     if a.chart:
         chart_svg(data, a.chart)
-        import cairosvg
-        cairosvg.svg2png(url=str(a.chart), write_to=str(a.chart.with_suffix(".png")), dpi=150)
+        ch.png(a.chart)
         print(f"wrote {a.chart} and {a.chart.with_suffix('.png')}")
     return 0
 
