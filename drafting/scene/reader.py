@@ -22,11 +22,11 @@ from . import limits
 from .textsafe import cut, cut_middle, one_line, printable
 from .drawing_scales import read_scales
 from .units import UnitError, check_unit, to_si
+from .papers import PAPERS
 
 PLANNED_KINDS = (
 )
 """Scene families announced but not built yet: a scene of one of these kinds gets a clear "not yet"."""
-PAPERS = ("A4", "A3")
 ORIENTATIONS = ("landscape", "portrait")
 
 COMMON_KEYS = frozenset({"kind", "drawing", "units", "ask", "vary"})
