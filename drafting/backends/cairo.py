@@ -44,11 +44,10 @@ def _cairo():
     os.environ.setdefault("FONTCONFIG_FILE", str(FONTS_CONF))
     prebuilt = cairo_ffi.install()      # its declarations prebuilt, not parsed on every start
     try:
-        import cairocffi
+        with cairo_ffi.loading():       # and libcairo.so.2 opened without running ldconfig
+            import cairocffi
     except Exception:
-        if not prebuilt:
-            raise
-        cairo_ffi.uninstall()           # the prebuilt declarations did not fit: cairocffi's own parse
+        cairo_ffi.uninstall()           # cairocffi's own parse and search, as it always did
         import cairocffi
     return cairocffi
 

@@ -7,6 +7,11 @@ one in the user's cache folder, named by a hash of the installed cairocffi's dec
 version, and hands its ``ffi`` to cairocffi as ``cairocffi.ffi`` before cairocffi is imported.  The
 library, its functions and every drawing call are cairocffi's own: only the parsing is skipped.
 
+On Linux cairocffi's search for the library by name (``ctypes.util.find_library``, which runs ``ldconfig``
+and ``gcc`` as child processes: seven processes, tens of ms) is skipped while it loads (:func:`loading`):
+it then opens ``libcairo.so.2``, its next candidate and the name that search gives on Linux, through the
+same dynamic loader.
+
 Anything unusual -- no cache folder, an unwritable one, xcffib installed (cairocffi then adds the XCB
 declarations), a cairocffi already imported -- and :func:`install` does nothing: ``import cairocffi``
 then parses as it always did.
@@ -14,6 +19,7 @@ then parses as it always did.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import importlib.util
 import os
@@ -90,3 +96,26 @@ def uninstall() -> None:
     """Forget the prebuilt ``ffi`` and whatever part of cairocffi was imported with it."""
     for name in [m for m in sys.modules if m == "cairocffi" or m.startswith("cairocffi.")]:
         del sys.modules[name]
+
+
+CAIRO_NAMES = frozenset({"cairo-2", "cairo", "libcairo-2"})
+"""The names cairocffi looks cairo up by before it opens ``libcairo.so.2`` (cairocffi/__init__.py)."""
+
+
+@contextlib.contextmanager
+def loading():
+    """While cairocffi is imported on Linux: ``find_library`` answers None for cairo's names (any other
+    name is looked up as always), so cairocffi opens ``libcairo.so.2`` without running ldconfig."""
+    if not sys.platform.startswith("linux"):
+        yield
+        return
+    import ctypes.util
+    search = ctypes.util.find_library
+
+    def find_library(name):
+        return None if name in CAIRO_NAMES else search(name)
+    ctypes.util.find_library = find_library
+    try:
+        yield
+    finally:
+        ctypes.util.find_library = search
