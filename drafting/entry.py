@@ -1,4 +1,5 @@
-"""The ``drafting`` command's entry point: it imports the application only once it can answer an
+"""The ``drafting`` command's entry point: it imports the application (and the command, which
+:func:`drafting.app.cli.main` loads before putting its own handlers in place) only once it can answer an
 interrupt, so a Ctrl-C while numpy and the engine are still loading ends the run with one line and exit
 130 (no traceback, and no file exists yet).  Everything else is :func:`drafting.app.cli.main`.
 
@@ -23,7 +24,8 @@ def main(argv=None) -> int:
     previous = signal.signal(signal.SIGINT, _end_while_loading) if main_thread else None
     try:
         from .app.cli import main as run
-    finally:
+    except BaseException:
         if main_thread:
             signal.signal(signal.SIGINT, previous)
-    return run(argv, exiting=True)
+        raise
+    return run(argv, exiting=True)          # loads the command's own modules under our handler, then its own

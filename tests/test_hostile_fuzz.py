@@ -127,7 +127,7 @@ def test_a_leaked_warning_is_seen(tmp_path, monkeypatch):
 
     import drafting.app.cli as cli
 
-    def warn(argv):
+    def warn(*args):
         warnings.warn("overflow encountered in multiply", RuntimeWarning)
         return 0
     monkeypatch.setattr(cli, "_main", warn)

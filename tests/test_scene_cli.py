@@ -375,11 +375,11 @@ def test_an_undeclared_fixed_pivot_is_named(tmp_path, capsys):
 
 
 def test_rendering_several_scenes_shows_progress_on_a_terminal_only(tmp_path, capsys, monkeypatch):
-    from drafting.app import cli as c
+    from drafting.app import progress
     scenes = [str(GALLERY / "notes-velocity-example-1.toml"), str(GALLERY / "notes-velocity-example-2.toml")]
     assert main(["render", *scenes, "-o", str(tmp_path), "--format", "svg"]) == 0
     assert "%" not in capsys.readouterr().err
-    monkeypatch.setattr(c, "_is_tty", lambda stream: True)
+    monkeypatch.setattr(progress, "is_tty", lambda stream: True)
     assert main(["render", *scenes, "-o", str(tmp_path), "--format", "svg"]) == 0
     err = capsys.readouterr().err
     assert "\rrender [" in err and "100.0 %" in err

@@ -4,11 +4,11 @@
 from __future__ import annotations
 
 import argparse
-import importlib.metadata
+import sys
 from pathlib import Path
 
-from .cam_export import add_export_arguments
-from ..scene.reader import PAPERS
+from ..families.cam.tolerance import EXPORT_TOLERANCE
+from ..scene.papers import PAPERS
 
 FORMATS = ("svg", "pdf", "png")
 DEFAULT_OUT = Path("drafting-output")
@@ -49,10 +49,23 @@ PAGE = "html"
 
 def _version() -> str:
     """The installed distribution's version (pyproject.toml's), or "unknown" when run from a bare tree."""
+    import importlib.metadata              # slow to load: only for --version
     try:
         return importlib.metadata.version("tom-drafting")
     except importlib.metadata.PackageNotFoundError:
         return "unknown"
+
+
+class _VersionAction(argparse.Action):
+    """``--version`` as argparse's own prints it, the installed version looked up only when asked."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS,
+                 help="show program's version number and exit"):
+        super().__init__(option_strings, dest=dest, default=default, nargs=0, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(f"{parser.prog} {_version()}", file=sys.stdout)
+        parser.exit()
 
 
 class _Parser(argparse.ArgumentParser):
@@ -68,7 +81,7 @@ def parser() -> argparse.ArgumentParser:
         "Draw the graphical methods of the theory of machines step by step on true-scale sheets, "
         "checked against the analytic answer. With no command, renders the built-in example "
         "(the notes' slider-crank velocity Example 1) into ./drafting-output."))
-    p.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
+    p.add_argument("--version", action=_VersionAction)
     sub = p.add_subparsers(dest="command")
     r = sub.add_parser("render", help="render scene files to sheets (SVG, PDF, PNG)",
                        description="Render each scene to a sheet and print its results table.")
@@ -164,3 +177,13 @@ def parser() -> argparse.ArgumentParser:
                                                     "gear-train: three-gears, planetary)")
     e.add_argument("-o", "--out", type=Path, metavar="FILE", help="the file to write (default: print it)")
     return p
+
+
+def add_export_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
+    """The export's arguments on ``parser`` (:mod:`drafting.app.cam_export`'s own command line, or the
+    ``drafting export`` subcommand): the scene, the output folder and the relative tolerance."""
+    parser.add_argument("scene", help="a cam scene file (kind = \"cam\")")
+    parser.add_argument("-o", "--out", default=".", help="the folder for SCENE-profile.csv and .dxf and SCENE-stations.csv")
+    parser.add_argument("--tolerance", type=float, default=EXPORT_TOLERANCE,
+                        help="chord tolerance relative to the cam's size (default 1e-6)")
+    return parser

@@ -21,6 +21,7 @@ from typing import Callable
 from .bench_gallery import format_gallery_rows, gallery_json, gallery_rows, gallery_scenes
 from .bench_sweep import format_table, sweep_rows
 from .parallel import GC_YOUNG
+from .solving import UserError
 from ..backends import cairo as cairo_out
 from ..backends.files import PNG_DPI
 from ..backends.svg import sheet_to_svg
@@ -215,3 +216,18 @@ def run_gallery(quick: bool = False, as_json: bool = False) -> str:
     if as_json:
         return gallery_json(rows, repeats)
     return "\n".join([format_gallery_rows(rows, repeats), format_machine_speed(speed)])
+
+
+def cmd_bench(quick: bool, peers: bool = False, gallery: bool = False, as_json: bool = False) -> int:
+    if as_json and not gallery:
+        raise UserError("bench --json goes with --gallery")
+    try:
+        print(run_gallery(quick=quick, as_json=as_json) if gallery else run_benchmarks(quick=quick, peers=peers))
+    except BenchmarksMissing as e:             # installed without the checkout: one sentence, exit 2
+        raise UserError(f"bench {'--gallery' if gallery else '--peers'}: {e}") from None
+    return 0
+
+
+def run_command(args) -> int:
+    """``drafting bench [--quick] [--peers] [--gallery [--json]]``."""
+    return cmd_bench(args.quick, args.peers, args.gallery, args.json)

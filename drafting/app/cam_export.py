@@ -18,8 +18,9 @@ from pathlib import Path
 from ..backends.cam_files import csv_text, dxf_bytes
 from ..backends.files import ExportError, prepare_folder, write_outputs
 from ..scene.reader import SceneError, load_scene
-from ..families.cam.machining import EXPORT_TOLERANCE, EXPORT_TOLERANCE_RANGE
 from ..families.cam.tables import stations_csv
+from ..families.cam.tolerance import EXPORT_TOLERANCE, EXPORT_TOLERANCE_RANGE
+from .arguments import add_export_arguments
 from ..study.study import Study
 
 
@@ -36,16 +37,6 @@ def export(scene_path: str | Path, out_dir: str | Path, tolerance_rel: float = E
                                      (out / f"{stem}.dxf", lambda: dxf_bytes(scene, pts, tol)),
                                      (out / f"{Path(scene_path).stem}-stations.csv",
                                       lambda: stations_csv(study).encode("utf-8"))])
-
-
-def add_export_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
-    """The export's arguments on ``parser`` (this module's own command line, or a ``drafting export``
-    subcommand): the scene, the output folder and the relative tolerance."""
-    parser.add_argument("scene", help="a cam scene file (kind = \"cam\")")
-    parser.add_argument("-o", "--out", default=".", help="the folder for SCENE-profile.csv and .dxf and SCENE-stations.csv")
-    parser.add_argument("--tolerance", type=float, default=EXPORT_TOLERANCE,
-                        help="chord tolerance relative to the cam's size (default 1e-6)")
-    return parser
 
 
 def run_export(args: argparse.Namespace) -> int:
@@ -76,3 +67,7 @@ __all__ = ["export", "add_export_arguments", "run_export", "main"]
 
 if __name__ == "__main__":
     sys.exit(main())
+
+
+run_command = run_export
+"""``drafting export``: this module's entry from the command table (drafting.app.cli.COMMANDS)."""

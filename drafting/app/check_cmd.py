@@ -3,6 +3,7 @@ scene's key (or a batch variant's) at drawing accuracy."""
 
 from __future__ import annotations
 
+import argparse
 import sys
 import tomllib
 from pathlib import Path
@@ -84,3 +85,14 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
         print(f"  note: {answers}: {name!r} is not a quantity of this scene; it asks for "
               f"{', '.join(i.shown for i in items)}")
     return 0 if counts["right"] == len(marks) else EXIT_DISAGREE
+
+
+def run_command(args: argparse.Namespace) -> int:
+    """``drafting check SCENE...``, or with ``--answers`` one scene's answers marked."""
+    if args.answers is not None:
+        if len(args.scenes) != 1:
+            raise UserError("--answers marks the answers to one scene; give one SCENE")
+        return cmd_check_answers(args.scenes[0], args.answers, args.variant, args.seed)
+    if args.variant is not None or args.seed is not None:
+        raise UserError("--variant and --seed go with --answers")
+    return cmd_check(args.scenes)

@@ -33,3 +33,8 @@ def cmd_keys(kind: str | None, as_markdown: bool) -> int:
         return 0
     print(text(kind_named(kind)), end="")
     return 0
+
+
+def run_command(args) -> int:
+    """``drafting keys [KIND] [--markdown]``."""
+    return cmd_keys(args.kind, args.markdown)

@@ -76,3 +76,7 @@ def cmd_lint(scenes: Sequence[Path], as_json: bool = False) -> int:
     if status:
         return status
     return EXIT_FINDINGS if every else 0
+
+
+def run_command(args) -> int:
+    return cmd_lint(args.scenes, args.json)

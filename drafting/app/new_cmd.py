@@ -121,3 +121,8 @@ def cmd_new(kind: str, example: str | None, out: Path | None) -> int:
         raise UserError(f"new: {out} cannot be written: {e.strerror or 'input/output error'}") from None
     print(f"  wrote {out}")
     return 0
+
+
+def run_command(args) -> int:
+    """``drafting new KIND [--example NAME] [-o FILE]``."""
+    return cmd_new(args.kind, args.example, args.out)

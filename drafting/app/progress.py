@@ -56,3 +56,8 @@ def _is_terminal(stream) -> bool:
         return bool(stream.isatty())
     except (AttributeError, ValueError):
         return False
+
+
+def is_tty(stream) -> bool:
+    """Whether ``stream`` (or the terminal behind the CLI's escaping wrapper) is a terminal."""
+    return _is_terminal(getattr(stream, "unescaped", stream))

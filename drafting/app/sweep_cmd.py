@@ -5,8 +5,8 @@ degrees or radians).  With ``--csv`` the table is written in the scene's units, 
 empty cells where the mechanism cannot be assembled (gaps), atomically (a temporary file beside the
 destination renamed into place).  Without it a short summary is printed.
 
-This module must not import :mod:`drafting.app.cli` (cli imports it); errors are :class:`SweepInputError`,
-which cli turns into its one-line ``drafting: error: ...`` and exit 2.
+Errors are :class:`SweepInputError`, which :func:`run_command` turns into the command's one-line
+``drafting: error: ...`` and exit 2.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ import numpy as np
 
 from ..scene import limits
 from .progress import Progress
+from .solving import UserError
 from ..families.registry import families, family
 from ..scene.reader import SceneError, load_scene
 from ..study.study import Study
@@ -261,3 +262,10 @@ def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path |
         for w in write_cycle_sheet(scene, sheet_dir):
             print(f"  wrote {printable(w)}")
     return 0
+
+
+def run_command(args) -> int:
+    try:
+        return cmd_sweep(args.scene, args.steps, args.every, args.csv, args.sheet)
+    except SweepInputError as e:
+        raise UserError(str(e)) from None

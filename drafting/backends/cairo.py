@@ -27,6 +27,7 @@ import re
 import time
 from typing import Sequence
 
+from . import cairo_ffi
 from ..render.paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
 from ..layout.sheet import Sheet, source_date_epoch
 from ..render.style import FONT_DIR, FONT_FAMILY, style
@@ -41,7 +42,13 @@ def _cairo():
     """cairocffi, with fontconfig told about the bundled DejaVu Sans before cairo first looks for fonts,
     so the PDF/PNG are set in the font the layout measured with (a user's FONTCONFIG_FILE wins)."""
     os.environ.setdefault("FONTCONFIG_FILE", str(FONTS_CONF))
-    import cairocffi
+    prebuilt = cairo_ffi.install()      # its declarations prebuilt, not parsed on every start
+    try:
+        with cairo_ffi.loading():       # and libcairo.so.2 opened without running ldconfig
+            import cairocffi
+    except Exception:
+        cairo_ffi.uninstall()           # cairocffi's own parse and search, as it always did
+        import cairocffi
     return cairocffi
 
 

@@ -125,10 +125,23 @@ def families() -> dict[str, Family]:
     return FAMILIES
 
 
+def _discover_named(kind: str) -> None:
+    """Register the families of the entry points named ``kind`` (as this package names its own): a scene
+    of one kind loads that family's modules only, not every installed family's."""
+    from importlib.metadata import entry_points
+    for ep in entry_points(group=GROUP, name=kind):
+        found = ep.load()
+        if found.kind not in FAMILIES:
+            register(found)
+
+
 def family(kind: str) -> Family:
-    """The family of ``kind``; a kind not known yet has the entry points looked at again (a family
+    """The family of ``kind``: the entry point of that name first, then (a family declared under another
+    name) every entry point; a kind not known yet has the entry points looked at again (a family
     installed since), then KeyError."""
-    if kind not in families():
+    if kind not in FAMILIES:
+        _discover_named(kind)
+    if kind not in FAMILIES and kind not in families():
         discover()
     try:
         return FAMILIES[kind]

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from .keys import Key, KeyTable
 
-PAPERS = ("A4", "A3")
+from .papers import PAPERS
 ORIENTATIONS = ("landscape", "portrait")
 KINDS = ("linkage", "cam", "gear pair", "gear train", "free body")
 """The scene kinds the reference documents (a test holds them to the registered families)."""

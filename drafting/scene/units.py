@@ -5,9 +5,10 @@ A value is read as a number and a unit name, never as an expression: the number 
 decimal pattern (sign, digits, optional fraction, optional exponent) and the unit a small grammar of unit
 names joined by ``/``, ``*``, ``·``, a space or ``per``, each with an optional small integer power
 (``^2``, ``**2``, ``^-1``).  Only then are the names looked up, one by one, in pint's registry (built
-once, on first use), which gives each unit's factor and root units.  The root units must be exactly
-those of the key's kind: a percentage or ``dimensionless`` is not a length and not an angle, ``Hz`` is
-not an angular velocity (use ``rad/s`` or ``rpm``), and ``50 mm rad`` is not a length.
+once, on first use), which gives each unit's factor and root units; the common names (mm, deg, rpm,
+N ...) are pint's own figures kept in :mod:`.unit_table`, so a scene in them is read without loading
+pint.  The root units must be exactly those of the key's kind: a percentage or ``dimensionless`` is not a
+length and not an angle, ``Hz`` is not an angular velocity (use ``rad/s`` or ``rpm``), and ``50 mm rad`` is not a length.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ import math
 import re
 
 from . import limits
+from .unit_table import KNOWN
 
 # quantity kind -> (SI unit the engine uses, pint dimensionality it must have)
 KINDS: dict[str, tuple[str, str]] = {
@@ -144,21 +146,27 @@ def _factors(unit: str) -> list[tuple[str, int]]:
 @functools.lru_cache(maxsize=512)
 def _root(unit: str) -> tuple[float, tuple[tuple[str, float], ...]]:
     """``unit`` -> (factor, root units) such that 1 unit = factor x root units."""
-    reg = registry()
     factor = 1.0
     root: dict[str, float] = {}
     for name, power in _factors(unit):
         name = _ALIASES.get(name, name)
-        try:
-            canonical = reg.get_name(name)
-            f, r = reg.get_root_units(canonical)
-        except Exception:             # pint: UndefinedUnitError and friends
-            raise UnitError(f"{_q(name)} is not a known unit name (e.g. mm, in, m/s, rad/s, rpm, "
-                            f"deg)") from None
-        factor *= float(f) ** power
-        for k, v in dict(r._units).items():
+        f, r = KNOWN[name] if name in KNOWN else _pint_root(name)
+        factor *= f ** power
+        for k, v in r:
             root[k] = root.get(k, 0) + v * power
     return factor, tuple(sorted((k, v) for k, v in root.items() if v != 0))
+
+
+def _pint_root(name: str) -> tuple[float, tuple[tuple[str, float], ...]]:
+    """One unit name's factor and root units, from pint (a name not in :data:`unit_table.KNOWN`)."""
+    reg = registry()
+    try:
+        canonical = reg.get_name(name)
+        f, r = reg.get_root_units(canonical)
+    except Exception:             # pint: UndefinedUnitError and friends
+        raise UnitError(f"{_q(name)} is not a known unit name (e.g. mm, in, m/s, rad/s, rpm, "
+                        f"deg)") from None
+    return float(f), tuple(dict(r._units).items())
 
 
 @functools.cache

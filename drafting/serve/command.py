@@ -65,3 +65,7 @@ def cmd_serve(target: Path | None, port: int = DEFAULT_PORT) -> int:
 
 
 __all__ = ["cmd_serve", "missing", "INSTALL"]
+
+
+def run_command(args) -> int:
+    return cmd_serve(args.target, args.port)

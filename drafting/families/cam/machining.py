@@ -14,14 +14,7 @@ from constructions.cams.envelope import evaluate
 from constructions.cams.profile import analyse, trim
 from constructions.cams.sampling import profile_samples
 
-EXPORT_TOLERANCE = 1e-6
-"""The chord tolerance of an export, relative to the cam's size, when the caller states none."""
-
-EXPORT_TOLERANCE_RANGE = (1e-7, 0.1)
-"""The tolerances an export accepts: the points grow as 1 / sqrt(tolerance), and 1e-7 samples the notes'
-roller cam in 4-9 s on two cores (1e-8 took 41 s, 1e-10 did not end in 600 s); above 0.1 of the cam's size
-a chord is no profile at all."""
-
+from .tolerance import EXPORT_TOLERANCE
 
 def machining_profile(study) -> tuple[np.ndarray, float]:
     """(points 2 x N in SI, absolute tolerance in SI): the profile-only sampling of the scene's cam,
