@@ -113,6 +113,8 @@ def test_a_scene_is_drawn_or_told_at_its_line(client):
     text = client.get("/api/scene", params={"name": NAME}).json()["text"]
     good = client.post("/api/draw", json={"name": NAME, "text": text}).json()
     assert good["ok"] and good["sheets"] == 1 and any(r[0] == "V_C" for r in good["results"])
+    # each row as the sheet prints it: quantity, graphical, analytic, difference
+    assert all(len(r) == 4 and all(isinstance(c, str) for c in r) for r in good["results"]), good["results"][:2]
     page = client.get(f"/view/{good['id']}")
     assert page.status_code == 200 and "steps-data" in page.text
     for fmt, magic in (("svg", b"<svg"), ("pdf", b"%PDF"), ("png", b"\x89PNG")):

@@ -29,7 +29,7 @@ def v_c(text: str) -> str:
     from drafting.scene.reader import parse_scene
     from drafting.study.study import Study
     study = Study(parse_scene(text)).run()
-    return next(r[1] for r in study.table() if r[0] == "V_C").split(" at ")[0]
+    return next(r[1] for r in study.table().text if r[0] == "V_C").split(" at ")[0]
 
 
 @pytest.fixture

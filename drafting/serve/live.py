@@ -61,7 +61,7 @@ def draw(text: str, path: Path | str) -> Drawn | Failed:
                 return Failed(str(e), e.key, line_of(text, str(e), e.key))
             study = solve_study(Study(scene))
             sheets = study.sheets()
-            return Drawn(study, sheets, page_html(study, sheets), tuple(study.warnings), study.table())
+            return Drawn(study, sheets, page_html(study, sheets), tuple(study.warnings), study.table().text)
     except UserError as e:
         return Failed(str(e), "", line_of(text, str(e), ""))
     except LayoutError as e:
