@@ -10,7 +10,8 @@ import math
 
 from ..errors import IndeterminatePosition
 from ..geometry import ORIGIN, Contact, Line, Vec, intersect_lines
-from ..mechanisms.assembly import CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines
+from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotAlongGuide, SlotThrough, TwoCircles,
+                                   TwoLines)
 from ..mechanisms.model import Mechanism, describe_angle
 from ..mechanisms.pose import Pose
 from ..entities import Arrow, Point, Polygon, Role, ScaleBar, TrialLine
@@ -165,8 +166,8 @@ class PolygonDrawing:
     diagram = None
 
     def draw_plan(self, plan) -> None:
-        """Each step after the crank: an image, a slotted link through a joint, a joint on two lines, or a
-        dyad of two links (or a link and a guide or slot)."""
+        """Each step after the crank: an image, a slotted link through a joint, a joint on two lines, a
+        yoke slid along its guide, or a dyad of two links (or a link and a guide or slot)."""
         for step in plan[1:]:
             if isinstance(step, FixedToLink):
                 self.image(step)
@@ -174,6 +175,8 @@ class PolygonDrawing:
                 self.slot_through(step)
             elif isinstance(step, TwoLines):
                 self.two_lines(step)
+            elif isinstance(step, SlotAlongGuide):
+                self.slot_along_guide(step)
             elif not isinstance(step, CrankTip):
                 self.dyad(step)
 
