@@ -104,3 +104,11 @@ def test_the_gallery_scene_agrees_with_the_closed_form():
     for name, value in (("V_B", exact.v), ("A_B", exact.a)):          # SI vectors along the +x stroke
         got = r[name].graphical
         assert got.x == pytest.approx(float(value), rel=1e-9) and abs(got.y) <= 1e-9 * abs(float(value))
+
+
+def test_its_force_analysis_is_refused_in_words():
+    from constructions.errors import DegenerateInput
+    from constructions.forces.polygon import force_analysis
+    m = yoke()
+    with pytest.raises(DegenerateInput, match="translating slotted link"):
+        force_analysis(m, locate(m, 0.5), None)

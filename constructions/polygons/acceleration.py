@@ -331,12 +331,7 @@ class _Polygon(PolygonDrawing):
             f"{k.number}, under {j}): {eq.text(marks=False)}, with A_{jg} ∥ guide and A_{j}{jg}^s ∥ slot; "
             f"the yoke does not turn (ω_{k.number} = 0), so A_{j}{jg}^c = 2 ω_{k.number} × V_{j}{jg} = 0 "
             f"and it has no normal or tangential parts; two unknown magnitudes.", eq))
-        guide = self.guide_trial(jg, step.guides[0].line.direction, eq)
-        slot = self.parallel_trial(f"Draw the direction of A_{j}{jg}^s through {_img(j)}, parallel to the slot.",
-                                   f"trial A_{j}{jg}^s", self.acc[j], self.pose.lines[j].direction, eq, True)
-        a = self._close(step, [guide, slot])
-        for x in (*m.points_of(k.number), jg):
-            self.acc[x] = a
+        a = self.yoke_crossing(step, eq, f"A_{j}{jg}^s", _img(j), self.acc)
         self.coriolis[f"A_{j}{jg}^c"] = ORIGIN
         self.sliding[f"A_{j}{jg}^s"] = self.acc[j] - a
         for number in (k.number, *(sl.number for sl in (*step.guides, step.slide) if sl.number is not None)):

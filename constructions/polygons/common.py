@@ -239,6 +239,20 @@ class PolygonDrawing:
                 trials = trials + [line]
         return self._close(step, trials), start
 
+    def yoke_crossing(self, step, eq, sliding: str, mark: str, images: dict[str, Vec]) -> Vec:
+        """A yoke slid along its guide (:class:`SlotAlongGuide`): through the pole the direction of its motion,
+        parallel to the guide, and through ``mark`` (the image of the joint J, known in ``images``) the
+        direction of the ``sliding`` vector, parallel to the slot.  Their crossing is the image of every
+        point of the yoke and of the point under J, written into ``images`` and returned."""
+        j, jg = step.joint, step.coincident
+        guide = self.guide_trial(jg, step.guides[0].line.direction, eq)
+        slot = self.parallel_trial(f"Draw the direction of {sliding} through {mark}, parallel to the slot.",
+                                   f"trial {sliding}", images[j], self.pose.lines[j].direction, eq, True)
+        x = self._close(step, [guide, slot])
+        for p in (*self.m.points_of(step.link.number), jg):
+            images[p] = x
+        return x
+
     def guide_trial(self, j: str, g: Vec, eq, name: str = "") -> Line:
         """The direction of the absolute velocity (acceleration) of a joint on a fixed guide: through the
         pole, parallel to the guide."""

@@ -270,7 +270,7 @@ class _Polygon(PolygonDrawing):
         """The yoke translates along its guide, J slides in its slot (JG the yoke's point under J): every
         point of the yoke has one velocity, along the guide, and V_J = V_JG + V_J,JG (along the slot) --
         through O_v parallel to the guide, through j parallel to the slot."""
-        m, pos = self.m, self.pose.positions
+        m = self.m
         j, jg, k = step.joint, step.coincident, step.link
         b = k.joints[0]
         eq = VectorEquation((Term("V", j, True, True),), (Term("V", jg, False, True), Term("V", f"{j}{jg}", False, True)))
@@ -278,12 +278,7 @@ class _Polygon(PolygonDrawing):
             f"Relative velocity equation at the sliding joint {j} ({jg} the point of the yoke, link {k.number}, "
             f"under {j}): {eq.text(marks=False)}, with V_{jg} = V_{b} ∥ guide (the yoke does not turn) and "
             f"V_{j}{jg} ∥ slot; two unknown magnitudes.", eq))
-        guide = self.guide_trial(jg, step.guides[0].line.direction, eq)
-        slot = self.parallel_trial(f"Draw the direction of V_{j}{jg} through {image_name(j)}, parallel to the slot.",
-                                   f"trial V_{j}{jg}", self.vel[j], self.pose.lines[j].direction, eq, True)
-        v = self._close(step, [guide, slot])
-        for x in (*m.points_of(k.number), jg):
-            self.vel[x] = v
+        v = self.yoke_crossing(step, eq, f"V_{j}{jg}", image_name(j), self.vel)
         self.rel[(j, jg)] = self.vel[j] - v
         self.ang[k.number] = 0.0
         for sl in (*step.guides, step.slide):
@@ -292,12 +287,10 @@ class _Polygon(PolygonDrawing):
         measured = [Arrow(f"result V_{jg}", Role.RESULT, Diagram.VELOCITY, ORIGIN, v, f"V_{jg}"),
                     Arrow(f"result V_{j}{jg}", Role.RESULT, Diagram.VELOCITY, v, self.vel[j], f"V_{j}{jg}")]
         self._answer(jg, measured, [], eq, image=image_name(jg))
-        others = [x for x in m.points_of(k.number)]
         self.steps.append((
             f"The yoke does not turn (ω_{k.number} = 0): its velocity image is the single point "
-            f"{image_name(jg)}, so V_{' = V_'.join(others)} = V_{jg}.",
-            tuple(Point(f"image {x}", Role.LABEL, Diagram.VELOCITY, v, image_name(x)) for x in others[:1]),
-            None, {}, StepKind.CONSTRUCTION))
+            f"{image_name(jg)}, so V_{' = V_'.join(m.points_of(k.number))} = V_{jg}.", (), None, {},
+            StepKind.CONSTRUCTION))
 
     def image(self, step: FixedToLink) -> None:
         """Velocity image of point D of a link placed by two of its points P, Q: the triangle pqd is similar
