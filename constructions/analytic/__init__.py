@@ -57,6 +57,8 @@ Modules
 ``vector_loops``, ``chain_order``, ``chain_state``
     The vector loop of any crank followed by RRR/RRP dyads (:func:`chain_solution`), the order it
     solves the joints in, and what it returns.
+``yoke_loop``
+    The Scotch yoke's closed form :func:`scotch_yoke` (a slot square to the line of stroke).
 ``inputs``, ``parts``, ``states``
     The checked inputs of the closed forms, the pieces they share (crank tip, the three-way gap
     decision) and their frozen results.
@@ -71,6 +73,7 @@ from .point_on_link import coupler_point
 from .slider_loop import slider_crank
 from .states import FourBarState, PointState, SliderCrankState
 from .vector_loops import SINGULAR, chain_solution
+from .yoke_loop import ScotchYokeState, scotch_yoke
 
 __all__ = [
     "ASSEMBLY_RTOL",
@@ -80,10 +83,12 @@ __all__ = [
     "ChainState",
     "FourBarState",
     "PointState",
+    "ScotchYokeState",
     "SliderCrankState",
     "chain_solution",
     "coupler_point",
     "four_bar",
+    "scotch_yoke",
     "slider_crank",
     "solving_order",
 ]

@@ -36,8 +36,9 @@ from typing import Mapping
 
 from ..mechanisms.topology import Contact, Pin, frame_number
 from ..geometry import Vec
-from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines,
-                                   assembly_plan)
+from ..errors import DegenerateInput
+from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotAlongGuide, SlotThrough, TwoCircles,
+                                   TwoLines, assembly_plan)
 from ..mechanisms.model import Mechanism, slide_line
 from ..mechanisms.pose import Pose
 from ..quantities import Measured
@@ -109,6 +110,10 @@ class ForceAnalysis:
 def force_analysis(m: Mechanism, pose: Pose, effects: Effects, *, velocity=None, acceleration=None) -> ForceAnalysis:
     """Draw the free bodies and force polygons of ``m`` at ``pose`` under ``effects``.  ``acceleration``
     (an AccelerationAnalysis) is needed when the effects have masses, ``velocity`` when they have friction."""
+    yoke = next((s for s in assembly_plan(m) if isinstance(s, SlotAlongGuide)), None)
+    if yoke is not None:
+        raise DegenerateInput(f"the force analysis of a translating slotted link (the yoke, link {yoke.link.number}) "
+                              f"is not drawn yet; its velocity and acceleration analyses are")
     if effects.inertial and acceleration is None:
         raise ValueError("masses make the analysis dynamic: pass the acceleration polygon")
     if effects.friction and velocity is None:

@@ -66,6 +66,20 @@ class SlotThrough:
 
 
 @dataclass(frozen=True, slots=True)
+class SlotAlongGuide:
+    """A translating slotted link (Scotch yoke): ``link`` runs along one fixed guide, its two base joints
+    in blocks on it (``guides``), so it cannot turn; it slides along the guide until its slot passes
+    through the known joint ``joint``.  Its base line points along the first block's guide; ``coincident``
+    names the point of the yoke under the joint (A3 beside A)."""
+
+    joint: str
+    link: Link
+    slide: Slide
+    guides: tuple[Slide, Slide]
+    coincident: str
+
+
+@dataclass(frozen=True, slots=True)
 class TwoLines:
     """Joint found where the lines of two slides cross (a PRP dyad): the joint carries two blocks (or
     pins), each sliding on a fixed guide or on the slot of a placed link; ``coincident_a``/``_b`` name the
@@ -91,7 +105,7 @@ class FixedToLink:
         return self.point if isinstance(self.point, str) else self.point.name
 
 
-PlanStep = CrankTip | TwoCircles | CircleAndGuide | SlotThrough | TwoLines | FixedToLink
+PlanStep = CrankTip | TwoCircles | CircleAndGuide | SlotThrough | SlotAlongGuide | TwoLines | FixedToLink
 Dyad = TwoCircles | CircleAndGuide | SlotThrough | TwoLines
 
 def assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
@@ -197,6 +211,13 @@ def _assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
                         known.add(x)
                     posed.add(s.on)
                     progress = True
+                elif not have and _guided_pair(m, s.on, slides) is not None:
+                    link = m.link(s.on)
+                    plan.append(SlotAlongGuide(j, link, s, _guided_pair(m, s.on, slides),
+                                               coincident_name(j, s.on, everything)))
+                    known.update(pts)
+                    posed.add(s.on)
+                    progress = True
         if not progress:
             break
     missing = sorted(everything - known)
@@ -224,6 +245,23 @@ def _assembly_plan(m: Mechanism) -> tuple[PlanStep, ...]:
                               f"solved as a whole is not drawn by this method)")
     return tuple(plan)
 
+
+def _guided_pair(m: Mechanism, number: int, slides: dict[str, list[Slide]]) -> tuple[Slide, Slide] | None:
+    """The blocks on fixed guides that carry both base joints of link ``number`` when the two guides are
+    one line along the link (a yoke that only translates), else None."""
+    link = m.link(number)
+    pair = []
+    for j in link.joints:
+        own = [s for s in slides.get(j, []) if s.on is None and s.number is not None]
+        if len(slides.get(j, [])) != 1 or len(own) != 1:
+            return None
+        pair.append(own[0])
+    a, b = pair
+    ga, gb = a.line, b.line
+    tol = m.tolerance()
+    if abs(ga.direction.cross(gb.direction)) > tol.sine or abs(ga.signed_distance(b.through)) > tol.length:
+        return None
+    return a, b
 
 
 def _branch_for(m: Mechanism, joint: str, centres: tuple[str, ...]) -> Branch:

@@ -18,7 +18,7 @@ from ..formatting import Formatter, si_format
 from ..geometry import (Circle, Contact, Intersection, Line, Tolerance, Vec, intersect_circles,
                         intersect_line_circle, intersect_lines)
 from ..record import Construction, StepKind, Value
-from .assembly import (CircleAndGuide, CrankTip, PlanStep, SlotThrough, TwoCircles, TwoLines,
+from .assembly import (CircleAndGuide, CrankTip, PlanStep, SlotAlongGuide, SlotThrough, TwoCircles, TwoLines,
                        assembly_plan)
 from .model import Attached, Branch, Link, Mechanism, Slide, describe_angle, place_rigid, slide_line
 
@@ -180,6 +180,23 @@ def locate(m: Mechanism, angle: float, plan: tuple[PlanStep, ...] | None = None,
                 *[Point(f"joint {x}", Role.LABEL, Diagram.SPACE, pos[x], x) for x in pts if x != step.centre
                   and x not in m.ground],
                 values={"e": Value("length", abs(step.slide.offset))} if step.slide.offset else None)
+        elif isinstance(step, SlotAlongGuide):
+            pos.update(_slot_along_guide(m, step, pos, tol, where))
+            line = slide_line(m, step.slide, pos)
+            lines[step.joint] = line
+            cond[step.joint] = 1.0
+            ent = [Block(f"block {sl.number}", Role.GIVEN, Diagram.SPACE, pos[sl.joint], sl.line.direction,
+                         sl.number) for sl in step.guides]
+            if step.slide.number is not None:
+                ent.append(Block(f"block {step.slide.number}", Role.GIVEN, Diagram.SPACE, pos[step.joint],
+                                 line.direction, step.slide.number))
+            ent.append(_slot_segment(m, step.slide, pos, pos[step.joint]))
+            k = step.link
+            rec = rec.then(
+                f"Slide link {k.number} ({k.label}) along its guide, without turning, until its slot passes "
+                f"through {step.joint}.",
+                *bar(k, *k.joints), *ent,
+                *[Point(f"joint {x}", Role.LABEL, Diagram.SPACE, pos[x], x) for x in m.points_of(k.number)])
         else:
             link, x = step.link, step.name
             a, b = step.via
@@ -244,6 +261,28 @@ def _slot_through(m: Mechanism, step: SlotThrough, pos: dict[str, Vec], tol: Tol
     first_world = pos[step.centre] - (pts[step.centre] - pts[k.joints[0]]).rotated(turn)
     out = {x: first_world + (pts[x] - pts[k.joints[0]]).rotated(turn) for x in pts if x != step.centre}
     out[step.coincident] = J
+    return out
+
+
+def _slot_along_guide(m: Mechanism, step: SlotAlongGuide, pos: dict[str, Vec], tol: Tolerance,
+                      where: str) -> dict[str, Vec]:
+    """Slide the yoke along its guide until its slot passes through the joint.
+
+    The yoke's first joint B = P0 + t g on the guide (P0 its point, g its direction, the yoke's base
+    line); the slot, of direction d = g turned by the slot's angle, passes e to the right of B: through
+    B - e perp(d).  The joint J lies on it when cross(d, J - B + e perp(d)) = 0, that is
+    t = (cross(d, J - P0) + e) / cross(d, g)."""
+    s, guide = step.slide, step.guides[0].line
+    g = guide.direction
+    d = g.rotated(s.angle)
+    square = d.cross(g)
+    if abs(square) < tol.sine:
+        raise CannotAssemble(f"the slot of link {step.link.number} runs along its guide, so the yoke cannot be "
+                             f"slid to meet {step.joint}", position=where)
+    t = (d.cross(pos[step.joint] - guide.point) + s.offset) / square
+    first = guide.point + g * t
+    out = {x: first + p.rotated(g.angle()) for x, p in m.local(step.link.number).items()}
+    out[step.coincident] = pos[step.joint]
     return out
 
 

@@ -22,7 +22,7 @@ import math
 from ..entities import Arrow, Diagram, Point, Role, TrialLine
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..mechanisms.assembly import CrankTip, Dyad, FixedToLink, SlotThrough, TwoLines, assembly_plan
+from ..mechanisms.assembly import CrankTip, Dyad, FixedToLink, SlotAlongGuide, SlotThrough, TwoLines, assembly_plan
 from ..mechanisms.model import Mechanism, slide_line
 from ..record import StepKind, Term, Value, VectorEquation
 from ..tolerance import SINGULAR_SINE
@@ -317,6 +317,34 @@ class _Polygon(PolygonDrawing):
             eq, {"t": _a(a_t.norm()), "s": _a((a - tip_c).norm()), "a": _a(a.norm()),
                  "al": Value("angular acceleration", abs(al))}, StepKind.ANSWER))
         self._slotted_image(k.number, c, jg, j)
+
+    def slot_along_guide(self, step: SlotAlongGuide) -> None:
+        """The yoke translates, J slides in its slot (JG the yoke's point under J): A_J = A_JG + A_J,JG^s, with
+        A_JG along the guide and A_J,JG^s along the slot; the yoke does not turn, so there is no Coriolis
+        component (2 omega x V_J,JG = 0) -- through O_a parallel to the guide, through j' parallel to the slot."""
+        m = self.m
+        j, jg, k = step.joint, step.coincident, step.link
+        eq = VectorEquation((Term("A", j, True, True),),
+                            (Term("A", jg, False, True), Term("A", f"{j}{jg}", False, True, "s")))
+        self.equations.append((
+            f"Relative acceleration equation at the sliding joint {j} ({jg} the point of the yoke, link "
+            f"{k.number}, under {j}): {eq.text(marks=False)}, with A_{jg} ∥ guide and A_{j}{jg}^s ∥ slot; "
+            f"the yoke does not turn (ω_{k.number} = 0), so A_{j}{jg}^c = 2 ω_{k.number} × V_{j}{jg} = 0 "
+            f"and it has no normal or tangential parts; two unknown magnitudes.", eq))
+        a = self.yoke_crossing(step, eq, f"A_{j}{jg}^s", _img(j), self.acc)
+        self.coriolis[f"A_{j}{jg}^c"] = ORIGIN
+        self.sliding[f"A_{j}{jg}^s"] = self.acc[j] - a
+        for number in (k.number, *(sl.number for sl in (*step.guides, step.slide) if sl.number is not None)):
+            self.ang[number] = 0.0
+        names = " = ".join(f"A_{x}" for x in m.points_of(k.number))
+        self.steps.append((
+            f"The trial lines meet at {_img(jg)}. Measure A_{jg} (from O_a to {_img(jg)}) = $a and "
+            f"A_{j}{jg}^s (from {_img(jg)} to {_img(j)}) = $s; the yoke does not turn (α_{k.number} = 0), "
+            f"so {names} = A_{jg}.",
+            (Point(f"acceleration image {jg}", Role.LABEL, Diagram.ACCELERATION, a, _img(jg)),
+             Arrow(f"result A_{jg}", Role.RESULT, Diagram.ACCELERATION, ORIGIN, a, f"A_{jg}"),
+             Arrow(f"result A_{j}{jg}^s", Role.RESULT, Diagram.ACCELERATION, a, self.acc[j], f"A_{j}{jg}^s")),
+            eq, {"a": _a(a.norm()), "s": _a((self.acc[j] - a).norm())}, StepKind.ANSWER))
 
     def _slotted_image(self, number: int, c: str, jg: str, j: str) -> None:
         """The further points of the slotted link (the lever's end P): each image x' on the link's

@@ -10,7 +10,8 @@ import math
 
 from ..errors import IndeterminatePosition
 from ..geometry import ORIGIN, Contact, Line, Vec, intersect_lines
-from ..mechanisms.assembly import CircleAndGuide, CrankTip, FixedToLink, SlotThrough, TwoCircles, TwoLines
+from ..mechanisms.assembly import (CircleAndGuide, CrankTip, FixedToLink, SlotAlongGuide, SlotThrough, TwoCircles,
+                                   TwoLines)
 from ..mechanisms.model import Mechanism, describe_angle
 from ..mechanisms.pose import Pose
 from ..entities import Arrow, Point, Polygon, Role, ScaleBar, TrialLine
@@ -165,8 +166,8 @@ class PolygonDrawing:
     diagram = None
 
     def draw_plan(self, plan) -> None:
-        """Each step after the crank: an image, a slotted link through a joint, a joint on two lines, or a
-        dyad of two links (or a link and a guide or slot)."""
+        """Each step after the crank: an image, a slotted link through a joint, a joint on two lines, a
+        yoke slid along its guide, or a dyad of two links (or a link and a guide or slot)."""
         for step in plan[1:]:
             if isinstance(step, FixedToLink):
                 self.image(step)
@@ -174,6 +175,8 @@ class PolygonDrawing:
                 self.slot_through(step)
             elif isinstance(step, TwoLines):
                 self.two_lines(step)
+            elif isinstance(step, SlotAlongGuide):
+                self.slot_along_guide(step)
             elif not isinstance(step, CrankTip):
                 self.dyad(step)
 
@@ -235,6 +238,20 @@ class PolygonDrawing:
                 line, start = self.slot_trial(j, step.coincident, step.slide.on, g, eq)
                 trials = trials + [line]
         return self._close(step, trials), start
+
+    def yoke_crossing(self, step, eq, sliding: str, mark: str, images: dict[str, Vec]) -> Vec:
+        """A yoke slid along its guide (:class:`SlotAlongGuide`): through the pole the direction of its motion,
+        parallel to the guide, and through ``mark`` (the image of the joint J, known in ``images``) the
+        direction of the ``sliding`` vector, parallel to the slot.  Their crossing is the image of every
+        point of the yoke and of the point under J, written into ``images`` and returned."""
+        j, jg = step.joint, step.coincident
+        guide = self.guide_trial(jg, step.guides[0].line.direction, eq)
+        slot = self.parallel_trial(f"Draw the direction of {sliding} through {mark}, parallel to the slot.",
+                                   f"trial {sliding}", images[j], self.pose.lines[j].direction, eq, True)
+        x = self._close(step, [guide, slot])
+        for p in (*self.m.points_of(step.link.number), jg):
+            images[p] = x
+        return x
 
     def guide_trial(self, j: str, g: Vec, eq, name: str = "") -> Line:
         """The direction of the absolute velocity (acceleration) of a joint on a fixed guide: through the

@@ -17,7 +17,7 @@ import math
 from ..entities import Arrow, Diagram, Point, Role, TrialLine
 from ..errors import DegenerateInput
 from ..geometry import ORIGIN, Line, Tolerance, Vec
-from ..mechanisms.assembly import CrankTip, Dyad, FixedToLink, SlotThrough, TwoLines, assembly_plan
+from ..mechanisms.assembly import CrankTip, Dyad, FixedToLink, SlotAlongGuide, SlotThrough, TwoLines, assembly_plan
 from ..mechanisms.model import Mechanism, slide_line
 from ..mechanisms.pose import Pose
 from ..record import Construction, StepKind, Term, Value, VectorEquation
@@ -265,6 +265,32 @@ class _Polygon(PolygonDrawing):
                     Point(f"image {x}", Role.LABEL, Diagram.VELOCITY, self.vel[x], image_name(x)),
                     Arrow(f"result V_{x}", Role.RESULT, Diagram.VELOCITY, ORIGIN, self.vel[x], f"V_{x}"))),
                 None, {}, StepKind.CONSTRUCTION))
+
+    def slot_along_guide(self, step: SlotAlongGuide) -> None:
+        """The yoke translates along its guide, J slides in its slot (JG the yoke's point under J): every
+        point of the yoke has one velocity, along the guide, and V_J = V_JG + V_J,JG (along the slot) --
+        through O_v parallel to the guide, through j parallel to the slot."""
+        m = self.m
+        j, jg, k = step.joint, step.coincident, step.link
+        b = k.joints[0]
+        eq = VectorEquation((Term("V", j, True, True),), (Term("V", jg, False, True), Term("V", f"{j}{jg}", False, True)))
+        self.equations.append((
+            f"Relative velocity equation at the sliding joint {j} ({jg} the point of the yoke, link {k.number}, "
+            f"under {j}): {eq.text(marks=False)}, with V_{jg} = V_{b} ∥ guide (the yoke does not turn) and "
+            f"V_{j}{jg} ∥ slot; two unknown magnitudes.", eq))
+        v = self.yoke_crossing(step, eq, f"V_{j}{jg}", image_name(j), self.vel)
+        self.rel[(j, jg)] = self.vel[j] - v
+        self.ang[k.number] = 0.0
+        for sl in (*step.guides, step.slide):
+            if sl.number is not None:
+                self.ang[sl.number] = 0.0
+        measured = [Arrow(f"result V_{jg}", Role.RESULT, Diagram.VELOCITY, ORIGIN, v, f"V_{jg}"),
+                    Arrow(f"result V_{j}{jg}", Role.RESULT, Diagram.VELOCITY, v, self.vel[j], f"V_{j}{jg}")]
+        self._answer(jg, measured, [], eq, image=image_name(jg))
+        self.steps.append((
+            f"The yoke does not turn (ω_{k.number} = 0): its velocity image is the single point "
+            f"{image_name(jg)}, so V_{' = V_'.join(m.points_of(k.number))} = V_{jg}.", (), None, {},
+            StepKind.CONSTRUCTION))
 
     def image(self, step: FixedToLink) -> None:
         """Velocity image of point D of a link placed by two of its points P, Q: the triangle pqd is similar

@@ -51,7 +51,8 @@ SLIDER_KEYS = KeyTable("slider", "a joint sliding along a fixed guide, or in the
     Key("joint", "text", None, "the joint that slides", required=True),
     Key("through", "point", None, "a fixed guide: a point it passes through"),
     Key("angle", "angle", "0 deg", "the guide's direction (a slot's: from its link's line)"),
-    Key("on", "whole number", None, "a slot: the moving link it is cut in"),
+    Key("on", "whole number", None, "a slot: the moving link it is cut in (a Scotch yoke: a link whose two "
+                                    "joints ride in blocks on one fixed guide, so it only translates)"),
     Key("offset", "length", 0, "a slot: how far it passes to the right of its link's first joint"),
 ), array=True)
 INPUT_KEYS = KeyTable("input", "the driving crank and its motion", (
