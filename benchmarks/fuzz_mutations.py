@@ -253,13 +253,18 @@ def m_duplicate(rng: random.Random, c: Case) -> None:
     c.must_refuse = True
 
 
-def _smallest_coordinate(frame: dict) -> float:
-    """The smallest non-zero plain-number coordinate of the frame's points (1 if none): a "ratio"
-    mutation puts a coordinate beyond 1e6 times it, so beyond the scene's length ratio whatever the
-    scene's other lengths (a fixed 2e8 lay within 1e6 of the front-end loader's 220 mm)."""
-    nums = [abs(x) for p in frame.values() if isinstance(p, list) for x in p
-            if isinstance(x, (int, float)) and not isinstance(x, bool) and x != 0 and abs(x) < 1e300]
-    return float(min(nums, default=1.0))
+def _smallest_length(d: dict, replaced: str) -> float:
+    """The smallest non-zero plain number among the frame's coordinates (but the x of ``replaced``, which
+    the mutation overwrites) and the links' lengths; 1e9 when there is none: a "ratio" mutation puts that
+    x beyond 1e6 times it, so beyond the scene's length ratio whatever its other lengths (a fixed 2e8 lay
+    within 1e6 of the front-end loader's 220 mm; a replaced smallest leaves a larger one; a frame of one
+    pivot at the origin has none)."""
+    def plain(x) -> bool:
+        return isinstance(x, (int, float)) and not isinstance(x, bool) and x != 0 and abs(x) < 1e300
+    nums = [abs(x) for n, p in d.get("frame", {}).items() if isinstance(p, list) for i, x in enumerate(p)
+            if not (n == replaced and i == 0) and plain(x)]
+    nums += [abs(t["length"]) for t in d.get("link", []) if isinstance(t, dict) and plain(t.get("length"))]
+    return float(min(nums, default=1e9))
 
 
 def m_giant_coordinates(rng: random.Random, c: Case) -> None:
@@ -270,7 +275,7 @@ def m_giant_coordinates(rng: random.Random, c: Case) -> None:
     if how in ("pivot", "float", "ratio") and d.get("frame"):
         name = rng.choice(list(d["frame"]))
         v = {"pivot": rng.choice([1e10, 1e15, 1e30, 1e300, -1e300, 2 ** 1023]), "float": float("inf"),
-             "ratio": rng.choice([2e6, 1e7]) * _smallest_coordinate(d["frame"])}[how]
+             "ratio": rng.choice([2e6, 1e7]) * _smallest_length(d, name)}[how]
         d["frame"][name] = [v, d["frame"][name][1] if isinstance(d["frame"][name], list) and len(d["frame"][name]) > 1 else 0]
     elif how == "through" and d.get("slider"):
         d["slider"][0]["through"] = [rng.choice([1e12, 1e300]), 0]

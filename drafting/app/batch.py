@@ -112,7 +112,10 @@ def run_variant(job: VariantJob) -> VariantResult:
         extra = [("variant", str(job.index))] + values
         plan = lab_plan(lab, out, stem, job.formats, epoch=job.epoch, csv_extra=extra)
         res.files = [str(p) for p in write_outputs(out, stem, plan)]
-    except (ExportError, LayoutError, ConstructionError) as e:
+    except LayoutError as e:                   # as render says it: the paper is what the user can change
+        res.error = f"{path}: variant {job.index}: drawing.paper: {e}"
+        return res
+    except (ExportError, ConstructionError) as e:
         res.error = f"{path}: variant {job.index}: {e}"
         return res
     res.columns = _key_columns(lab)
