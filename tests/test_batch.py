@@ -173,7 +173,7 @@ def test_ranges_belong_to_linkage_scenes():
 
 
 def test_several_scenes_render_over_an_executor_in_the_order_given(tmp_path, capsys):
-    from drafting.app.cli import cmd_render
+    from drafting.app.render_cmd import cmd_render
     root = Path(__file__).resolve().parents[1] / "gallery"
     scenes = [root / f"notes-velocity-example-{i}.toml" for i in (4, 1, 2)]
     assert cmd_render(scenes, tmp_path, ["svg"], None, executor=cf.ThreadPoolExecutor(2)) == 0

@@ -15,7 +15,8 @@ from constructions.geometry import Vec
 from constructions.mechanisms.assembly import FixedToLink, assembly_plan
 from constructions.mechanisms.model import Attached
 from constructions.mechanisms.pose import locate
-from drafting.app.cli import builtin_example, main
+from drafting.app.cli import main
+from drafting.study.worked import builtin_example
 from drafting.scene.effects import SECTIONS
 from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.scene.unitset import Units

@@ -242,7 +242,7 @@ def test_bad_format_and_stem(tmp_path):
 def test_pdf_is_set_in_the_bundled_font_only(tmp_path):
     """DESIGN: bundle one font and name only it -- the PDF embeds DejaVu Sans and nothing else."""
     import re
-    from drafting.app.cli import builtin_example, sheet_for
+    from drafting.study.worked import builtin_example, sheet_for
     from drafting.scene.reader import load_scene
     from drafting.study.study import Study
     (path,) = write_sheet(sheet_for(Study(load_scene(builtin_example()))), tmp_path, "font", ["pdf"])
@@ -252,7 +252,7 @@ def test_pdf_is_set_in_the_bundled_font_only(tmp_path):
 
 def test_source_date_epoch_makes_the_pdf_reproducible(tmp_path, monkeypatch):
     import time as _time
-    from drafting.app.cli import builtin_example, sheet_for
+    from drafting.study.worked import builtin_example, sheet_for
     from drafting.scene.reader import load_scene
     from drafting.study.study import Study
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")

@@ -11,7 +11,8 @@ import pytest
 
 from drafting.scene import limits
 from drafting.scene.textsafe import printable
-from drafting.app.cli import builtin_example, main
+from drafting.app.cli import main
+from drafting.study.worked import builtin_example
 from drafting.scene.reader import parse_scene
 from drafting.scene.units import DEFAULT_UNITS, KINDS, UnitError, check_unit, format_value, from_si, to_si
 

@@ -12,7 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from drafting.app.cli import builtin_example, main
+from drafting.app.cli import main
+from drafting.study.worked import builtin_example
 from drafting.scene.reader import SceneError, load_scene, parse_scene
 from drafting.study.study import Study
 

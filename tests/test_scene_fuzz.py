@@ -10,7 +10,7 @@ import tomllib
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from constructions.errors import ConstructionError
-from drafting.app.cli import builtin_example
+from drafting.study.worked import builtin_example
 from drafting.scene.reader import SceneError, scene_from_data
 from drafting.study.study import Study
 from drafting.scene.textsafe import printable

@@ -16,7 +16,7 @@ def test_every_known_unit_is_pints_own():
 def test_a_scene_in_common_units_is_read_without_pint():
     import subprocess
     import sys
-    code = ("import sys\nfrom drafting.scene.reader import load_scene\nfrom drafting.app.cli import builtin_example\n"
+    code = ("import sys\nfrom drafting.scene.reader import load_scene\nfrom drafting.study.worked import builtin_example\n"
             "load_scene(builtin_example())\nprint('pint' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"

@@ -39,16 +39,6 @@ COMMANDS = {
 ``run_command(args)`` runs it.  ``drafting --help`` and a command's start load nothing they do not use
 (numpy, the engine, svgwrite, cairo are each loaded by the modules that draw or solve)."""
 
-MOVED = {"builtin_example": "..study.worked", "sheet_for": "..study.worked", "sheets_for": "..study.worked",
-         "render_one": ".render_cmd", "cmd_render": ".render_cmd"}
-"""Names this module once held, still importable from it (loaded on first use)."""
-
-
-def __getattr__(name: str):
-    if name in MOVED:
-        return getattr(importlib.import_module(MOVED[name], __package__), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
 
 def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
     """The command.  SIGINT and SIGTERM end it cleanly, temporary files removed, with exit code 130 or
