@@ -84,13 +84,6 @@ def read_inverse(r: SceneReader, units: Units, m: Mechanism, inp: dict) -> tuple
 
 
 
-DRIVING_KEYS = frozenset({"slider_speed", "slider_acceleration"})
-"""[input] keys of a driving slider, in place of the crank's omega (or tip_speed, sense) and alpha (or
-torque), with ``slider_at``: ``slider_speed`` (velocity: the block's speed along its guide or slot, signed,
-positive in the guide's direction or out along the slot -- a cylinder extending) and
-``slider_acceleration`` (acceleration, signed the same way; default 0)."""
-
-
 def read_driving(r: SceneReader, units: Units, m: Mechanism, inp: dict, inverse: InversePosition,
                  angle: float) -> DrivenCrank:
     """The crank's omega and alpha that move the [input]'s block at slider_speed and slider_acceleration
