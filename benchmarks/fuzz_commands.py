@@ -161,14 +161,14 @@ def make_command(rng: random.Random, kind: str, hostile: float = 0.3, name: str 
     if name == "check --answers":
         fname, data, refuse = answers_file(rng)
         argv = ["check", "{scene}", "--answers", "{in}/" + fname]
-        refuse_opt, option = False, None
+        refuse_opt, option = False, ()
         if kind == "vary" and rng.random() < 0.5:
             v, ok_v = _pick(rng, VARIANTS, hostile)
             s, ok_s = _pick(rng, SEEDS, hostile)
             _opt(argv, "--variant", v)
             _opt(argv, "--seed", s)
             refuse_opt = ok_v is False or ok_s is False
-            option = "--variant" if ok_v is False else "--seed" if ok_s is False else None
+            option = tuple(o for o, ok in (("--variant", ok_v), ("--seed", ok_s)) if ok is False)
         return Command(name, argv, codes=(0, 1, 2, 3), must_refuse=refuse or refuse_opt, option=option,
                        inputs={fname: data}, needs_output=False)
     if name.startswith("sweep"):

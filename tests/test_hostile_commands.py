@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import warnings
 
+import pytest
+
 from drafting.app.cli import main
 
 from paths import GALLERY
@@ -114,6 +116,31 @@ def test_an_empty_vary_key_is_named_as_toml_writes_it(tmp_path, capsys):
     code, _, err = run(capsys, "batch", scene, "--variants", "1", "-o", tmp_path / "out", "--workers", "1")
     assert code == 2
     one_line(err, f'{scene}: vary."": unknown key')
+
+
+def test_an_empty_key_too_long_for_the_limits_is_named_as_toml_writes_it(tmp_path, capsys):
+    """The limits' walker named ``"" = [101 items]`` in [vary] ``vary.``."""
+    scene = tmp_path / "lab.toml"
+    scene.write_text((GALLERY / "lab-slider-crank.toml").read_text() + '"" = [' + ", ".join(["1"] * 101) + "]\n")
+    code, _, err = run(capsys, "solve", scene)
+    assert code == 2
+    one_line(err, f'{scene}: vary."": 101 entries; an array may have at most 100')
+
+
+@pytest.mark.parametrize("argv", [("sweep", "{s}", "--csv", "{s}.csv/sweep.csv"), ("solve", "{s}", "--csv", "{s}.csv/x.csv"),
+                                  ("sweep", "{cam}")])
+def test_a_long_file_name_is_cut_in_the_middle_of_a_message(tmp_path, capsys, argv):
+    """A 200-character file name, shown twice (the scene and its CSV), made a 450-character refusal."""
+    name = "n" * 195
+    s = tmp_path / f"{name}.toml"
+    s.write_text((GALLERY / "lab-slider-crank.toml").read_text())
+    (tmp_path / f"{name}.toml.csv").write_text("a file where a folder should be")
+    cam = tmp_path / f"{name}c.toml"
+    cam.write_text((GALLERY / "notes-roller-cam.toml").read_text())
+    code, _, err = run(capsys, *(a.format(s=s, cam=cam) for a in argv))
+    assert code == 2
+    one_line(err, "\u2026" + name[-20:])
+    assert len(err) <= 400, err
 
 
 def test_an_answers_csv_that_is_not_csv_is_one_sentence(tmp_path, capsys):

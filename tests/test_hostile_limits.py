@@ -83,7 +83,7 @@ def test_strings_and_keys(tmp_path, capsys):
     refuse(tmp_path, capsys, EXAMPLE.replace("O1 = [0, 0]", "O1 = [0, 0]\n" + "Q" * 300 + " = [1, 1]"),
            f"line {line}: ", "a key of 300 characters; keys may have at most 200")
     refuse(tmp_path, capsys, EXAMPLE.replace("O1 = [0, 0]", "O1 = [0, 0]\n\"" + "Q" * 300 + "\" = [1, 1]"),
-           "frame.QQQQ", "a key of 300 characters")
+           'frame."QQQQ', "a key of 300 characters")
 
 
 def test_a_number_too_long_for_python(tmp_path, capsys):

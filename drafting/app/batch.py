@@ -22,6 +22,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Sequence
+from ..scene.textsafe import shown_path
 
 TRIES = 20
 """Draws a variant may take before it is skipped."""
@@ -113,10 +114,10 @@ def run_variant(job: VariantJob) -> VariantResult:
         plan = lab_plan(lab, out, stem, job.formats, epoch=job.epoch, csv_extra=extra)
         res.files = [str(p) for p in write_outputs(out, stem, plan)]
     except LayoutError as e:                   # as render says it: the paper is what the user can change
-        res.error = f"{path}: variant {job.index}: drawing.paper: {e}"
+        res.error = f"{shown_path(path)}: variant {job.index}: drawing.paper: {e}"
         return res
     except (ExportError, ConstructionError) as e:
-        res.error = f"{path}: variant {job.index}: {e}"
+        res.error = f"{shown_path(path)}: variant {job.index}: {e}"
         return res
     res.columns = _key_columns(lab)
     return res

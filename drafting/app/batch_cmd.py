@@ -15,6 +15,7 @@ from .parallel import WorkerLost
 from .solving import UserError
 from ..backends.files import ExportError
 from ..scene.reader import SceneError
+from ..scene.textsafe import shown_path
 
 
 def cmd_batch(path: Path, variants: int, seed: int, out: Path, formats: Sequence[str], workers: int | None,
@@ -22,22 +23,22 @@ def cmd_batch(path: Path, variants: int, seed: int, out: Path, formats: Sequence
     """N variants of the scene's lab sheets (drafting.app.batch); each variant's files together or not at all,
     then every key as one CSV."""
     if variants < 1:
-        raise UserError(f"{path}: --variants must be at least 1, not {variants}")
+        raise UserError(f"{shown_path(path)}: --variants must be at least 1, not {variants}")
     if variants > MAX_VARIANTS:
-        raise UserError(f"{path}: --variants may be at most {MAX_VARIANTS}, not {variants}")
+        raise UserError(f"{shown_path(path)}: --variants may be at most {MAX_VARIANTS}, not {variants}")
     bar = progress.Progress(variants, "batch")
     bar.shown = progress.is_tty(sys.stderr)
     formats = [f for f in formats if f != PAGE]
     if not formats:
-        raise UserError(f"{path}: --format: a batch writes svg, pdf or png (the html page is one per scene)")
+        raise UserError(f"{shown_path(path)}: --format: a batch writes svg, pdf or png (the html page is one per scene)")
     try:
         results = run_batch(path, variants, seed, out, formats, executor=executor, progress=bar, workers=workers)
     except SceneError as e:
         raise UserError(str(e)) from None
     except ExportError as e:
-        raise UserError(f"{path}: {e}") from None
+        raise UserError(f"{shown_path(path)}: {e}") from None
     except WorkerLost as e:
-        raise UserError(f"{path}: {e}") from None
+        raise UserError(f"{shown_path(path)}: {e}") from None
     failed = 0
     for r in results:
         for n in r.notes:
@@ -46,7 +47,7 @@ def cmd_batch(path: Path, variants: int, seed: int, out: Path, formats: Sequence
             print(f"drafting: error: {r.error}", file=sys.stderr)
             failed += 1
     done = [r for r in results if r.files]
-    print(f"{path}: {len(done)} of {variants} variants (seed {seed}) written to {out}"
+    print(f"{shown_path(path)}: {len(done)} of {variants} variants (seed {seed}) written to {out}"
           + (f"; every key in {out / (path.stem + '-keys.csv')}" if done else ""))
     return 2 if failed else 0
 

@@ -16,6 +16,7 @@ from .solving import EXIT_DISAGREE, UserError, load_study, results_text, solve_s
 from ..render.errors import LayoutError
 from ..scene.reader import SceneError, _read_text, parse_scene
 from ..study.study import Study
+from ..scene.textsafe import shown_path
 
 
 def cmd_check(scenes: Sequence[Path]) -> int:
@@ -31,7 +32,7 @@ def cmd_check(scenes: Sequence[Path]) -> int:
             continue
         print(results_text(study))
         if study.comparisons and study.model is None:
-            print(f"  {path}: no analytic model for this mechanism; nothing checked")
+            print(f"  {shown_path(path)}: no analytic model for this mechanism; nothing checked")
         if study.disagreements():
             status = max(status, EXIT_DISAGREE)
     return status
@@ -43,7 +44,7 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
     label = ""
     if variant is not None:
         if seed is None:
-            raise UserError(f"{path}: --variant needs the batch's --seed")
+            raise UserError(f"{shown_path(path)}: --variant needs the batch's --seed")
         try:
             text = _read_text(path)
             parse_scene(text, path)
@@ -51,14 +52,14 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
         except SceneError as e:
             raise UserError(str(e)) from None
         if "vary" not in data:
-            raise UserError(f"{path}: vary: is missing, so the scene has no variants")
+            raise UserError(f"{shown_path(path)}: vary: is missing, so the scene has no variants")
         notes: list[str] = []
         try:
             study, _ = variant_study(data, path, seed, variant, notes)
         except SceneError as e:
             raise UserError(str(e)) from None
         if study is None:
-            raise UserError(f"{path}: vary: variant {variant} of seed {seed} was skipped by the batch (no draw could "
+            raise UserError(f"{shown_path(path)}: vary: variant {variant} of seed {seed} was skipped by the batch (no draw could "
                             f"be drawn)")
         label = variant_label(variant)
     else:
@@ -66,9 +67,9 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
     try:
         items = lab_for(study, label=label).items     # the key's scales are the worked sheet's: laid out
     except LayoutError as e:                  # as render says it: the paper is what the user can change
-        raise UserError(f"{path}: drawing.paper: {e}") from None
+        raise UserError(f"{shown_path(path)}: drawing.paper: {e}") from None
     if not items:
-        raise UserError(f"{path}: ask.analyses: the scene has no answers to mark (it asks for "
+        raise UserError(f"{shown_path(path)}: ask.analyses: the scene has no answers to mark (it asks for "
                         f"{', '.join(study.scene.analyses)})")
     try:
         marks, unknown = mark(items, read_answers(answers), answers, study.scene.units)
@@ -76,13 +77,13 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
         raise UserError(str(e)) from None
     width = max(len(m.item.shown) for m in marks)
     title = study.scene.title + (f" ({label})" if label else "")
-    print(f"{title}: {answers} marked at drawing accuracy")
+    print(f"{title}: {shown_path(answers)} marked at drawing accuracy")
     for m in marks:
         print(m.line(width))
     counts = {v: sum(1 for m in marks if m.verdict == v) for v in ("right", "wrong", "missing")}
     print(f"  {counts['right']} right, {counts['wrong']} wrong, {counts['missing']} missing of {len(marks)}")
     for name in unknown:
-        print(f"  note: {answers}: {name!r} is not a quantity of this scene; it asks for "
+        print(f"  note: {shown_path(answers)}: {name!r} is not a quantity of this scene; it asks for "
               f"{', '.join(i.shown for i in items)}")
     return 0 if counts["right"] == len(marks) else EXIT_DISAGREE
 

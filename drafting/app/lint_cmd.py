@@ -16,6 +16,7 @@ from ..layout.critic import CHECKS, Finding, blank_fraction, criticise, tally
 from ..render.errors import LayoutError
 from ..study.worked import sheets_for
 from .solving import UserError, load_study, located, solve_study
+from ..scene.textsafe import shown_path
 
 EXIT_FINDINGS = 1
 
@@ -28,9 +29,9 @@ def lint_scene(path: Path) -> list[tuple[tuple[int, int], float, list[Finding]]]
     try:
         sheets = sheets_for(study)
     except LayoutError as e:
-        raise UserError(f"{path}: drawing.paper: {e}") from None
+        raise UserError(f"{shown_path(path)}: drawing.paper: {e}") from None
     except ConstructionError as e:
-        raise UserError(f"{path}: {located(study, e)}") from None
+        raise UserError(f"{shown_path(path)}: {located(study, e)}") from None
     return [(s.number, blank_fraction(s), criticise(s)) for s in sheets]
 
 

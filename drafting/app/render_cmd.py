@@ -15,6 +15,7 @@ from .arguments import DEFAULT_OUT, FORMATS, PAGE
 from .solving import UserError, load_study, located, solve_study, results_text
 from ..study.study import Study
 from ..study.worked import builtin_example, sheets_for
+from ..scene.textsafe import shown_path
 
 
 def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
@@ -35,11 +36,11 @@ def render_one(path: Path, out: Path, formats: Sequence[str], paper: str | None,
             sheet_formats = [f for f in formats if f != PAGE]
             written = _write_together(study, out, path.stem, sheet_formats, PAGE in formats, lab)
         except ExportError as e:                  # names the output file it could not write
-            raise UserError(f"{path}: {e}") from None
+            raise UserError(f"{shown_path(path)}: {e}") from None
         except LayoutError as e:                  # the sheet: the paper is what the user can change
-            raise UserError(f"{path}: drawing.paper: {e}") from None
+            raise UserError(f"{shown_path(path)}: drawing.paper: {e}") from None
         except ConstructionError as e:            # raised while drawing: told at its position
-            raise UserError(f"{path}: {located(study, e)}") from None
+            raise UserError(f"{shown_path(path)}: {located(study, e)}") from None
     except UserError as e:
         return str(e), "", e.code
     return None, "\n".join([results_text(study)] + [f"  wrote {w}" for w in written]), 0

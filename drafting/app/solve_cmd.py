@@ -7,6 +7,7 @@ import json
 from pathlib import Path
 
 from .solving import UserError, load_study, results_text, solve_study
+from ..scene.textsafe import shown_path
 
 
 def cmd_solve(path: Path, as_json: bool, csv_path: Path | None = None) -> int:
@@ -23,7 +24,7 @@ def cmd_solve(path: Path, as_json: bool, csv_path: Path | None = None) -> int:
             prepare_folder(folder)
             write_outputs(folder, csv_path.stem, [(csv_path, lambda: results_csv(study).encode("utf-8"))])
         except ExportError as e:
-            raise UserError(f"{path}: --csv: {e}") from None
+            raise UserError(f"{shown_path(path)}: --csv: {e}") from None
         if not as_json:
             print(f"  wrote {csv_path}")
     return 0

@@ -10,7 +10,7 @@ from pathlib import Path
 from constructions.errors import ConstructionError, IndeterminatePosition
 
 from ..scene.reader import SceneError, load_scene
-from ..scene.textsafe import one_line
+from ..scene.textsafe import one_line, shown_path
 from ..scene.units import from_si, unit_symbol
 from ..study.study import Study
 
@@ -45,14 +45,14 @@ def solve_study(study: Study) -> Study:
             warnings.simplefilter("error", RuntimeWarning)     # numpy's overflow or invalid value: no raw warning
             study.run()
     except RuntimeWarning as e:
-        raise UserError(f"{study.scene.path}: solving this scene went out of the numbers' range ({e}); a value "
+        raise UserError(f"{shown_path(study.scene.path)}: solving this scene went out of the numbers' range ({e}); a value "
                         f"of the scene is far from what a mechanism has") from None
     except SceneError as e:                  # what the scene asks for, found wrong once solved (ask.find)
         raise UserError(str(e)) from None
     except IndeterminatePosition as e:
-        raise UserError(f"{study.scene.path}: {located(study, e)}", EXIT_SINGULAR) from None
+        raise UserError(f"{shown_path(study.scene.path)}: {located(study, e)}", EXIT_SINGULAR) from None
     except ConstructionError as e:
-        raise UserError(f"{study.scene.path}: {located(study, e)}") from None
+        raise UserError(f"{shown_path(study.scene.path)}: {located(study, e)}") from None
     return study
 
 

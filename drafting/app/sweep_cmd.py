@@ -24,7 +24,7 @@ from .solving import UserError
 from ..families.registry import families, family
 from ..scene.reader import SceneError, load_scene
 from ..study.study import Study
-from ..scene.textsafe import printable
+from ..scene.textsafe import printable, shown_path
 from ..scene.units import UnitError, to_si, unit_symbol, with_unit
 
 DEFAULT_STEPS = 72
@@ -70,17 +70,17 @@ def run_sweep(path: Path, steps: int | None = None, every: str | None = None):
     fam = family(scene.kind)
     if fam.sweeps is None:
         kinds = " or ".join(sorted(k for k, f in families().items() if f.sweeps is not None))
-        raise SweepInputError(f"{printable(str(path))}: a sweep needs a {kinds} scene, not a {scene.kind} scene")
+        raise SweepInputError(f"{shown_path(path)}: a sweep needs a {kinds} scene, not a {scene.kind} scene")
     why = fam.cannot_sweep(scene)
     if why is not None:
-        raise SweepInputError(f"{printable(str(path))}: {why}")
+        raise SweepInputError(f"{shown_path(path)}: {why}")
     thetas = crank_angles(scene.angle, steps, every)
     bar = Progress(thetas.size, "sweep")
     study = Study(scene, {"crank angles": thetas, "progress": lambda i, n: bar.update(i)})
     try:
         result = study.get(fam.sweeps)
     except ConstructionError as e:
-        raise SweepInputError(f"{printable(str(path))}: {e}") from None
+        raise SweepInputError(f"{shown_path(path)}: {e}") from None
     finally:
         bar.finish()
     return scene, result
@@ -177,7 +177,7 @@ def write_csv(path: Path, header: list[str], values: np.ndarray) -> None:
     from ..backends.files import ExportError, prepare_folder, write_outputs
     try:
         if path.is_dir():
-            raise ExportError(f"Cannot write {printable(str(path))}: it is a folder.")
+            raise ExportError(f"Cannot write {shown_path(path)}: it is a folder.")
         prepare_folder(folder)                 # as solve --csv: the folder made when missing
         write_outputs(folder, path.stem, [(path, lambda: data)])
     except ExportError as e:
@@ -239,7 +239,7 @@ def write_cycle_sheet(scene, out_dir: Path) -> list[str]:
         study.run()
         return [str(w) for w in write_sheets(sheets_for(study), out_dir, f"{scene.path.stem}-cycle")]
     except (ExportError, LayoutError, ConstructionError) as e:
-        raise SweepInputError(f"{printable(str(scene.path))}: --sheet: {e}") from None
+        raise SweepInputError(f"{shown_path(scene.path)}: --sheet: {e}") from None
 
 
 def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path | None,
@@ -252,7 +252,7 @@ def cmd_sweep(path: Path, steps: int | None, every: str | None, csv_path: Path |
         try:
             write_csv(csv_path, header, values)
         except SweepInputError as e:           # named as solve --csv names it: the scene, the option
-            raise SweepInputError(f"{path}: --csv: {e}") from None
+            raise SweepInputError(f"{shown_path(path)}: --csv: {e}") from None
         gaps = s.thetas.size - int(np.count_nonzero(s.assembles))
         print(f"{scene.title}\n  {s.thetas.size} crank angles ({s.model}), {gaps} not assembled; "
               f"wrote {printable(str(csv_path))}")

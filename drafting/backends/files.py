@@ -40,7 +40,7 @@ from typing import Callable, Sequence
 from . import cairo as cairo_out, faults
 from ..layout.sheet import Sheet
 from .svg import sheet_to_svg
-from ..scene.textsafe import printable
+from ..scene.textsafe import printable, shown_path
 
 FORMATS = ("svg", "pdf", "png")
 PNG_DPI = 150.0
@@ -141,7 +141,7 @@ def _why(e: BaseException) -> str:
 
 
 def _show(path: Path) -> str:
-    return printable(str(path))
+    return shown_path(path)
 
 
 # -- writing -------------------------------------------------------------------------------------------

@@ -193,10 +193,17 @@ def _short(text: str, limit: int = 40) -> str:
 
 # -- the parsed data -----------------------------------------------------------------------------------
 
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
+
+
 def _key(prefix: str, k: Any) -> str:
+    """A dotted key as TOML writes it: a key that is not bare (empty, spaces, dots) in double quotes."""
     if isinstance(k, int):
         return f"{prefix}[{k + 1}]"
-    return f"{prefix}.{k}" if prefix else str(k)
+    k = str(k)
+    if not _BARE_KEY.fullmatch(k):
+        k = '"' + k.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    return f"{prefix}.{k}" if prefix else k
 
 
 def check_data(data: dict[str, Any]) -> None:

@@ -21,7 +21,7 @@ from .unitset import KEYS as UNIT_KEYS, UNITS, Units
 from .header_keys import ASK, DRAWING, ORIENTATIONS, PAPERS, TOP
 from .keys import KeyTable
 from . import limits
-from .textsafe import cut, cut_middle, one_line, printable
+from .textsafe import cut, one_line, printable, shown_path
 from .drawing_scales import read_scales
 from .units import UnitError, check_unit, to_si
 
@@ -41,7 +41,7 @@ class SceneError(Exception):
         self.path, self.key, self.problem = str(path), key, problem
         # one line, whatever the file holds: control characters escaped, long names and quoted values
         # cut (textsafe), so the file and the key always show
-        where, key = cut_middle(printable(str(path)), 120), cut(printable(key), 80)
+        where, key = shown_path(path), cut(printable(key), 80)
         problem = one_line(problem)
         super().__init__(f"{where}: {key}: {problem}" if key else f"{where}: {problem}")
 

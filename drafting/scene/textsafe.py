@@ -66,6 +66,16 @@ def cut_middle(text: str, limit: int) -> str:
     return text[:head] + "\u2026" + text[-(limit - head - 1):]
 
 
+PATH_LIMIT = 120
+"""A file name in a message is cut in the middle to this many characters."""
+
+
+def shown_path(path: object, limit: int = PATH_LIMIT) -> str:
+    """A file name for a message: escaped and cut in the middle (its start and its file name kept), so a
+    200-character name cannot push the message past a line, nor its reason off the screen."""
+    return cut_middle(printable(str(path)), limit)
+
+
 def quote(value: object, limit: int = QUOTE_LIMIT) -> str:
     """A value quoted for a message: its repr, cut at ``limit`` characters, escaped, one line."""
     r = repr(value)

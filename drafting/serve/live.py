@@ -24,6 +24,7 @@ from ..backends.svg import sheet_to_svg
 from ..render.errors import LayoutError
 from ..scene.reader import SceneError, parse_scene
 from ..study.study import Study
+from ..scene.textsafe import shown_path
 
 _LOCK = threading.Lock()        # one solve at a time: the app's threads share the engine's caches
 
@@ -65,7 +66,7 @@ def draw(text: str, path: Path | str) -> Drawn | Failed:
     except UserError as e:
         return Failed(str(e), "", line_of(text, str(e), ""))
     except LayoutError as e:
-        return Failed(f"{path}: drawing.paper: {e}", "drawing.paper", line_of(text, "", "drawing.paper"))
+        return Failed(f"{shown_path(path)}: drawing.paper: {e}", "drawing.paper", line_of(text, "", "drawing.paper"))
 
 
 _LINE = re.compile(r"\bline (\d+)\b")
