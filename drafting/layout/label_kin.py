@@ -183,6 +183,10 @@ class _Clear:
     def __init__(self, ours: list, theirs: list, pad: float) -> None:
         self.ours, self.theirs, self.pad = ours, theirs, pad
 
+    def with_ours(self, ours: list) -> "_Clear":
+        """The same test with ``ours`` as the label's own geometry (a leader drawn to it)."""
+        return _Clear(ours, self.theirs, self.pad)
+
     def __call__(self, le: float, to: float, ri: float, bo: float) -> bool:
         p = self.pad
         bl, bt, br, bb = le + p, to + p, ri - p, bo - p

@@ -35,7 +35,8 @@ _DIR_ATAN = tuple(math.atan2(u[1], u[0]) for u in _DIRS)
 _DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in range(16))
 
 
-_DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0))      # mm from the anchor, then relaxed
+_DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0), (3.0, 4.5, 6.0, 7.4))
+"""mm from the anchor; then relaxed; then an arrow's label set off by a leader (within LONGEST_LEADER)"""
 _ARROW_F = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)                # where along an arrow, best first
 _TRIAL_S = (3.0, 6.0, 10.0, 15.0, 22.0)                       # mm in from either end of a trial line
 _BEYOND = 1.7                                                 # the cost of a place beyond an arrow's tip
@@ -81,7 +82,7 @@ class _Candidates:
         if req.kind in ("point", "polygon"):
             self._around(req, hw, hh, incident, dists, req.kind == "polygon" and relax == 0)
         elif req.kind == "arrow":
-            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists)
+            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists, relax != 2)
         elif req.kind == "trial":
             self._along_trial(req, hw, hh, dists[:3] if relax == 0 else dists)
         else:
@@ -103,16 +104,17 @@ class _Candidates:
             return shifted(p, _DIRS[j], r0 + dists[k] + edges[j])
         self.centre = centre
 
-    def _along_arrow(self, req, hw, hh, dists) -> None:
+    def _along_arrow(self, req, hw, hh, dists, beyond=True) -> None:
         tail, tip = req.other, req.anchor
         v = (tip[0] - tail[0], tip[1] - tail[1])
         u = unit_vector(v)
         sides = ((-u[1], u[0]), (u[1], -u[0]))
         self.costs = [3.0 * abs(f - 0.5) + 0.8 * dist + side * 0.1
                       for dist in dists for f in _ARROW_F for side in (0, 1)]
-        self.costs += [_BEYOND + 0.8 * dist for dist in dists]
+        if beyond:
+            self.costs += [_BEYOND + 0.8 * dist for dist in dists]
         n_f = len(_ARROW_F)
-        n_along = len(self.costs) - len(dists)
+        n_along = len(self.costs) - (len(dists) if beyond else 0)
 
         def centre(i: int) -> Pt:
             if i >= n_along:                    # beyond the tip, on the arrow's line
@@ -157,6 +159,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     out: list[Command] = []
     leaders: list[Command] = []
     tied: list[tuple[LabelReq, Rect]] = []
+    committed: list[Line] = []          # leaders of labels set off their arrows: later labels keep off them
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
                                                         ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
     segs = _Segments(d.segments)
@@ -174,8 +177,12 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
-        for heavy_ok, clear in _tiers(req, kin.test(req, reach, LABEL_PAD)):
-            for relax in (0, 1):
+        for heavy_ok, clear, relaxes in _tiers(req, kin.test(req, reach, LABEL_PAD), placed, d):
+            if committed and clear is not None:
+                clear = _sparing(clear, committed)
+            elif committed:
+                clear = _sparing(None, committed)
+            for relax in relaxes:
                 best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
                                        near_placed, near_hard, near_segs, heavy_ok, clear)
                 if best is not None:
@@ -198,6 +205,8 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
         _, centre, box = best
         placed.append(box)
+        if _led(req, box):                 # a leader it was placed by: no later label may hide it
+            committed.append(_leader(req, box))
         x = centre[0] - ext.width / 2
         y = centre[1] - (ext.top + ext.bottom) / 2
         out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
@@ -212,14 +221,50 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     return leaders + out            # the leaders first: under every label's white ground, never over a text
 
 
-def _tiers(req: LabelReq, clear):
-    """The searches a label's candidates go through, strictest first, as (heavy_ok, test): hiding no
-    heavy line and unambiguous; then hiding no heavy line; then (a mandatory label only) anything."""
+def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
+    """The searches a label's candidates go through, strictest first, as (heavy_ok, test, relaxes):
+    hiding no heavy line and unambiguous; for an arrow, then set off it by a leader that makes it
+    unambiguous (:func:`_led_test`); then hiding no heavy line; then (a mandatory label only) anything."""
     if clear is not None:
-        yield False, clear
-    yield False, None
+        yield False, clear, (0, 1)
+        if req.kind == "arrow" and req.other is not None and not _short(req):
+            yield False, _led_test(req, clear, placed, d), (2,)
+    yield False, None, (0, 1)
     if req.mandatory:
-        yield True, None
+        yield True, None, (0, 1)
+
+
+def _led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
+    """The test of a candidate set off its arrow (2.5-8 mm): its leader, from the nearest point of the
+    shaft, runs through no label or symbol and across no other heavy line, and the text is farther from
+    every other arrow than from that leader by the critic's margin -- the leader names its arrow."""
+    def test(le: float, to: float, ri: float, bo: float) -> bool:
+        box = Rect(le, to, ri - le, bo - to)
+        leader = _leader(req, box)
+        if leader is None or not _clear(leader, placed + [h for h in d.hard
+                                                          if not h.contains_point(leader.x1, leader.y1)]):
+            return False
+        if _crosses_heavy(leader, d.segments):
+            return False
+        return clear.with_ours([leader.points])(le, to, ri, bo)
+    return test
+
+
+def _led(req: LabelReq, box: Rect) -> bool:
+    """Whether ``req``'s label in ``box`` stands off its arrow far enough to be drawn with a leader."""
+    return req.kind == "arrow" and req.other is not None and not _short(req) and _leader(req, box) is not None
+
+
+def _sparing(clear, leaders: list[Line]):
+    """``clear`` (or no test) and, besides, a box that hides none of ``leaders``."""
+    def test(le: float, to: float, ri: float, bo: float) -> bool:
+        box = Rect(le, to, ri - le, bo - to)
+        return _clear_of(leaders, box) and (clear is None or clear(le, to, ri, bo))
+    return test
+
+
+def _clear_of(lines: list[Line], box: Rect) -> bool:
+    return all(_clear(line, [box]) for line in lines)
 
 
 SHORT_ARROW = 5.0
