@@ -22,7 +22,8 @@ from drafting.render import drawing as D
 from drafting.layout.diagram import draw_entities, model_points
 from drafting.render.drawing import drawer, drawer_for
 from drafting.render.errors import DrawingError, StyleError
-from drafting.render.paper import Circle as CircleCmd, Line, Polygon, Polyline, Rectangle, Text
+from drafting.render.annotations import _text_half
+from drafting.render.paper import Circle as CircleCmd, Line, Polygon, Polyline, Rect, Rectangle, Text
 from drafting.layout.sheet import SheetInfo, compose_sheets
 from drafting.render.style import AREA_STYLES, LINE_STYLES, area_style_for, line_style_for, long_dash_dot, style, styles
 from drafting.backends.svg import sheet_to_svg
@@ -171,11 +172,11 @@ def test_iso_129_dimension():
         apex, others = h.points[0], h.points[1:]
         inward = 1 if apex[0] == pytest.approx(0.0) else -1
         assert all((p[0] - apex[0]) * inward > 0 for p in others)
-    # the value, horizontal, above the line on a white ground (drawn before its text)
-    (t,) = [c for c in d.commands if isinstance(c, Text)]
-    assert t.plain == "100 mm" and t.box.bottom <= -20.0 and 40 < t.box.center[0] < 60
-    names = [c.name for c in d.commands]
-    assert names.index("dim O1B:text bg") < names.index("dim O1B:text")
+    # the value, horizontal, above the middle of the line: a mandatory note handed to the label placer
+    # (which sets it there where clear, else beside, on a white note ground)
+    (req,) = [r for r in d.labels if r.name == "dim O1B"]
+    assert req.kind == "note" and req.markup == "100 mm" and req.mandatory
+    assert req.anchor[0] == pytest.approx(50.0) and req.anchor[1] < -20.0
     assert style("note_bg").fill == "white"
 
 
@@ -196,9 +197,9 @@ def test_angle_mark_arc_arrow_and_text():
 
 def test_note_on_a_white_ground():
     d = draw_entities([Note("note", Role.NOTE, S, Vec(0.05, 0.05), "toggle")], 1000.0)
-    bg, t = d.commands
-    assert isinstance(bg, Rectangle) and bg.style == "note_bg" and bg.rect.contains(t.box)
-    assert t.box.center == pytest.approx((50.0, -50.0))
+    (req,) = d.labels                       # the placer sets it there on a note ground where clear
+    assert req.kind == "note" and req.markup == "toggle" and req.mandatory
+    assert req.anchor == pytest.approx((50.0, -50.0))
     assert model_points([Note("n", Role.NOTE, S, Vec(1, 2), "x")]) == [Vec(1, 2)]
 
 
@@ -276,8 +277,11 @@ def test_notes_close_together_are_set_clear_of_each_other_the_least_way():
              Note("addendum", Role.NOTE, S, Vec(-0.002, 0.0045), "addendum circle"),  # 4.5 mm higher: just touches
              Note("far", Role.NOTE, S, Vec(0.2, 0.2), "far away")]
     d = draw_entities(notes, 1000.0)
-    grounds = {c.name.split(":")[0]: c.rect for c in d.commands if c.style == "note_bg"}
-    texts = {c.name.split(":")[0]: c for c in d.commands if c.style == "label"}
+    # each note's point handed to the label placer (which keeps it there where no heavy line runs)
+    grounds = {}
+    for r in d.labels:
+        hw, hh = _text_half(r.markup)
+        grounds[r.name] = Rect(r.anchor[0] - hw, r.anchor[1] - hh, 2 * hw, 2 * hh)
     names = list(grounds)
     for i, a in enumerate(names):
         for b in names[i + 1:]:
@@ -286,4 +290,3 @@ def test_notes_close_together_are_set_clear_of_each_other_the_least_way():
     assert grounds["far"].center == pytest.approx((200.0, -200.0), abs=1e-9)       # room: stays put
     assert grounds["base"].top == pytest.approx(grounds["pitch"].bottom + 0.3, abs=1e-5)     # just below
     assert grounds["addendum"].bottom == pytest.approx(grounds["pitch"].top - 0.3, abs=1e-5)  # just above
-    assert all(texts[n].box.x >= grounds[n].x for n in names)

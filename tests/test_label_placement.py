@@ -222,3 +222,23 @@ def test_a_label_pushed_off_its_arrow_is_tied_to_it_by_a_leader_only_where_the_l
     assert _crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), True)])          # another vector between
     assert not _crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), False)])    # a thin line is no matter
     assert not _crosses_heavy(lead, [((40.0, 50.0), (70.0, 50.0), True)])     # its own shaft
+
+
+def test_a_notes_text_sits_at_its_point_where_clear_else_off_the_heavy_line_through_it():
+    """A note's or a dimension's text (kind "note") is set centred on its point when nothing heavy runs
+    there, else at the nearest clear place around it -- a tooth across a circle's name moves the name, not
+    strikes it; it is drawn on a note's white ground and named "<owner>:text" (it names no point)."""
+    from drafting.layout.labels import place_labels
+    from drafting.render.drawing import Drawing, LabelReq
+    from drafting.render.paper import Rect, Rectangle, Text
+    plot = Rect(0, 0, 100, 100)
+    d = Drawing()
+    d.labels.append(LabelReq("note", "pitch circle", (50.0, 50.0), True, "terms pitch"))
+    bg, t = place_labels(d, plot, "space")
+    assert isinstance(bg, Rectangle) and bg.style == "note_bg" and bg.name == "terms pitch:text bg"
+    assert isinstance(t, Text) and t.name == "terms pitch:text" and t.box.center == pytest.approx((50.0, 50.0), abs=0.3)
+    d.segments.append(((50.0, 30.0), (50.0, 70.0), True))          # a tooth flank through the point
+    bg, t = place_labels(d, plot, "space")
+    r = bg.rect
+    assert not (r.x < 50.0 < r.x + r.w and r.y < 70.0 and r.y + r.h > 30.0)    # the flank not hidden
+    assert math.dist(t.box.center, (50.0, 50.0)) < 20.0             # still beside its point

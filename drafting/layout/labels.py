@@ -79,8 +79,8 @@ class _Candidates:
 
     def __init__(self, req: LabelReq, hw: float, hh: float, incident: list[float], relax: int) -> None:
         dists = _DISTS[relax]
-        if req.kind in ("point", "polygon"):
-            self._around(req, hw, hh, incident, dists, req.kind == "polygon" and relax == 0)
+        if req.kind in ("point", "polygon", "note"):
+            self._around(req, hw, hh, incident, dists, req.kind in ("polygon", "note") and relax == 0)
         elif req.kind == "arrow":
             self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists, relax != 2)
         elif req.kind == "trial":
@@ -143,6 +143,12 @@ class _Candidates:
         self.centre = centre
 
 
+LABEL_KINDS = ("point", "arrow", "trial", "polygon", "note")
+"""The kinds of label, placed in this order; a "note" (a note's or a dimension's text) sits at its anchor
+where that is clear, else around it, on a note's white ground, named "<owner>:text" -- it names no point,
+so no other entity can be mistaken for its own."""
+
+
 def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> list[Command]:
     """Put every label where it overlaps no other label, arrowhead or symbol, inside ``plot``.
 
@@ -161,7 +167,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     tied: list[tuple[LabelReq, Rect]] = []
     committed: list[Line] = []          # leaders of labels set off their arrows: later labels keep off them
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
-                                                        ["point", "arrow", "trial", "polygon"].index(d.labels[i].kind)))
+                                                        LABEL_KINDS.index(d.labels[i].kind)))
     segs = _Segments(d.segments)
     kin = Kin(d) if d.labels else None
     for i in order:
@@ -177,7 +183,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best = None
-        for heavy_ok, clear, relaxes in _tiers(req, kin.test(req, reach, LABEL_PAD), placed, d):
+        for heavy_ok, clear, relaxes in _tiers(req, None if req.kind == "note" else kin.test(req, reach, LABEL_PAD), placed, d):
             if committed and clear is not None:
                 clear = _sparing(clear, committed)
             elif committed:
@@ -205,16 +211,17 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
         _, centre, box = best
         placed.append(box)
-        if _led(req, box):                 # a leader it was placed by: no later label may hide it
+        if req.kind == "arrow" and _led(req, box):      # the leader that names its arrow: kept clear
             committed.append(_leader(req, box))
         x = centre[0] - ext.width / 2
         y = centre[1] - (ext.top + ext.bottom) / 2
-        out.append(Rectangle(box.x, box.y, box.w, box.h, "label_bg", f"{req.name}:label bg"))
-        out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:label"))
+        tag, ground = ("text", "note_bg") if req.kind == "note" else ("label", "label_bg")
+        out.append(Rectangle(box.x, box.y, box.w, box.h, ground, f"{req.name}:{tag} bg"))
+        out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:{tag}"))
         tied.append((req, box))
     for req, box in tied:                # once every label is placed: a leader hidden under another's ground
         leader = _leader(req, box)       # would leave a stray stroke, so a far label's goes only where clear
-        if leader is not None and (_short(req) or (_clear(leader, [o for o in placed if o is not box] + [
+        if leader is not None and (_short(req) or req.kind == "note" or (_clear(leader, [o for o in placed if o is not box] + [
                 h for h in d.hard if not h.contains_point(leader.x1, leader.y1)]) and not _crosses_heavy(
                 leader, d.segments))):
             leaders.append(leader)
@@ -225,6 +232,10 @@ def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
     """The searches a label's candidates go through, strictest first, as (heavy_ok, test, relaxes):
     hiding no heavy line and unambiguous; for an arrow, then set off it by a leader that makes it
     unambiguous (:func:`_led_test`); then hiding no heavy line; then (a mandatory label only) anything."""
+    if req.kind == "note":          # a note set off its point is tied to it by a leader
+        yield False, None, (0, 1)
+        yield True, None, (0,)
+        return
     if clear is not None:
         yield False, clear, (0, 1)
         if req.kind == "arrow" and req.other is not None and not _short(req):
@@ -251,8 +262,10 @@ def _led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
 
 
 def _led(req: LabelReq, box: Rect) -> bool:
-    """Whether ``req``'s label in ``box`` stands off its arrow far enough to be drawn with a leader."""
-    return req.kind == "arrow" and req.other is not None and not _short(req) and _leader(req, box) is not None
+    """Whether ``req``'s label in ``box`` stands off its arrow (or a note off its point) far enough to be
+    drawn with a leader."""
+    return req.kind in ("arrow", "note") and req.other is not None and not _short(req) \
+        and _leader(req, box) is not None
 
 
 def _sparing(clear, leaders: list[Line]):
@@ -311,8 +324,14 @@ def _leader(req: LabelReq, box: Rect) -> Line | None:
     long arrow's shaft when the box stands off it by more than :data:`FAR_LABEL` (and less than
     :data:`LONGEST_LEADER`); None for a label that needs none (not an arrow, or beside its arrow) or that
     a leader would not serve."""
-    if req.kind != "arrow" or req.other is None:
+    if req.other is None or req.kind not in ("arrow", "note"):
         return None
+    if req.kind == "note":          # from the point it names (a dimension line's middle), when set off it
+        mx, my = req.other
+        qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
+        if math.hypot(qx - mx, qy - my) <= FAR_LABEL:
+            return None
+        return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
     (ax, ay), (bx, by) = req.anchor, req.other
     if not _short(req):
         mx, my = _nearest_on_segment((ax, ay), (bx, by), (box.x + box.w / 2, box.y + box.h / 2))
@@ -428,7 +447,7 @@ _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin
 def _reach(req: LabelReq, hw: float, hh: float) -> Rect:
     """A rectangle holding every candidate box of ``req`` (see :class:`_Candidates`)."""
     r = req.r0 + _FAR + 2 * (hw + hh)
-    if req.kind in ("point", "polygon") or req.other is None:
+    if req.kind in ("point", "polygon", "note") or req.other is None:
         x, y = req.anchor
         return Rect(x - r, y - r, 2 * r, 2 * r)
     a, b = req.anchor, req.other

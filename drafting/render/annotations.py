@@ -84,13 +84,16 @@ def draw_dimension(e: Dimension, ctx: DrawContext) -> None:
         ctx.d.layers.setdefault(HEADS, []).append(h)
         ctx.d.hard.append(Rect.bounding(h.points))
     if words:
-        mid = ((da[0] + db[0]) / 2, (da[1] + db[1]) / 2)
+        mid = line_mid = ((da[0] + db[0]) / 2, (da[1] + db[1]) / 2)
         hw, hh = _text_half(words)
         if length < 2 * hw + 2 * ARROW_LEN + 1.0 or abs(u[1]) < 0.5:
             # beside the dimension line, away from the feature: the text box just clears the line
             reach = abs(n[0]) * hw + abs(n[1]) * hh + 0.6
             mid = shifted(mid, n, side * reach)
-        _boxed_text(ctx, mid, words, e.name)
+        # the value is a label: at the middle of the dimension line where that is clear, else the nearest
+        # clear place beside it -- the placer keeps it off heavy lines, arrowheads and pins
+        ctx.d.labels.append(LabelReq("note", words, mid, True, e.name, other=line_mid,
+                                     ground=Rect(mid[0] - hw, mid[1] - hh, 2 * hw, 2 * hh)))
 
 
 @drawer(AngleMark, points=lambda e: (e.vertex,))
@@ -144,4 +147,8 @@ def draw_note(e: Note, ctx: DrawContext) -> None:
     clear = NOTE_GAP + hh + 1e-6                # (a hair more: the test is strict)
     ys = [y0] + [v for o in ctx.notes for v in (o.top - clear, o.bottom + clear)]
     y = min((v for v in ys if free(v)), key=lambda v: (abs(v - y0), v))
-    ctx.notes.append(_boxed_text(ctx, (x, y), words, e.name))
+    ground = Rect(x - hw, y - hh, 2 * hw, 2 * hh)
+    ctx.notes.append(ground)
+    # set there where it is clear, else at the nearest clear place around: the placer keeps it off heavy
+    # lines (the teeth across a circle's name), arrowheads and pins as it does every label
+    ctx.d.labels.append(LabelReq("note", words, (x, y), True, e.name, other=(x, y0), ground=ground))

@@ -48,7 +48,7 @@ Pt = tuple[float, float]
 
 @dataclass
 class LabelReq:
-    kind: str                       # point, arrow, trial, polygon
+    kind: str                       # point, arrow, trial, polygon, note (layout.labels.LABEL_KINDS)
     markup: str
     anchor: Pt
     mandatory: bool
@@ -56,6 +56,7 @@ class LabelReq:
     r0: float = 0.0                 # radius of the symbol drawn at the anchor
     other: Pt | None = None         # arrow tail / trial far end
     pivot_digits: bool = False
+    ground: Rect | None = None      # a note's ground at its anchor: the drawing's extent counts it
 
 
 THICK_STYLES = frozenset({"vector", "link", "guide", "load", "block"})
@@ -93,14 +94,19 @@ class Drawing:
         return [c for k in sorted(self.layers) for c in self.layers[k]]
 
     def bbox(self) -> Rect | None:
+        """The extent of the commands and of the notes' grounds at their anchors (a note is set by the
+        label placer, at its anchor where that is clear: the drawing reserves its room there)."""
         pts = [p for c in self.commands for p in command_points(c)]
+        pts += [q for r in self.labels if r.ground is not None for q in ((r.ground.left, r.ground.top),
+                                                                         (r.ground.right, r.ground.bottom))]
         return Rect.bounding(pts) if pts else None
 
     def moved(self, dx: float, dy: float, region: str | None = None) -> "Drawing":
         """The drawing moved by ``(dx, dy)`` mm, its texts put in ``region`` when given."""
         d = Drawing({k: [translated(c, dx, dy, region) for c in v] for k, v in self.layers.items()})
         d.labels = [LabelReq(r.kind, r.markup, (r.anchor[0] + dx, r.anchor[1] + dy), r.mandatory, r.name, r.r0,
-                             None if r.other is None else (r.other[0] + dx, r.other[1] + dy), r.pivot_digits)
+                             None if r.other is None else (r.other[0] + dx, r.other[1] + dy), r.pivot_digits,
+                             None if r.ground is None else r.ground.translated(dx, dy))
                     for r in self.labels]
         d.hard = [h.translated(dx, dy) for h in self.hard]
         d.segments = [((a[0] + dx, a[1] + dy), (b[0] + dx, b[1] + dy), t) for a, b, t in self.segments]
