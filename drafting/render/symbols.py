@@ -50,6 +50,7 @@ def ground_symbol(p: Pt, u: Pt, name: str) -> tuple[list[Command], Rect]:
         strokes.append((q, r))
         pts.append(r)
         s += HATCH_STEP
+    pts += [(p[0] - PIN_R, p[1] - PIN_R), (p[0] + PIN_R, p[1] + PIN_R)]        # the pin, whole
     return ([Polygon(tri, "ground", f"{name}:ground"), Line(*a, *b, "link", f"{name}:ground line"),
              Strokes(tuple(strokes), "hatch", f"{name}:hatch"), Circle(*p, PIN_R, "pin", f"{name}:pin")],
             Rect.bounding(pts))
