@@ -218,13 +218,16 @@ class Dimension(Entity):
 @dataclass(frozen=True, slots=True)
 class AngleMark(Entity):
     """An angle at ``vertex`` from direction ``start_angle`` counter-clockwise to ``end_angle``
-    (radians), drawn as an arc of ``radius`` (model units) with its ``text``."""
+    (radians), drawn as an arc of ``radius`` (model units) with its ``text`` -- on paper at least
+    ``least_radius`` mm out (0: the drawer's own least radius), so marks about one vertex stay apart
+    however small the drawing."""
 
     vertex: Vec
     radius: float
     start_angle: float
     end_angle: float
     text: str = ""
+    least_radius: float = 0.0
 
 
 @dataclass(frozen=True, slots=True)

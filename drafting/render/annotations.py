@@ -105,7 +105,7 @@ def draw_angle_mark(e: AngleMark, ctx: DrawContext) -> None:
     if not math.isfinite(span) or abs(span) < 1e-9:
         return
     v = T(e.vertex)
-    r = max(abs(e.radius) * T.k, ANGLE_MIN_R)
+    r = max(abs(e.radius) * T.k, ANGLE_MIN_R, e.least_radius)
     segs = int(min(180, max(8, math.ceil(abs(span) * r / 0.8))))
 
     def at(angle: float, rr: float = r) -> Pt:

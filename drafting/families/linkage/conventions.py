@@ -24,6 +24,10 @@ OMEGA_REACH = 0.65
 """The omega arrow stands 0.65 of the crank's length out from its pivot (the crank-angle mark at 0.45) ..."""
 ALPHA_REACH = 0.85
 """... and the alpha arrow 0.85 out, between it and the crank pin."""
+OMEGA_LEAST, ALPHA_LEAST = 9.0, 12.5
+"""mm on paper: however short the crank is drawn, the omega arrow stands at least 9 mm out and the alpha
+arrow 12.5 mm, clear of the crank-angle mark (at least 6 mm: ``render.annotations.ANGLE_MIN_R``) and of
+each other, so each arc reads as its own and carries its own value."""
 
 
 def link_numbers(m: Mechanism, pose: Pose) -> list[LinkNumber]:
@@ -46,13 +50,15 @@ def link_numbers(m: Mechanism, pose: Pose) -> list[LinkNumber]:
     return out
 
 
-def rotation_arrow(name: str, pivot: Vec, tip: Vec, rate: float, text: str, reach: float) -> AngleMark:
+def rotation_arrow(name: str, pivot: Vec, tip: Vec, rate: float, text: str, reach: float,
+                   least: float = 0.0) -> AngleMark:
     """The arc arrow of the crank's ``rate`` (omega or alpha, CCW positive) about its ``pivot``, ``reach`` of
-    the crank out, straddling the crank and pointing in the sense of ``rate``."""
+    the crank out (at least ``least`` mm on paper), straddling the crank and pointing in the sense of
+    ``rate``."""
     r = tip - pivot
     half = ROTATION_SPAN / 2 * (1.0 if rate > 0 else -1.0)
     return AngleMark(name, Role.GIVEN, Diagram.SPACE, pivot, reach * r.norm(), r.angle() - half, r.angle() + half,
-                     text)
+                     text, least)
 
 
 def conventions(m: Mechanism, pose: Pose, omega: float, alpha: float | None) -> Construction:
@@ -65,11 +71,13 @@ def conventions(m: Mechanism, pose: Pose, omega: float, alpha: float | None) -> 
     words = f"Number the links as the notes do: the frame {frame_number(m)}, the links and blocks by their numbers"
     values = {}
     if omega != 0:
-        ents.append(rotation_arrow(f"omega {n}", pos[pivot], pos[tip], omega, f"\u03c9_{n} = $w", OMEGA_REACH))
+        ents.append(rotation_arrow(f"omega {n}", pos[pivot], pos[tip], omega, f"\u03c9_{n} = $w", OMEGA_REACH,
+                                   OMEGA_LEAST))
         words += f"; the crank {pivot}{tip} turns at \u03c9_{n} = $w {'CCW' if omega > 0 else 'CW'}"
         values["w"] = Value("angular velocity", abs(omega))
     if alpha:
-        ents.append(rotation_arrow(f"alpha {n}", pos[pivot], pos[tip], alpha, f"\u03b1_{n} = $al", ALPHA_REACH))
+        ents.append(rotation_arrow(f"alpha {n}", pos[pivot], pos[tip], alpha, f"\u03b1_{n} = $al", ALPHA_REACH,
+                                   ALPHA_LEAST))
         words += f", \u03b1_{n} = $al {'CCW' if alpha > 0 else 'CW'}"
         values["al"] = Value("angular acceleration", abs(alpha))
     return Construction("Space diagram").then(words + ".", *ents, values=values, kind=StepKind.GIVEN)
