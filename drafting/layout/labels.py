@@ -211,7 +211,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
         _, centre, box = best
         placed.append(box)
-        if req.kind == "arrow" and _led(req, box):      # the leader that names its arrow: kept clear
+        if req.kind in ("arrow", "trial") and _led(req, box):     # the leader that names its line: kept clear
             committed.append(_leader(req, box))
         x = centre[0] - ext.width / 2
         y = centre[1] - (ext.top + ext.bottom) / 2
@@ -238,7 +238,7 @@ def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
         return
     if clear is not None:
         yield False, clear, (0, 1)
-        if req.kind == "arrow" and req.other is not None and not _short(req):
+        if req.kind in ("arrow", "trial") and req.other is not None and not _short(req):
             yield False, _led_test(req, clear, placed, d), (2,)
     yield False, None, (0, 1)
     if req.mandatory:
@@ -264,7 +264,7 @@ def _led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
 def _led(req: LabelReq, box: Rect) -> bool:
     """Whether ``req``'s label in ``box`` stands off its arrow (or a note off its point) far enough to be
     drawn with a leader."""
-    return req.kind in ("arrow", "note") and req.other is not None and not _short(req) \
+    return req.kind in ("arrow", "trial", "note") and req.other is not None and not _short(req) \
         and _leader(req, box) is not None
 
 
@@ -324,7 +324,7 @@ def _leader(req: LabelReq, box: Rect) -> Line | None:
     long arrow's shaft when the box stands off it by more than :data:`FAR_LABEL` (and less than
     :data:`LONGEST_LEADER`); None for a label that needs none (not an arrow, or beside its arrow) or that
     a leader would not serve."""
-    if req.other is None or req.kind not in ("arrow", "note"):
+    if req.other is None or req.kind not in ("arrow", "trial", "note"):
         return None
     if req.kind == "note":          # from the point it names (a dimension line's middle), when set off it
         mx, my = req.other
