@@ -24,9 +24,10 @@ from dataclasses import dataclass
 from typing import Callable, Sequence
 
 from ..render.errors import LayoutError
-from ..render.paper import Paper, Rect, Text
+from ..render.paper import Paper, Rect, Text, command_points
 from ..render.scales import ratio_factor
-from .flow import TEXT_SIZES, FlowText, flow, flow_shrinking, item_height, layout_item, page_slot, slot_page
+from .flow import TEXT_SIZES, FlowText, flow, flow_shrinking, layout_item, page_slot, slot_page
+from .critic.geometry import covered_area
 from .fills import quality, smallest_fill
 from .items import Section, TooWide
 from .page_plans import PagePlan, TbHeight, diagram_page, text_page, text_page_options
@@ -39,9 +40,9 @@ COMFORTABLE_LETTERING = 3.0
 MAX_PAGES = 12
 MOST_BARE = 0.55
 """A page of a document with more of its frame than this left blank, as planned, is *bare* (the critic's
-blank page is over half blank; the plan's measure, :func:`blank_shares`, leaves out the white between
-items of text and so runs up to 0.05 higher): of two documents of as many pages, the one with fewer
-bare pages is taken."""
+blank page is over half blank; the plan's measure, :func:`blank_shares`, counts text as the critic does
+but a panel across its whole width, and runs up to 0.1 higher on the gallery): of two documents of as
+many pages, the one with fewer bare pages is taken."""
 TEXT_MARGIN = 2.0
 """The white each side of a block of text that reads as part of it (the critic's block margin), mm."""
 
@@ -356,21 +357,23 @@ def blank_shares(paper: Paper, doc: Document, sections: FlowText, cache) -> list
         for item, slot in zip(items, doc.text):
             r = slots[slot]
             try:
-                covered[int(slot_page(slot))] += (_text_width(item, r.w, doc.size, cache)
-                                                  * item_height(item, r.w, doc.size, cache))
+                covered[int(slot_page(slot))] += _text_cover(item, r.w, doc.size, cache)
             except TooWide:             # (never placed so: the flow measured it)
                 continue
     return [1.0 - c / (F.w * F.h) for c in covered]
 
 
-def _text_width(item, width: float, size: float, cache) -> float:
-    """The width ``item``'s lines cover set ``width`` wide at ``size`` (with :data:`TEXT_MARGIN` each
-    side, at most ``width``), remembered in ``cache``."""
-    key = ("text width", item, round(width, 6), size)
+def _text_cover(item, width: float, size: float, cache) -> float:
+    """The area ``item`` covers set ``width`` wide at ``size`` as the critic measures a page: the union of
+    its lines' boxes (and rules) each grown by :data:`TEXT_MARGIN`, within its own height (the items of a
+    slot abut: the margins between them are counted once), remembered in ``cache``."""
+    key = ("text cover", item, round(width, 6), size)
     if key not in cache:
-        boxes = [c.box for c in layout_item(item, width, size, cache).commands if isinstance(c, Text)]
-        cache[key] = width if not boxes else min(width, max(b.right for b in boxes) - min(b.left for b in boxes)
-                                                 + 2 * TEXT_MARGIN)
+        placed = layout_item(item, width, size, cache)
+        m = TEXT_MARGIN
+        boxes = [(c.box if isinstance(c, Text) else Rect.bounding(command_points(c))).expanded(m)
+                 for c in placed.commands if isinstance(c, Text) or c.style == "rule"]
+        cache[key] = covered_area(boxes, Rect(-m, 0.0, width + 2 * m, placed.height))
     return cache[key]
 
 
