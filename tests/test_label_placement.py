@@ -208,20 +208,20 @@ def test_a_label_pushed_off_its_arrow_is_tied_to_it_by_a_leader_only_where_the_l
     """A label whose places beside its arrow are taken stands off it: from 2.5 mm to 8 mm it gets a thin
     leader from the nearest point of the shaft, unless the leader would run through another label, a mark
     or across another heavy line (it would seem to name that one); a label beside its arrow gets none."""
-    from drafting.layout.labels import FAR_LABEL, LONGEST_LEADER, _leader, _clear, _crosses_heavy
+    from drafting.layout.leaders import FAR_LABEL, LONGEST_LEADER, clear_line, crosses_heavy, leader_of
     from drafting.render.drawing import LabelReq
     from drafting.render.paper import Rect
     req = LabelReq(anchor=(70.0, 50.0), kind="arrow", markup="V_B", mandatory=False, name="V_B", other=(40.0, 50.0))
-    assert _leader(req, Rect(50, 45, 6, 4)) is None                  # 1 mm above the shaft
-    lead = _leader(req, Rect(50, 41, 6, 4))                           # 5 mm above it
+    assert leader_of(req, Rect(50, 45, 6, 4)) is None                  # 1 mm above the shaft
+    lead = leader_of(req, Rect(50, 41, 6, 4))                           # 5 mm above it
     assert lead is not None and lead.name == "V_B:leader" and lead.style == "dimension"
     assert (lead.x1, lead.y1, lead.x2, lead.y2) == pytest.approx((53.0, 50.0, 53.0, 45.0))
     assert FAR_LABEL < 5.0 < LONGEST_LEADER
-    assert _leader(req, Rect(50, 30, 6, 4)) is None                   # 16 mm off: a leader would not serve
-    assert _clear(lead, [Rect(60, 40, 5, 5)]) and not _clear(lead, [Rect(52, 46, 3, 2)])
-    assert _crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), True)])          # another vector between
-    assert not _crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), False)])    # a thin line is no matter
-    assert not _crosses_heavy(lead, [((40.0, 50.0), (70.0, 50.0), True)])     # its own shaft
+    assert leader_of(req, Rect(50, 30, 6, 4)) is None                   # 16 mm off: a leader would not serve
+    assert clear_line(lead, [Rect(60, 40, 5, 5)]) and not clear_line(lead, [Rect(52, 46, 3, 2)])
+    assert crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), True)])          # another vector between
+    assert not crosses_heavy(lead, [((40.0, 47.0), (70.0, 47.0), False)])    # a thin line is no matter
+    assert not crosses_heavy(lead, [((40.0, 50.0), (70.0, 50.0), True)])     # its own shaft
 
 
 def test_a_notes_text_sits_at_its_point_where_clear_else_off_the_heavy_line_through_it():
@@ -242,3 +242,45 @@ def test_a_notes_text_sits_at_its_point_where_clear_else_off_the_heavy_line_thro
     r = bg.rect
     assert not (r.x < 50.0 < r.x + r.w and r.y < 70.0 and r.y + r.h > 30.0)    # the flank not hidden
     assert math.dist(t.box.center, (50.0, 50.0)) < 20.0             # still beside its point
+
+
+def test_a_note_set_off_its_point_gets_a_leader_and_the_drawing_keeps_its_room():
+    """A dimension's or note's text is a label (kind "note"): where its place is clear it stays there with
+    no leader; set off it by more than 2.5 mm it is tied to the point it names; the drawing's extent counts
+    the note's ground at its anchor, as it counted the text there before the placer set it."""
+    from drafting.layout.leaders import leader_of
+    from drafting.render.drawing import Drawing, LabelReq
+    from drafting.render.paper import Line, Rect
+    req = LabelReq("note", "PB 15 mm", (50.0, 50.0), True, "recess", other=(50.0, 50.0),
+                   ground=Rect(40.0, 48.0, 20.0, 4.0))
+    assert leader_of(req, Rect(40.0, 48.0, 20.0, 4.0)) is None            # at its point
+    lead = leader_of(req, Rect(40.0, 36.0, 20.0, 4.0))                     # 10 mm above it
+    assert lead is not None and lead.name == "recess:leader"
+    assert (lead.x1, lead.y1, lead.x2, lead.y2) == pytest.approx((50.0, 50.0, 50.0, 40.0))
+    d = Drawing()
+    d.add(0, Line(0.0, 0.0, 45.0, 45.0, "link", "bar"))
+    d.labels.append(req)
+    box = d.bbox()
+    assert (box.left, box.top, box.right, box.bottom) == pytest.approx((0.0, 0.0, 60.0, 52.0))
+    moved = d.moved(10.0, 0.0)
+    assert moved.labels[0].ground.x == pytest.approx(50.0)
+
+
+def test_an_arrow_label_crowded_by_a_collinear_arrow_is_set_off_by_a_leader_that_names_it():
+    """Two arrows from one pole along one line (V_A and V_G2 of one link): no place beside V_G2 is clearly
+    nearer it than V_A, so its label stands off with a leader from V_G2's own shaft that names it."""
+    from drafting.layout.labels import place_labels
+    from drafting.layout.leaders import FAR_LABEL
+    from drafting.render.drawing import Drawing, LabelReq, SHAFTS
+    from drafting.render.paper import Line, Rect, Text
+    d = Drawing()
+    for name, tip in (("V_A", (100.0, 50.0)), ("V_G2", (70.0, 50.0))):
+        d.add(SHAFTS, Line(40.0, 50.0 + (0.6 if name == "V_G2" else 0.0), *tip, "vector", name))
+        d.labels.append(LabelReq("arrow", name, tip, False, name, other=(40.0, 50.0)))
+    cmds = place_labels(d, Rect(0, 0, 200, 100), "velocity")
+    texts = {c.name: c for c in cmds if isinstance(c, Text)}
+    leaders = {c.name: c for c in cmds if isinstance(c, Line) and c.name.endswith(":leader")}
+    assert "V_G2:label" in texts and "V_G2:leader" in leaders
+    lead = leaders["V_G2:leader"]
+    assert 40.0 <= lead.x1 <= 70.0 and abs(lead.y1 - 50.3) < 0.5            # from V_G2's own shaft
+    assert abs(lead.y2 - lead.y1) > FAR_LABEL - 1e-9 or abs(lead.x2 - lead.x1) > FAR_LABEL - 1e-9

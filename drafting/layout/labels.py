@@ -14,6 +14,7 @@ from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
 from .label_kin import Kin, clip_fraction
+from .leaders import crosses_heavy, clear_line, leader_of, led, led_test, short, sparing
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -185,9 +186,9 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         best = None
         for heavy_ok, clear, relaxes in _tiers(req, None if req.kind == "note" else kin.test(req, reach, LABEL_PAD), placed, d):
             if committed and clear is not None:
-                clear = _sparing(clear, committed)
+                clear = sparing(clear, committed)
             elif committed:
-                clear = _sparing(None, committed)
+                clear = sparing(None, committed)
             for relax in relaxes:
                 best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
                                        near_placed, near_hard, near_segs, heavy_ok, clear)
@@ -211,8 +212,8 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
         _, centre, box = best
         placed.append(box)
-        if req.kind in ("arrow", "trial") and _led(req, box):     # the leader that names its line: kept clear
-            committed.append(_leader(req, box))
+        if req.kind in ("arrow", "trial") and led(req, box):     # the leader that names its line: kept clear
+            committed.append(leader_of(req, box))
         x = centre[0] - ext.width / 2
         y = centre[1] - (ext.top + ext.bottom) / 2
         tag, ground = ("text", "note_bg") if req.kind == "note" else ("label", "label_bg")
@@ -220,9 +221,9 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:{tag}"))
         tied.append((req, box))
     for req, box in tied:                # once every label is placed: a leader hidden under another's ground
-        leader = _leader(req, box)       # would leave a stray stroke, so a far label's goes only where clear
-        if leader is not None and (_short(req) or req.kind == "note" or (_clear(leader, [o for o in placed if o is not box] + [
-                h for h in d.hard if not h.contains_point(leader.x1, leader.y1)]) and not _crosses_heavy(
+        leader = leader_of(req, box)       # would leave a stray stroke, so a far label's goes only where clear
+        if leader is not None and (short(req) or req.kind == "note" or (clear_line(leader, [o for o in placed if o is not box] + [
+                h for h in d.hard if not h.contains_point(leader.x1, leader.y1)]) and not crosses_heavy(
                 leader, d.segments))):
             leaders.append(leader)
     return leaders + out            # the leaders first: under every label's white ground, never over a text
@@ -231,130 +232,18 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
 def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
     """The searches a label's candidates go through, strictest first, as (heavy_ok, test, relaxes):
     hiding no heavy line and unambiguous; for an arrow, then set off it by a leader that makes it
-    unambiguous (:func:`_led_test`); then hiding no heavy line; then (a mandatory label only) anything."""
+    unambiguous (:func:`~drafting.layout.leaders.led_test`); then hiding no heavy line; then (a mandatory label only) anything."""
     if req.kind == "note":          # a note set off its point is tied to it by a leader
         yield False, None, (0, 1)
         yield True, None, (0,)
         return
     if clear is not None:
         yield False, clear, (0, 1)
-        if req.kind in ("arrow", "trial") and req.other is not None and not _short(req):
-            yield False, _led_test(req, clear, placed, d), (2,)
+        if req.kind in ("arrow", "trial") and req.other is not None and not short(req):
+            yield False, led_test(req, clear, placed, d), (2,)
     yield False, None, (0, 1)
     if req.mandatory:
         yield True, None, (0, 1)
-
-
-def _led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
-    """The test of a candidate set off its arrow (2.5-8 mm): its leader, from the nearest point of the
-    shaft, runs through no label or symbol and across no other heavy line, and the text is farther from
-    every other arrow than from that leader by the critic's margin -- the leader names its arrow."""
-    def test(le: float, to: float, ri: float, bo: float) -> bool:
-        box = Rect(le, to, ri - le, bo - to)
-        leader = _leader(req, box)
-        if leader is None or not _clear(leader, placed + [h for h in d.hard
-                                                          if not h.contains_point(leader.x1, leader.y1)]):
-            return False
-        if _crosses_heavy(leader, d.segments):
-            return False
-        return clear.with_ours([leader.points])(le, to, ri, bo)
-    return test
-
-
-def _led(req: LabelReq, box: Rect) -> bool:
-    """Whether ``req``'s label in ``box`` stands off its arrow (or a note off its point) far enough to be
-    drawn with a leader."""
-    return req.kind in ("arrow", "trial", "note") and req.other is not None and not _short(req) \
-        and _leader(req, box) is not None
-
-
-def _sparing(clear, leaders: list[Line]):
-    """``clear`` (or no test) and, besides, a box that hides none of ``leaders``."""
-    def test(le: float, to: float, ri: float, bo: float) -> bool:
-        box = Rect(le, to, ri - le, bo - to)
-        return _clear_of(leaders, box) and (clear is None or clear(le, to, ri, bo))
-    return test
-
-
-def _clear_of(lines: list[Line], box: Rect) -> bool:
-    return all(_clear(line, [box]) for line in lines)
-
-
-SHORT_ARROW = 5.0
-"""mm: an arrow shorter than this cannot carry its label along it; a leader ties the label to it."""
-FAR_LABEL = 2.5
-"""mm: a label whose box stands off its own arrow's shaft farther than this (the places beside the arrow
-were taken) is tied to it by a leader, as a draughtsman does, so the reader need not guess its arrow --
-up to :data:`LONGEST_LEADER`: a longer thin line across a polygon reads as one more construction line."""
-LONGEST_LEADER = 8.0
-
-
-def _clear(line: Line, boxes: list[Rect]) -> bool:
-    """Whether ``line`` passes through none of ``boxes``."""
-    dx, dy = line.x2 - line.x1, line.y2 - line.y1
-    return not any(clip_fraction(line.x1, line.y1, dx, dy, o.left, o.top, o.right, o.bottom) > 0 for o in boxes)
-
-
-def _crosses_heavy(line: Line, segments) -> bool:
-    """Whether ``line`` crosses a heavy line (a vector, a link...) other than the one it starts on: a
-    leader across another arrow would seem to name that one."""
-    p, r = (line.x1, line.y1), (line.x2 - line.x1, line.y2 - line.y1)
-    for a, b, thick in segments:
-        if not thick:
-            continue
-        q, s = a, (b[0] - a[0], b[1] - a[1])
-        den = r[0] * s[1] - r[1] * s[0]
-        if abs(den) < 1e-12:
-            continue
-        wx, wy = q[0] - p[0], q[1] - p[1]
-        t, u = (wx * s[1] - wy * s[0]) / den, (wx * r[1] - wy * r[0]) / den
-        if 1e-3 < t <= 1.0 and 0.0 <= u <= 1.0:       # (t = 0: the shaft the leader starts on)
-            return True
-    return False
-
-
-def _short(req: LabelReq) -> bool:
-    """Whether ``req`` labels an arrow too short to carry its label (its leader is drawn whatever it
-    crosses: the label cannot sit on the arrow)."""
-    return req.kind == "arrow" and req.other is not None and math.dist(req.anchor, req.other) < SHORT_ARROW
-
-
-def _leader(req: LabelReq, box: Rect) -> Line | None:
-    """A thin leader to a label's box from the middle of a short arrow, or from the nearest point of a
-    long arrow's shaft when the box stands off it by more than :data:`FAR_LABEL` (and less than
-    :data:`LONGEST_LEADER`); None for a label that needs none (not an arrow, or beside its arrow) or that
-    a leader would not serve."""
-    if req.other is None or req.kind not in ("arrow", "trial", "note"):
-        return None
-    if req.kind == "note":          # from the point it names (a dimension line's middle), when set off it
-        mx, my = req.other
-        qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
-        if math.hypot(qx - mx, qy - my) <= FAR_LABEL:
-            return None
-        return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
-    (ax, ay), (bx, by) = req.anchor, req.other
-    if not _short(req):
-        mx, my = _nearest_on_segment((ax, ay), (bx, by), (box.x + box.w / 2, box.y + box.h / 2))
-        qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
-        if math.hypot(qx - mx, qy - my) <= FAR_LABEL:
-            return None
-        mx, my = _nearest_on_segment((ax, ay), (bx, by), (qx, qy))
-        if math.hypot(qx - mx, qy - my) > LONGEST_LEADER:
-            return None
-    else:
-        mx, my = (ax + bx) / 2, (ay + by) / 2
-    qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
-    if math.hypot(qx - mx, qy - my) < 0.3:
-        return None
-    return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
-
-
-def _nearest_on_segment(a: tuple[float, float], b: tuple[float, float], p: tuple[float, float]) -> tuple[float, float]:
-    """The point of segment ab nearest ``p``."""
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    n = dx * dx + dy * dy
-    t = 0.0 if n == 0 else min(max(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / n, 0.0), 1.0)
-    return a[0] + t * dx, a[1] + t * dy
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],

@@ -1,0 +1,127 @@
+"""Leaders: the thin line that ties a label to what it names when the label cannot sit beside it -- a
+short arrow's (always), an arrow's or a trial line's set off 2.5-8 mm (where the leader runs through no
+other label or mark and across no other heavy line), a note's or a dimension's set off its point.
+
+The label placer (:mod:`drafting.layout.labels`) asks here whether a candidate place would get a leader
+and whether that leader is clear; the leaders are drawn under every label's white ground.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..render.drawing import Drawing, LabelReq
+from ..render.paper import Line, Rect
+from .label_kin import clip_fraction
+
+
+def led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
+    """The test of a candidate set off its arrow (2.5-8 mm): its leader, from the nearest point of the
+    shaft, runs through no label or symbol and across no other heavy line, and the text is farther from
+    every other arrow than from that leader by the critic's margin -- the leader names its arrow."""
+    def test(le: float, to: float, ri: float, bo: float) -> bool:
+        box = Rect(le, to, ri - le, bo - to)
+        leader = leader_of(req, box)
+        if leader is None or not clear_line(leader, placed + [h for h in d.hard
+                                                          if not h.contains_point(leader.x1, leader.y1)]):
+            return False
+        if crosses_heavy(leader, d.segments):
+            return False
+        return clear.with_ours([leader.points])(le, to, ri, bo)
+    return test
+
+
+def led(req: LabelReq, box: Rect) -> bool:
+    """Whether ``req``'s label in ``box`` stands off its arrow (or a note off its point) far enough to be
+    drawn with a leader."""
+    return req.kind in ("arrow", "trial", "note") and req.other is not None and not short(req) \
+        and leader_of(req, box) is not None
+
+
+def sparing(clear, leaders: list[Line]):
+    """``clear`` (or no test) and, besides, a box that hides none of ``leaders``."""
+    def test(le: float, to: float, ri: float, bo: float) -> bool:
+        box = Rect(le, to, ri - le, bo - to)
+        return clear_of(leaders, box) and (clear is None or clear(le, to, ri, bo))
+    return test
+
+
+def clear_of(lines: list[Line], box: Rect) -> bool:
+    return all(clear_line(line, [box]) for line in lines)
+
+
+SHORT_ARROW = 5.0
+"""mm: an arrow shorter than this cannot carry its label along it; a leader ties the label to it."""
+FAR_LABEL = 2.5
+"""mm: a label whose box stands off its own arrow's shaft farther than this (the places beside the arrow
+were taken) is tied to it by a leader, as a draughtsman does, so the reader need not guess its arrow --
+up to :data:`LONGEST_LEADER`: a longer thin line across a polygon reads as one more construction line."""
+LONGEST_LEADER = 8.0
+
+
+def clear_line(line: Line, boxes: list[Rect]) -> bool:
+    """Whether ``line`` passes through none of ``boxes``."""
+    dx, dy = line.x2 - line.x1, line.y2 - line.y1
+    return not any(clip_fraction(line.x1, line.y1, dx, dy, o.left, o.top, o.right, o.bottom) > 0 for o in boxes)
+
+
+def crosses_heavy(line: Line, segments) -> bool:
+    """Whether ``line`` crosses a heavy line (a vector, a link...) other than the one it starts on: a
+    leader across another arrow would seem to name that one."""
+    p, r = (line.x1, line.y1), (line.x2 - line.x1, line.y2 - line.y1)
+    for a, b, thick in segments:
+        if not thick:
+            continue
+        q, s = a, (b[0] - a[0], b[1] - a[1])
+        den = r[0] * s[1] - r[1] * s[0]
+        if abs(den) < 1e-12:
+            continue
+        wx, wy = q[0] - p[0], q[1] - p[1]
+        t, u = (wx * s[1] - wy * s[0]) / den, (wx * r[1] - wy * r[0]) / den
+        if 1e-3 < t <= 1.0 and 0.0 <= u <= 1.0:       # (t = 0: the shaft the leader starts on)
+            return True
+    return False
+
+
+def short(req: LabelReq) -> bool:
+    """Whether ``req`` labels an arrow too short to carry its label (its leader is drawn whatever it
+    crosses: the label cannot sit on the arrow)."""
+    return req.kind == "arrow" and req.other is not None and math.dist(req.anchor, req.other) < SHORT_ARROW
+
+
+def leader_of(req: LabelReq, box: Rect) -> Line | None:
+    """A thin leader to a label's box from the middle of a short arrow, or from the nearest point of a
+    long arrow's shaft when the box stands off it by more than :data:`FAR_LABEL` (and less than
+    :data:`LONGEST_LEADER`); None for a label that needs none (not an arrow, or beside its arrow) or that
+    a leader would not serve."""
+    if req.other is None or req.kind not in ("arrow", "trial", "note"):
+        return None
+    if req.kind == "note":          # from the point it names (a dimension line's middle), when set off it
+        mx, my = req.other
+        qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
+        if math.hypot(qx - mx, qy - my) <= FAR_LABEL:
+            return None
+        return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
+    (ax, ay), (bx, by) = req.anchor, req.other
+    if not short(req):
+        mx, my = nearest_on_segment((ax, ay), (bx, by), (box.x + box.w / 2, box.y + box.h / 2))
+        qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
+        if math.hypot(qx - mx, qy - my) <= FAR_LABEL:
+            return None
+        mx, my = nearest_on_segment((ax, ay), (bx, by), (qx, qy))
+        if math.hypot(qx - mx, qy - my) > LONGEST_LEADER:
+            return None
+    else:
+        mx, my = (ax + bx) / 2, (ay + by) / 2
+    qx, qy = min(max(mx, box.left), box.right), min(max(my, box.top), box.bottom)
+    if math.hypot(qx - mx, qy - my) < 0.3:
+        return None
+    return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
+
+
+def nearest_on_segment(a: tuple[float, float], b: tuple[float, float], p: tuple[float, float]) -> tuple[float, float]:
+    """The point of segment ab nearest ``p``."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    n = dx * dx + dy * dy
+    t = 0.0 if n == 0 else min(max(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / n, 0.0), 1.0)
+    return a[0] + t * dx, a[1] + t * dy
