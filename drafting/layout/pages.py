@@ -179,8 +179,8 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
     best: tuple | None = None
     n = len(panels)
     for m in range(1, max(n, 1) + 1):
-        if best is not None and m > best[1].count:
-            break
+        if best is not None and m > best[1].count and best[0][0] == 0:
+            break                       # (a document read out of order may yet lose to one of more pages)
         for sizes in (_compositions(n, m) if n else [[]]):
             groups, i = [], 0
             for s in sizes:
@@ -196,6 +196,7 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 doc = _document(plans, groups, mode, sections, cache)
                 if doc is None:
                     continue
+                # the steps read in order (a page read out of order is worth another page); then the
                 # fewest pages; then no page left mostly blank (the text beside the diagrams it
                 # speaks of, rather than a last page of a few lines); then the drawings kept together
                 # on as few pages as hold them (a reader compares the polygons with the space
@@ -203,7 +204,7 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 # diagrams, the largest lettering
                 drawing_pages = sum(1 for pg in doc.pages if pg.panels)
                 bare = _bare_pages(paper, doc, sections, cache)
-                key = (-doc.count, -bare, -steps_out_of_order(doc, sections), -drawing_pages,
+                key = (-steps_out_of_order(doc, sections), -doc.count, -bare, -drawing_pages,
                        doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
                     doc.size, -doc.empty_columns(), -m)
                 if best is None or key > best[0]:
@@ -276,7 +277,7 @@ def _best_possible(plans: _GroupPlans, groups, mode: str, has_text: bool) -> tup
     best_quality = (round(min(space, 1.0), 9), round(min(free), 6) if free else 0.0, round(space, 9),
                     round(sum(free), 6))
     pages = m + (1 if has_text and mode == "none" else 0)
-    return (-pages, 0, 0, -m, True) + best_quality + (TEXT_SIZES[0], 0, -m)
+    return (0, -pages, 0, -m, True) + best_quality + (TEXT_SIZES[0], 0, -m)
 
 
 def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | None:
