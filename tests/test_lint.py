@@ -279,8 +279,9 @@ GALLERY_BASELINE = {            # measured 2026-11-26 over the 40 gallery scenes
     # line's label set off by a leader as an arrow's is (45 -> 36); the planner measured a page's text as the
     # critic does (each line's box grown 2 mm, not the item's widest line across its height): 2 -> 0 blank
     # pages, and the polygons moved to page 2 left fewer labels crowded (36 -> 33); steps read in order before
-    # the fewest pages (dynamic Example 3 on three sheets, its acceleration polygon twice as large: 33 -> 28)
-    "label-overlap": 0, "label-crossed": 0, "label-ambiguous": 28, "short-arrow": 0, "diagram-fill": 0,
+    # the fewest pages (dynamic Example 3 on three sheets, its acceleration polygon twice as large: 33 -> 28);
+    # a label set off by a leader tried near either end of its arrow and beyond its tip too (28 -> 16)
+    "label-overlap": 0, "label-crossed": 0, "label-ambiguous": 16, "short-arrow": 0, "diagram-fill": 0,
     "blank-page": 0, "lettering": 0, "title-cell": 0,
 }
 """What the critic finds on the gallery's worked sheets: a ratchet -- each sheet fixed lowers a figure,

@@ -39,6 +39,7 @@ _DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in r
 _DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0), (3.0, 4.5, 6.0, 7.4))
 """mm from the anchor; then relaxed; then an arrow's label set off by a leader (within LONGEST_LEADER)"""
 _ARROW_F = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)                # where along an arrow, best first
+_LED_F = _ARROW_F + (0.9, 0.95, 0.1)                          # ... and for a label set off by a leader
 _TRIAL_S = (3.0, 6.0, 10.0, 15.0, 22.0)                       # mm in from either end of a trial line
 _BEYOND = 1.7                                                 # the cost of a place beyond an arrow's tip
 
@@ -83,7 +84,7 @@ class _Candidates:
         if req.kind in ("point", "polygon", "note"):
             self._around(req, hw, hh, incident, dists, req.kind in ("polygon", "note") and relax == 0)
         elif req.kind == "arrow":
-            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists, relax != 2)
+            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists, _LED_F if relax == 2 else _ARROW_F)
         elif req.kind == "trial":
             self._along_trial(req, hw, hh, dists[:3] if relax == 0 else dists)
         else:
@@ -105,17 +106,16 @@ class _Candidates:
             return shifted(p, _DIRS[j], r0 + dists[k] + edges[j])
         self.centre = centre
 
-    def _along_arrow(self, req, hw, hh, dists, beyond=True) -> None:
+    def _along_arrow(self, req, hw, hh, dists, fs=_ARROW_F) -> None:
         tail, tip = req.other, req.anchor
         v = (tip[0] - tail[0], tip[1] - tail[1])
         u = unit_vector(v)
         sides = ((-u[1], u[0]), (u[1], -u[0]))
         self.costs = [3.0 * abs(f - 0.5) + 0.8 * dist + side * 0.1
-                      for dist in dists for f in _ARROW_F for side in (0, 1)]
-        if beyond:
-            self.costs += [_BEYOND + 0.8 * dist for dist in dists]
-        n_f = len(_ARROW_F)
-        n_along = len(self.costs) - (len(dists) if beyond else 0)
+                      for dist in dists for f in fs for side in (0, 1)]
+        self.costs += [_BEYOND + 0.8 * dist for dist in dists]
+        n_f = len(fs)
+        n_along = len(self.costs) - len(dists)
 
         def centre(i: int) -> Pt:
             if i >= n_along:                    # beyond the tip, on the arrow's line
@@ -123,7 +123,7 @@ class _Candidates:
             k, rest = divmod(i, 2 * n_f)
             f, side = divmod(rest, 2)
             nn = sides[side]
-            return shifted(shifted(tail, v, _ARROW_F[f]), nn, dists[k] + 0.3 + _edge(nn, hw, hh))
+            return shifted(shifted(tail, v, fs[f]), nn, dists[k] + 0.3 + _edge(nn, hw, hh))
         self.centre = centre
 
     def _along_trial(self, req, hw, hh, dists) -> None:
