@@ -24,9 +24,9 @@ OMEGA_REACH = 0.65
 """The omega arrow stands 0.65 of the crank's length out from its pivot (the crank-angle mark at 0.45) ..."""
 ALPHA_REACH = 0.85
 """... and the alpha arrow 0.85 out, between it and the crank pin."""
-OMEGA_LEAST, ALPHA_LEAST = 9.0, 12.5
+OMEGA_LEAST, ALPHA_LEAST = 9.0, 14.0
 """mm on paper: however short the crank is drawn, the omega arrow stands at least 9 mm out and the alpha
-arrow 12.5 mm, clear of the crank-angle mark (at least 6 mm: ``render.annotations.ANGLE_MIN_R``) and of
+arrow 14 mm, clear of the crank-angle mark (at least 6 mm: ``render.annotations.ANGLE_MIN_R``) and of
 each other, so each arc reads as its own and carries its own value."""
 
 
