@@ -14,7 +14,7 @@ from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
 from .label_kin import Kin, clip_fraction
-from .leaders import crosses_heavy, clear_line, leader_of, led, led_test, short, sparing
+from .leaders import crosses_heavy, clear_line, leader_of, led, led_leader, led_test, short, sparing
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -165,7 +165,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     placed: list[Rect] = []
     out: list[Command] = []
     leaders: list[Command] = []
-    tied: list[tuple[LabelReq, Rect]] = []
+    tied: list[tuple[LabelReq, Rect, bool]] = []
     committed: list[Line] = []          # leaders of labels set off their arrows: later labels keep off them
     order = sorted(range(len(d.labels)), key=lambda i: (not d.labels[i].mandatory,
                                                         LABEL_KINDS.index(d.labels[i].kind)))
@@ -183,8 +183,8 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_segs = segs.near(reach)
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
-        best = None
-        for heavy_ok, clear, relaxes in _tiers(req, None if req.kind == "note" else kin.test(req, reach, LABEL_PAD), placed, d):
+        best, by_leader = None, False
+        for heavy_ok, clear, relaxes, by_leader in _tiers(req, None if req.kind == "note" else kin.test(req, reach, LABEL_PAD), placed, d):
             if committed and clear is not None:
                 clear = sparing(clear, committed)
             elif committed:
@@ -212,17 +212,22 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
         _, centre, box = best
         placed.append(box)
-        if req.kind in ("arrow", "trial") and led(req, box):     # the leader that names its line: kept clear
-            committed.append(leader_of(req, box))
+        own = led_leader(req, box) if by_leader else None      # placed by its leader: drawn, kept clear
+        if own is None and req.kind in ("arrow", "trial") and led(req, box):
+            own = leader_of(req, box)
+        if own is not None:
+            committed.append(own)
         x = centre[0] - ext.width / 2
         y = centre[1] - (ext.top + ext.bottom) / 2
         tag, ground = ("text", "note_bg") if req.kind == "note" else ("label", "label_bg")
         out.append(Rectangle(box.x, box.y, box.w, box.h, ground, f"{req.name}:{tag} bg"))
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:{tag}"))
-        tied.append((req, box))
-    for req, box in tied:                # once every label is placed: a leader hidden under another's ground
-        leader = leader_of(req, box)       # would leave a stray stroke, so a far label's goes only where clear
-        if leader is not None and (short(req) or req.kind == "note" or (clear_line(leader, [o for o in placed if o is not box] + [
+        tied.append((req, box, by_leader))
+    for req, box, by_leader in tied:     # once every label is placed: a leader hidden under another's ground
+        leader = led_leader(req, box) if by_leader else leader_of(req, box)     # would leave a stray stroke,
+        if by_leader and leader is not None:                                    # so a far label's goes only
+            leaders.append(leader)                                              # where clear
+        elif leader is not None and (short(req) or req.kind == "note" or (clear_line(leader, [o for o in placed if o is not box] + [
                 h for h in d.hard if not h.contains_point(leader.x1, leader.y1)]) and not crosses_heavy(
                 leader, d.segments))):
             leaders.append(leader)
@@ -230,20 +235,21 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
 
 
 def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
-    """The searches a label's candidates go through, strictest first, as (heavy_ok, test, relaxes):
-    hiding no heavy line and unambiguous; for an arrow, then set off it by a leader that makes it
-    unambiguous (:func:`~drafting.layout.leaders.led_test`); then hiding no heavy line; then (a mandatory label only) anything."""
+    """The searches a label's candidates go through, strictest first, as (heavy_ok, test, relaxes, led):
+    hiding no heavy line and unambiguous; for an arrow, a trial line or a point, then set off it by a
+    leader that makes it unambiguous (:func:`~drafting.layout.leaders.led_test`); then hiding no heavy
+    line; then (a mandatory label only) anything."""
     if req.kind == "note":          # a note set off its point is tied to it by a leader
-        yield False, None, (0, 1)
-        yield True, None, (0,)
+        yield False, None, (0, 1), False
+        yield True, None, (0,), False
         return
     if clear is not None:
-        yield False, clear, (0, 1)
-        if req.kind in ("arrow", "trial") and req.other is not None and not short(req):
-            yield False, led_test(req, clear, placed, d), (2,)
-    yield False, None, (0, 1)
+        yield False, clear, (0, 1), False
+        if req.kind == "point" or (req.kind in ("arrow", "trial") and req.other is not None and not short(req)):
+            yield False, led_test(req, clear, placed, d), (2,), True
+    yield False, None, (0, 1), False
     if req.mandatory:
-        yield True, None, (0, 1)
+        yield True, None, (0, 1), False
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],

@@ -16,12 +16,13 @@ from .label_kin import clip_fraction
 
 
 def led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
-    """The test of a candidate set off its arrow (2.5-8 mm): its leader, from the nearest point of the
-    shaft, runs through no label or symbol and across no other heavy line, and the text is farther from
-    every other arrow than from that leader by the critic's margin -- the leader names its arrow."""
+    """The test of a candidate set off its arrow, trial line or point (2.5-8 mm): its leader
+    (:func:`led_leader`) runs through no label or symbol and across no other heavy line, and the text is
+    farther from every other entity of its kind than from that leader by the critic's margin -- the
+    leader names what the label names."""
     def test(le: float, to: float, ri: float, bo: float) -> bool:
         box = Rect(le, to, ri - le, bo - to)
-        leader = leader_of(req, box)
+        leader = led_leader(req, box)
         if leader is None or not clear_line(leader, placed + [h for h in d.hard
                                                           if not h.contains_point(leader.x1, leader.y1)]):
             return False
@@ -117,6 +118,22 @@ def leader_of(req: LabelReq, box: Rect) -> Line | None:
     if math.hypot(qx - mx, qy - my) < 0.3:
         return None
     return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
+
+
+def led_leader(req: LabelReq, box: Rect) -> Line | None:
+    """The leader of a label set off what it names: an arrow's or a trial line's from the nearest point of
+    its line (:func:`leader_of`); a point's (a joint, a pole, an arc's middle) from the edge of its mark
+    towards the box, when the box stands off it by more than :data:`FAR_LABEL` and less than
+    :data:`LONGEST_LEADER`."""
+    if req.kind != "point":
+        return leader_of(req, box)
+    (px, py), r0 = req.anchor, req.r0
+    qx, qy = min(max(px, box.left), box.right), min(max(py, box.top), box.bottom)
+    gap = math.hypot(qx - px, qy - py)
+    if not FAR_LABEL + r0 < gap <= LONGEST_LEADER + r0:
+        return None
+    k = r0 / gap
+    return Line(px + (qx - px) * k, py + (qy - py) * k, qx, qy, "dimension", f"{req.name}:leader")
 
 
 def nearest_on_segment(a: tuple[float, float], b: tuple[float, float], p: tuple[float, float]) -> tuple[float, float]:
