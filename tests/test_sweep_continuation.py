@@ -139,3 +139,21 @@ def test_stacked_equations_equal_the_one_pose_ones(make):
         np.testing.assert_allclose(A[i], rows[:, None] * jacobian(model, Q[i].tolist()) * cols, rtol=1e-15,
                                    atol=1e-15)
         np.testing.assert_allclose(g[i], gamma(model, Q[i].tolist(), Qd[i].tolist(), 0.0), rtol=1e-14, atol=1e-14)
+
+
+def test_a_fine_sweep_strides_across_a_gap_and_finds_its_ends_to_one_step():
+    """Across a gap a fine sweep tries the construction in strides (up to 0.05 deg) and halves back: the
+    same gaps, to the step, as trying every angle -- at both ends of the Stephenson six-bar's gap."""
+    from constructions.mechanisms.constraint_continuation import _skip
+    sc = load_scene(GALLERY / "stephenson-six-bar.toml")
+    th = sc.angle + 2 * math.pi * np.arange(720) / 720
+    ok = sweep(sc.mechanism, th, sc.omega, sc.alpha).assembles
+    starts = np.flatnonzero(ok[:-1] & ~ok[1:])
+    ends = np.flatnonzero(~ok[:-1] & ok[1:])
+    assert starts.size and ends.size
+    for edge in (th[starts[0]], th[ends[0]]):
+        fine = edge - math.radians(0.5) + math.radians(1.5) * np.arange(1500) / 1500     # 0.001 deg steps
+        assert _skip(fine) > 10
+        s = sweep(sc.mechanism, fine, sc.omega, sc.alpha)
+        assert 0 < (~s.assembles).sum() < fine.size
+        assert_same(s, one_by_one(sc.mechanism, fine, sc.omega, sc.alpha))

@@ -14,7 +14,8 @@ from the previous pose; the first pose, and the first after a gap, from the cons
   (``moved`` times that condition number below :data:`NEAR`) that Newton-Raphson cannot have reached
   any other assembly.  The block is cut at its first other pose.
 * That pose is solved alone, as before: :func:`.constraint_kinematics.solve_constraints` from the
-  previous pose, or a gap (then :func:`.pose.locate` at every next angle until one assembles).  So near a
+  previous pose, or a gap (then :func:`.pose.locate` at the next angles until one assembles -- in
+  strides of up to :data:`GAP_STRIDE` on a fine sweep, the gap's end found to one step).  So near a
   toggle, a dead centre or a lock, and at every gap, the continuation is the one-pose solver's, step by
   step; elsewhere it is the same solution to rounding.
 
@@ -25,6 +26,7 @@ Blocks grow while whole blocks are taken (to :data:`LONGEST`) and shrink where t
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -146,16 +148,63 @@ def _taken(c: Closed) -> int:
     return int(bad[0]) if bad.size else good.size
 
 
+GAP_STRIDE = math.radians(0.05)
+"""rad: across a gap the construction is tried at angles up to this far apart (a stride of 1, 2, 4...
+steps), then back by halves to the first angle that assembles: a gap's end is found to one step, and
+only an island of assembly narrower than 0.05 deg inside a gap (an assembly a hair from two toggles) is
+passed over.  Coarser sweeps, whose steps are wider than that, try every angle."""
+
+
+def _skip(th: np.ndarray) -> int:
+    """The widest stride, in steps of ``th``, :data:`GAP_STRIDE` allows (at least 1)."""
+    if th.size < 2:
+        return 1
+    step = float(np.min(np.abs(np.diff(th))))
+    return max(1, int(GAP_STRIDE / step)) if step > 0 else 1
+
+
+def _across_gap(m: Mechanism, th: np.ndarray, i: int, skip: int, hear) -> tuple[int, dict | None]:
+    """From angle ``i``, where the construction failed, the first later angle where it assembles and its
+    positions, or (n, None) when none does: strides of 1, 2, 4... steps up to ``skip``, then halving back
+    between the last failure and the first success; ``hear(k)`` at every stride."""
+    n, bad, stride = th.size, i, 1
+    while True:
+        hear(bad)
+        nxt = min(n - 1, bad + stride)
+        if nxt == bad:
+            return n, None
+        try:
+            good = locate(m, float(th[nxt])).positions
+        except ConstructionError:
+            bad, stride = nxt, min(2 * stride, skip)
+            continue
+        hi = nxt
+        while hi - bad > 1:
+            mid = (bad + hi) // 2
+            try:
+                good, hi = locate(m, float(th[mid])).positions, mid
+            except ConstructionError:
+                bad = mid
+        return hi, good
+
+
 def continue_constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: float, progress=None) -> Turn:
     """Solve ``m`` by the constraint equations at every crank angle of ``th`` (rad, a flat array), each
     pose continued from the previous one (module docstring).  Raises what the one-pose solver raises
     other than CannotAssemble and IndeterminatePosition (those are gaps)."""
     n = th.size
+    skip = _skip(th)
     ok = np.zeros(n, dtype=bool)
     out: _Out | None = None
     anchor: _Anchor | None = None
     guess = None
     length, i, reported = FIRST, 0, -REPORT
+
+    def hear(k: int) -> None:                   # across a gap: every REPORT angles, as one by one
+        nonlocal reported
+        if progress is not None and k - reported >= REPORT:
+            progress(k, n)
+            reported = k
     while i < n:
         if progress is not None and (anchor is not None or i - reported >= REPORT) and i > reported:
             progress(i, n)
@@ -180,8 +229,10 @@ def continue_constraints(m: Mechanism, th: np.ndarray, omega: float, alpha: floa
             try:
                 guess = locate(m, t).positions
             except ConstructionError:
-                i += 1
-                continue
+                i, guess = _across_gap(m, th, i, skip, hear)
+                if guess is None:
+                    break
+                t = float(th[i])
         try:
             st = solve_constraints(m, t, omega, alpha, guess)
         except (CannotAssemble, IndeterminatePosition):
