@@ -196,8 +196,7 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 doc = _document(plans, groups, mode, sections, cache)
                 if doc is None:
                     continue
-                # the steps read in order (a page read out of order is worth another page); then the
-                # fewest pages; then no page left mostly blank (the text beside the diagrams it
+                # the steps read in order (worth another page); then the fewest pages; then no page left mostly blank (the text beside the diagrams it
                 # speaks of, rather than a last page of a few lines); then the drawings kept together
                 # on as few pages as hold them (a reader compares the polygons with the space
                 # diagram), then comfortable lettering, the largest
