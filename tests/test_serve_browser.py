@@ -71,9 +71,16 @@ def test_live_edit_in_headless_chromium(served, tmp_path):
         def edit(old: str, new: str) -> str:
             return ("(() => { const t = document.getElementById('text'); t.focus(); "
                     f"t.value = t.value.replace({old!r}, {new!r}); t.dispatchEvent(new Event('input')); }})()")
-        # type a new crank angle: the sheet shows the new V_C
+        # type a new crank angle: the sheet shows the new V_C -- put in the shown page, at the step shown
+        b.eval("(() => { const w = document.getElementById('view').contentWindow; w.kept = 1; "
+               "w.document.getElementById('prev').click(); })()")
+        step = b.eval("document.getElementById('view').contentDocument.getElementById('count').textContent")
+        shown, last = step.split(" / ")
+        assert int(shown) == int(last) - 1
         b.eval(edit('"70 deg"', '"55 deg"'))
         b.wait(f"{SHEET}.includes({after!r})")
+        assert b.eval("document.getElementById('view').contentWindow.kept") == 1          # no page loaded anew
+        assert b.eval("document.getElementById('view').contentDocument.getElementById('count').textContent") == step
         latency = b.eval("serveState.ms")
         shown = b.eval("serveState.id")
         # a bad unit: its sentence at its line, the last good sheet kept

@@ -45,8 +45,10 @@ def _shown_at_the_end(sheets: Sequence[Sheet], ids: Ids) -> list[str]:
     return list(out)
 
 
-def page_html(study, sheets: Sequence[Sheet]) -> str:
-    """The step-through page of a solved study whose sheets are ``sheets``, as one HTML document."""
+def page_parts(study, sheets: Sequence[Sheet]) -> dict:
+    """What changes between two drawings of one scene's page: the sheets' SVG (each in its group), the
+    step list and its data (JSON), whether it has a sweep section, its title -- as :func:`page_html`
+    sets them in the page (``drafting serve`` puts a redrawn scene's parts in place of the shown ones)."""
     construction = study.construction
     fmt = SheetFormatter(study.scene.units, {k: v for sh in sheets for k, v in sh.diagram_scales.items()})
     ids = Ids(sheets[0].entities if sheets else {})
@@ -65,14 +67,22 @@ def page_html(study, sheets: Sequence[Sheet]) -> str:
                       "equation": markup_html(st.equation.text(marks=False)) if st.equation else "", "ids": own})
     items = "".join(f"<li>{s['caption']}</li>" for s in steps)
     data = script_json({"steps": steps, "end": _shown_at_the_end(sheets, ids)})
-    title = html.escape(study.scene.title)
     sweep = sweep_section(study)                    # None unless the scene asked for the sweep
+    return {"sheets": "".join(svgs), "items": items, "data": data, "title": html.escape(study.scene.title),
+            "sweep": sweep}
+
+
+def page_html(study, sheets: Sequence[Sheet], parts: dict | None = None) -> str:
+    """The step-through page of a solved study whose sheets are ``sheets``, as one HTML document (from
+    its :func:`page_parts` when given)."""
+    parts = page_parts(study, sheets) if parts is None else parts
+    sweep, title, items, data = parts["sweep"], parts["title"], parts["items"], parts["data"]
     style, section = (asset("page.css"), "") if sweep is None else (asset("page.css") + asset("sweep.css"),
                                                                     sweep.html)
     return (f"<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
             f"<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>{title}</title>"
             f"<style>{style}</style></head><body>"
-            f"<div id=\"sheets\" tabindex=\"0\" aria-label=\"Sheets\">{section}{''.join(svgs)}</div>"
+            f"<div id=\"sheets\" tabindex=\"0\" aria-label=\"Sheets\">{section}{parts['sheets']}</div>"
             f"<div id=\"panel\"><h3>{title}</h3><div id=\"controls\"><button id=\"prev\">&#9664; previous</button> "
             f"<span id=\"count\" aria-live=\"polite\"></span> <button id=\"next\">next &#9654;</button></div>"
             f"<div id=\"zoom\" role=\"group\" aria-label=\"Zoom\"><button id=\"zoom-out\" title=\"Zoom out (-)\" "
@@ -91,4 +101,4 @@ def page_plan(study, sheets: Sequence[Sheet], out_dir: Path | str, stem: str) ->
     return [(Path(out_dir) / f"{stem}.html", lambda: page_html(study, sheets).encode("utf-8"))]
 
 
-__all__ = ["page_html", "page_plan", "entity_of", "ExportError"]
+__all__ = ["page_html", "page_parts", "page_plan", "entity_of", "ExportError"]

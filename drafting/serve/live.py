@@ -11,6 +11,7 @@ sentence, else the line where the key is set, else none).
 
 from __future__ import annotations
 
+import functools
 import re
 import threading
 from dataclasses import dataclass, field
@@ -19,7 +20,7 @@ from pathlib import Path
 from ..app.solving import UserError, solve_study
 from ..backends.cairo import sheet_to_png, sheets_to_pdf
 from ..backends.files import PNG_DPI
-from ..backends.html_page import page_html
+from ..backends.html_page import page_html, page_parts
 from ..backends.svg import sheet_to_svg
 from ..render.errors import LayoutError
 from ..scene.reader import SceneError, parse_scene
@@ -40,9 +41,20 @@ class Failed:
 class Drawn:
     study: Study
     sheets: list
-    page: str
+    whole: dict                     # the page's parts (html_page.page_parts)
     warnings: tuple[str, ...]
     results: list = field(default_factory=list)
+
+    @property
+    def parts(self) -> dict | None:
+        """What a shown page of the scene takes in place; None for a page with a sweep (loaded anew)."""
+        return None if self.whole["sweep"] is not None else {k: v for k, v in self.whole.items() if k != "sweep"}
+
+    @functools.cached_property
+    def page(self) -> str:
+        """The whole step-through page, made when first asked for (a redraw in place never asks)."""
+        with _LOCK:                 # (the engine's caches, as in draw)
+            return page_html(self.study, self.sheets, self.whole)
 
     def download(self, fmt: str, index: int = 0) -> bytes:
         """The sheets as ``svg`` or ``png`` (sheet ``index``) or ``pdf`` (every sheet, one page each)."""
@@ -62,7 +74,7 @@ def draw(text: str, path: Path | str) -> Drawn | Failed:
                 return Failed(str(e), e.key, line_of(text, str(e), e.key))
             study = solve_study(Study(scene))
             sheets = study.sheets()
-            return Drawn(study, sheets, page_html(study, sheets), tuple(study.warnings), study.table().text)
+            return Drawn(study, sheets, page_parts(study, sheets), tuple(study.warnings), study.table().text)
     except UserError as e:
         return Failed(str(e), "", line_of(text, str(e), ""))
     except LayoutError as e:

@@ -8,8 +8,8 @@ another site open in the same browser can neither read nor drive it (DNS rebindi
 
 Routes (the names of scenes are checked by :class:`~drafting.serve.workspace.Workspace`):
 ``GET /`` the editor; ``GET /api/scenes``; ``GET /api/scene?name=``: text and version;
-``POST /api/draw`` ``{name, text}``: the drawing's id, results and warnings, or the error with its line
-and key; ``GET /view/ID``: the drawing's step-through page; ``GET /download/ID/FILE``: its SVG, PDF, PNG;
+``POST /api/draw`` ``{name, text}``: the drawing's id, results and warnings and the parts of its page the
+shown page takes in place (none for a page with a sweep), or the error with its line and key; ``GET /view/ID``: the drawing's step-through page; ``GET /download/ID/FILE``: its SVG, PDF, PNG;
 ``POST /api/save`` ``{name, text, version}``: 409 when the file changed since ``version``;
 ``GET /api/events``: a ``changed`` event with the scene's name and version whenever a served file changes.
 """
@@ -20,6 +20,7 @@ import asyncio
 import json
 import secrets
 import threading
+import time
 from collections import OrderedDict
 from pathlib import Path
 
@@ -160,17 +161,20 @@ def create_app(target: Path | str, token: str | None = None, cookie: str = "draf
             path = space.resolve(name)
         except Refused as e:
             return _refused(e, 400)
+        start = time.perf_counter()
         result = await run_in_threadpool(draw, text, path.relative_to(space.root))
+        ms = round(1000 * (time.perf_counter() - start), 1)           # the server's share, for the benchmark
         if not isinstance(result, Drawn):
-            return JSONResponse({"ok": False, "error": result.error, "key": result.key, "line": result.line})
-        return JSONResponse({"ok": True, "id": drawings.add(result), "sheets": len(result.sheets),
-                             "warnings": list(result.warnings), "results": [list(r) for r in result.results]})
+            return JSONResponse({"ok": False, "error": result.error, "key": result.key, "line": result.line, "ms": ms})
+        return JSONResponse({"ok": True, "id": drawings.add(result), "sheets": len(result.sheets), "ms": ms,
+                             "warnings": list(result.warnings), "results": [list(r) for r in result.results],
+                             "parts": result.parts})
 
     async def view(request: Request) -> Response:
         drawn = drawings.get(request.path_params["id"])
         if drawn is None:
             return PlainTextResponse("This drawing is no longer kept; edit the scene to draw it again.", 404)
-        return HTMLResponse(drawn.page)
+        return HTMLResponse(await run_in_threadpool(lambda: drawn.page))
 
     async def download(request: Request) -> Response:
         drawn = drawings.get(request.path_params["id"])

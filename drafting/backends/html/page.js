@@ -1,16 +1,33 @@
-const DATA = JSON.parse(document.getElementById('steps-data').textContent);
-const STEPS = DATA.steps;
-const LAST = STEPS.length - 1;
-// the step at which each entity (by its id) first shows; the results and notes show with the last step
-const first = {};
-STEPS.forEach((s, i) => s.ids.forEach(id => { if (!(id in first)) first[id] = i; }));
-const END = new Set(DATA.end);
-END.forEach(id => { first[id] = LAST; });
 const sheets = document.getElementById('sheets');
-const groups = Array.from(sheets.querySelectorAll('.sheet g[data-entity]'))
-  .filter(g => first[g.getAttribute('data-entity')] !== undefined);
-const items = Array.from(document.querySelectorAll('#steps li'));
-let cur = 0;
+let DATA, STEPS, LAST, first, END, groups, items, cur = 0;
+function setup() {
+  // the step at which each entity (by its id) first shows; the results and notes show with the last step
+  DATA = JSON.parse(document.getElementById('steps-data').textContent);
+  STEPS = DATA.steps;
+  LAST = STEPS.length - 1;
+  first = {};
+  STEPS.forEach((s, i) => s.ids.forEach(id => { if (!(id in first)) first[id] = i; }));
+  END = new Set(DATA.end);
+  END.forEach(id => { first[id] = LAST; });
+  groups = Array.from(sheets.querySelectorAll('.sheet g[data-entity]'))
+    .filter(g => first[g.getAttribute('data-entity')] !== undefined);
+  items = Array.from(document.querySelectorAll('#steps li'));
+  items.forEach((li, j) => { li.onclick = () => show(j); });
+}
+setup();
+// drafting serve: a new drawing of the same scene put in place of this one, at the same step and zoom
+// (the parts are the server's, built as this page was: the sheets' SVG, the step list and its data)
+window.replaceDrawing = parts => {
+  sheets.querySelectorAll('.sheet').forEach(s => s.remove());
+  sheets.insertAdjacentHTML('beforeend', parts.sheets);
+  document.getElementById('steps').innerHTML = parts.items;
+  document.getElementById('steps-data').textContent = parts.data;
+  const h = document.querySelector('#panel h3');
+  h.innerHTML = parts.title;                             // escaped in Python
+  document.title = h.textContent;
+  setup();
+  show(cur);
+};
 function show(i) {
   cur = Math.max(0, Math.min(LAST, i));
   for (const g of groups) {
@@ -68,7 +85,6 @@ document.addEventListener('keydown', e => {
   else if (e.key === '-') { e.preventDefault(); setZoom(zoom / 1.25); }
   else if (e.key === '0') { e.preventDefault(); setZoom(1); }
 });
-items.forEach((li, j) => { li.onclick = () => show(j); });
 const m = location.hash.match(/step=(\d+)/);
 show(m ? parseInt(m[1], 10) - 1 : 0);
 if (location.hash.includes('selftest')) {
