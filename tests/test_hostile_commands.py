@@ -153,3 +153,18 @@ def test_an_answers_csv_that_is_not_csv_is_one_sentence(tmp_path, capsys):
     code = main(["check", str(GALLERY / "offset-roller-cycloidal-cam.toml"), "--answers", str(bad)])
     err = capsys.readouterr().err
     assert code == 2 and err.count("\n") == 1 and f"{bad}: line 1: is not a CSV row" in err, err
+
+
+def test_an_answers_file_too_large_is_refused_before_the_scene_is_solved(tmp_path, capsys, monkeypatch):
+    """The fuzzer's slowest refusal (5.2 s under load): dynamic Example 3 solved and laid out before its
+    65 KiB answers file was read and refused.  The answers are read first now."""
+    import drafting.app.check_cmd as check_cmd
+
+    def never(*a, **k):
+        raise AssertionError("the scene was solved before its answers file was read")
+    monkeypatch.setattr(check_cmd, "solve_study", never)
+    big = tmp_path / "answers.csv"
+    big.write_text("V_C,1\n" * 12000)
+    code, _, err = run(capsys, "check", GALLERY / "notes-dynamic-example-3.toml", "--answers", big)
+    assert code == 2
+    one_line(err, "is larger than 64 KiB")

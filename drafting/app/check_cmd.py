@@ -42,6 +42,10 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
     """Mark a student's values against the scene's key (or a batch variant's) at drawing accuracy: one
     line per item, right / wrong / missing with the expected value.  Exit 1 unless every item is right."""
     label = ""
+    try:
+        rows = read_answers(answers)          # first: a file too large or malformed is refused before solving
+    except AnswersError as e:
+        raise UserError(str(e)) from None
     if variant is not None:
         if seed is None:
             raise UserError(f"{shown_path(path)}: --variant needs the batch's --seed")
@@ -72,7 +76,7 @@ def cmd_check_answers(path: Path, answers: Path, variant: int | None, seed: int 
         raise UserError(f"{shown_path(path)}: ask.analyses: the scene has no answers to mark (it asks for "
                         f"{', '.join(study.scene.analyses)})")
     try:
-        marks, unknown = mark(items, read_answers(answers), answers, study.scene.units)
+        marks, unknown = mark(items, rows, answers, study.scene.units)
     except AnswersError as e:
         raise UserError(str(e)) from None
     width = max(len(m.item.shown) for m in marks)
