@@ -244,9 +244,10 @@ def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
         yield True, None, (0,), False
         return
     if clear is not None:
-        yield False, clear, (0, 1), False
+        yield False, clear, (0,), False
         if req.kind == "point" or (req.kind in ("arrow", "trial") and req.other is not None and not short(req)):
-            yield False, led_test(req, clear, placed, d), (2,), True
+            yield False, led_test(req, clear, placed, d), (2,), True      # near, on a leader, before far
+        yield False, clear, (1,), False
     yield False, None, (0, 1), False
     if req.mandatory:
         yield True, None, (0, 1), False
