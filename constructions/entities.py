@@ -220,7 +220,7 @@ class AngleMark(Entity):
     """An angle at ``vertex`` from direction ``start_angle`` counter-clockwise to ``end_angle``
     (radians), drawn as an arc of ``radius`` (model units) with its ``text`` -- on paper at least
     ``least_radius`` mm out (0: the drawer's own least radius), so marks about one vertex stay apart
-    however small the drawing."""
+    however small the drawing; the text at ``text_at`` of the way along the arc (0.5: its middle)."""
 
     vertex: Vec
     radius: float
@@ -228,6 +228,7 @@ class AngleMark(Entity):
     end_angle: float
     text: str = ""
     least_radius: float = 0.0
+    text_at: float = 0.5
 
 
 @dataclass(frozen=True, slots=True)

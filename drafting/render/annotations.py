@@ -124,7 +124,7 @@ def draw_angle_mark(e: AngleMark, ctx: DrawContext) -> None:
     if words:
         # the value is a label at the middle of the arc: the label placer keeps it off the lines around
         # (a short crank, a lever crossing the arc) as it does every other label
-        mid = e.start_angle + span / 2
+        mid = e.start_angle + span * e.text_at
         ctx.d.labels.append(LabelReq("point", words, at(mid), True, e.name, r0=0.6))
 
 

@@ -24,6 +24,9 @@ OMEGA_REACH = 0.65
 """The omega arrow stands 0.65 of the crank's length out from its pivot (the crank-angle mark at 0.45) ..."""
 ALPHA_REACH = 0.85
 """... and the alpha arrow 0.85 out, between it and the crank pin."""
+OMEGA_TEXT_AT, ALPHA_TEXT_AT = 0.3, 0.85
+"""With both arrows drawn, omega's value 0.3 of the way along its arc and alpha's by its head: either side
+of the crank, each by its own arc (the two straddle the crank a few mm apart).  Omega alone: by its middle."""
 OMEGA_LEAST, ALPHA_LEAST = 9.0, 14.0
 """mm on paper: however short the crank is drawn, the omega arrow stands at least 9 mm out and the alpha
 arrow 14 mm, clear of the crank-angle mark (at least 6 mm: ``render.annotations.ANGLE_MIN_R``) and of
@@ -51,14 +54,14 @@ def link_numbers(m: Mechanism, pose: Pose) -> list[LinkNumber]:
 
 
 def rotation_arrow(name: str, pivot: Vec, tip: Vec, rate: float, text: str, reach: float,
-                   least: float = 0.0) -> AngleMark:
+                   least: float = 0.0, text_at: float = 0.5) -> AngleMark:
     """The arc arrow of the crank's ``rate`` (omega or alpha, CCW positive) about its ``pivot``, ``reach`` of
     the crank out (at least ``least`` mm on paper), straddling the crank and pointing in the sense of
-    ``rate``."""
+    ``rate``, its value at ``text_at`` of the way along it."""
     r = tip - pivot
     half = ROTATION_SPAN / 2 * (1.0 if rate > 0 else -1.0)
     return AngleMark(name, Role.GIVEN, Diagram.SPACE, pivot, reach * r.norm(), r.angle() - half, r.angle() + half,
-                     text, least)
+                     text, least, text_at)
 
 
 def conventions(m: Mechanism, pose: Pose, omega: float, alpha: float | None) -> Construction:
@@ -72,12 +75,12 @@ def conventions(m: Mechanism, pose: Pose, omega: float, alpha: float | None) -> 
     values = {}
     if omega != 0:
         ents.append(rotation_arrow(f"omega {n}", pos[pivot], pos[tip], omega, f"\u03c9_{n} = $w", OMEGA_REACH,
-                                   OMEGA_LEAST))
+                                   OMEGA_LEAST, *(() if not alpha else (OMEGA_TEXT_AT,))))
         words += f"; the crank {pivot}{tip} turns at \u03c9_{n} = $w {'CCW' if omega > 0 else 'CW'}"
         values["w"] = Value("angular velocity", abs(omega))
     if alpha:
         ents.append(rotation_arrow(f"alpha {n}", pos[pivot], pos[tip], alpha, f"\u03b1_{n} = $al", ALPHA_REACH,
-                                   ALPHA_LEAST))
+                                   ALPHA_LEAST, ALPHA_TEXT_AT))
         words += f", \u03b1_{n} = $al {'CCW' if alpha > 0 else 'CW'}"
         values["al"] = Value("angular acceleration", abs(alpha))
     return Construction("Space diagram").then(words + ".", *ents, values=values, kind=StepKind.GIVEN)
