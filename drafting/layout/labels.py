@@ -184,11 +184,10 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
         near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
         best, by_leader = None, False
-        for heavy_ok, clear, relaxes, by_leader in _tiers(req, None if req.kind == "note" else kin.test(req, reach, LABEL_PAD), placed, d):
-            if committed and clear is not None:
+        own_kin = None if req.kind == "note" else kin.test(req, reach, LABEL_PAD)
+        for heavy_ok, clear, relaxes, by_leader in _tiers(req, own_kin, placed, d):
+            if committed:                           # no label over a leader already drawn
                 clear = sparing(clear, committed)
-            elif committed:
-                clear = sparing(None, committed)
             for relax in relaxes:
                 best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
                                        near_placed, near_hard, near_segs, heavy_ok, clear)
@@ -223,13 +222,16 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         out.append(Rectangle(box.x, box.y, box.w, box.h, ground, f"{req.name}:{tag} bg"))
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:{tag}"))
         tied.append((req, box, by_leader))
-    for req, box, by_leader in tied:     # once every label is placed: a leader hidden under another's ground
-        leader = led_leader(req, box) if by_leader else leader_of(req, box)     # would leave a stray stroke,
-        if by_leader and leader is not None:                                    # so a far label's goes only
-            leaders.append(leader)                                              # where clear
-        elif leader is not None and (short(req) or req.kind == "note" or (clear_line(leader, [o for o in placed if o is not box] + [
-                h for h in d.hard if not h.contains_point(leader.x1, leader.y1)]) and not crosses_heavy(
-                leader, d.segments))):
+    # once every label is placed, the leaders: one hidden under another's ground would leave a stray
+    # stroke, so a far label's goes only where clear (a label placed by its leader was placed where it is)
+    for req, box, by_leader in tied:
+        leader = led_leader(req, box) if by_leader else leader_of(req, box)
+        if leader is None:
+            continue
+        if by_leader or short(req) or req.kind == "note" or (
+                clear_line(leader, [o for o in placed if o is not box]
+                           + [h for h in d.hard if not h.contains_point(leader.x1, leader.y1)])
+                and not crosses_heavy(leader, d.segments)):
             leaders.append(leader)
     return leaders + out            # the leaders first: under every label's white ground, never over a text
 
