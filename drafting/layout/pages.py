@@ -196,11 +196,10 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 doc = _document(plans, groups, mode, sections, cache)
                 if doc is None:
                     continue
-                # the steps read in order (worth another page); then the fewest pages; then no page left mostly blank (the text beside the diagrams it
-                # speaks of, rather than a last page of a few lines); then the drawings kept together
-                # on as few pages as hold them (a reader compares the polygons with the space
-                # diagram), then comfortable lettering, the largest
-                # diagrams, the largest lettering
+                # the steps read in order (worth another page); the fewest pages; no page left mostly
+                # blank (the text beside the diagrams it speaks of, not a last page of a few lines); the
+                # drawings on as few pages as hold them (a reader compares the polygons with the space
+                # diagram); comfortable lettering, the largest diagrams, the largest lettering
                 drawing_pages = sum(1 for pg in doc.pages if pg.panels)
                 bare = _bare_pages(paper, doc, sections, cache)
                 key = (-steps_out_of_order(doc, sections), -doc.count, -bare, -drawing_pages,
