@@ -212,7 +212,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         _, centre, box = best
         placed.append(box)
         own = led_leader(req, box) if by_leader else None      # placed by its leader: drawn, kept clear
-        if own is None and req.kind in ("arrow", "trial") and led(req, box):
+        if own is None and led(req, box):
             own = leader_of(req, box)
         if own is not None:
             committed.append(own)

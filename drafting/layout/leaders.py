@@ -34,9 +34,9 @@ def led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
 
 
 def led(req: LabelReq, box: Rect) -> bool:
-    """Whether ``req``'s label in ``box`` stands off its arrow (or a note off its point) far enough to be
-    drawn with a leader."""
-    return req.kind in ("arrow", "trial", "note") and req.other is not None and not short(req) \
+    """Whether ``req``'s label in ``box`` stands off its arrow or trial line far enough to be drawn with a
+    leader (a short arrow's leader is drawn whatever it crosses, and kept clear of nothing)."""
+    return req.kind in ("arrow", "trial") and req.other is not None and not short(req) \
         and leader_of(req, box) is not None
 
 

@@ -232,7 +232,9 @@ def diagram_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> 
         # the title block under it at most as wide
         narrowest_left = min(min(min_width(a) for a in arrangements(panels[:k])) for k in range(1, len(panels)))
         col = widest_column(paper)
-        widths = (min(col, 0.5 * F.w), TEXT_COL_MIN, min(col, F.w - narrowest_left), F.w - _true_scale_width(panels[0]))
+        true_scale = _true_scale_width(panels[0])
+        widths = (min(col, 0.5 * F.w), TEXT_COL_MIN, min(col, F.w - narrowest_left)) + (
+            () if true_scale is None else (F.w - true_scale,))
         for wt in dict.fromkeys(w for w in widths if w >= TEXT_COL_MIN):
             h2 = tb_height(min(tbw, wt), panels)
             for k in range(1, len(panels)):
@@ -262,14 +264,14 @@ def diagram_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> 
     return plan
 
 
-def _true_scale_width(p: Panel) -> float:
+def _true_scale_width(p: Panel) -> float | None:
     """The width a space diagram's panel needs at the largest ISO scale up to 1:1 (a column that narrow
-    leaves the rest of the page to the polygons); the frame's width (no such column) for another panel."""
+    leaves the rest of the page to the polygons); None for another panel or one no such scale draws."""
     if not isinstance(p, SpacePanel):
-        return 10_000.0
+        return None
     rungs = [r for r in range(p.rungs()) if ratio_factor(p.ratios[r]) <= 1.0 + 1e-12]
     got = p.need(max(rungs), 10_000.0) if rungs else None
-    return 10_000.0 if got is None else max(got[0], p.min_width())
+    return None if got is None else max(got[0], p.min_width())
 
 
 def text_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> PagePlan:

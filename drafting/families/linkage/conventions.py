@@ -75,7 +75,7 @@ def conventions(m: Mechanism, pose: Pose, omega: float, alpha: float | None) -> 
     values = {}
     if omega != 0:
         ents.append(rotation_arrow(f"omega {n}", pos[pivot], pos[tip], omega, f"\u03c9_{n} = $w", OMEGA_REACH,
-                                   OMEGA_LEAST, *(() if not alpha else (OMEGA_TEXT_AT,))))
+                                   OMEGA_LEAST, OMEGA_TEXT_AT if alpha else 0.5))
         words += f"; the crank {pivot}{tip} turns at \u03c9_{n} = $w {'CCW' if omega > 0 else 'CW'}"
         values["w"] = Value("angular velocity", abs(omega))
     if alpha:
