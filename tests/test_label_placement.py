@@ -175,12 +175,17 @@ def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, se
     placed = [Rect(*r) for r in placed]
     hard = [Rect(*r) for r in hard]
     clear = None if kin is None else _Clear(kin[0], [(*_element_bounds(g), g) for g in kin[1]], 0.4)
-    got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, _Segments(segments), heavy_ok, clear)
     want = exhaustive_best(cands, hw, hh, plot, placed, hard, segments, heavy_ok, clear)
-    if want is None:
-        assert got is None
-    else:
-        assert got is not None and (got[0], got[1]) == want
+
+    class Gridded(_Segments):           # the grid used however few the segments are
+        __slots__ = ()
+        DENSE = -1
+    for index in (_Segments(segments), Gridded(segments)):      # every segment tested, then by the grid
+        got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, index.rows, heavy_ok, clear, index)
+        if want is None:
+            assert got is None
+        else:
+            assert got is not None and (got[0], got[1]) == want
 
 
 @settings(max_examples=300, deadline=None)

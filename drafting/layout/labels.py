@@ -190,7 +190,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 clear = sparing(clear, committed)
             for relax in relaxes:
                 best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
-                                       near_placed, near_hard, near_segs, heavy_ok, clear)
+                                       near_placed, near_hard, near_segs, heavy_ok, clear, segs)
                 if best is not None:
                     break
             if best is not None:
@@ -256,7 +256,8 @@ def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
-                    near_hard: list[Rect], near_segs: "_Segments", heavy_ok: bool, clear=None):
+                    near_hard: list[Rect], near_segs: list[tuple], heavy_ok: bool, clear=None,
+                    segs: _Segments | None = None):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
     or None when every one leaves the plot, overlaps a label or a symbol, hides part of a thick line
     (unless ``heavy_ok``) or fails ``clear(left, top, right, bottom)`` (the ambiguity test, see
@@ -274,7 +275,7 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
     pl, pt, pr, pb = plot.left - tol, plot.top - tol, plot.right + tol, plot.bottom + tol
     obstacles = [(o.left, o.top, o.right + gap, o.bottom + gap, gap)
                  for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)) for o in rects]
-    segments = near_segs.rows
+    dense = segs is not None and len(near_segs) > segs.DENSE
     w, h = 2 * hw, 2 * hh
     best_total, best_i = math.inf, -1
     for i in sorted(range(len(costs)), key=costs.__getitem__):     # cheapest first, ties in their order
@@ -290,7 +291,8 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
                for o_l, o_t, o_r, o_b, gap in obstacles):
             continue
         thin = thick = 0.0
-        for x0, y0, x1, y1, a0, a1, dx, dy, heavy, length in segments:
+        for x0, y0, x1, y1, a0, a1, dx, dy, heavy, length in (segs.meeting(le, to, ri, bo) if dense
+                                                               else near_segs):
             if x0 <= ri and x1 >= le and y0 <= bo and y1 >= to:      # else it adds exactly 0.0
                 got = clip_fraction(a0, a1, dx, dy, le, to, ri, bo) * length
                 if heavy:
@@ -312,9 +314,14 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
 
 class _Segments:
     """The line segments of a drawing, one row each: the bounding box, the start, the run (end minus
-    start), whether the line is heavy and its length."""
+    start), whether the line is heavy and its length; and, for a dense drawing (a cam's profiles, a
+    gear's teeth), a grid of square cells naming the rows whose boxes meet each cell, so that a label's
+    candidate box is tested against the few segments around it rather than every one in reach."""
 
-    __slots__ = ("rows",)
+    __slots__ = ("rows", "_cells")
+
+    CELL = 4.0                  # mm, the side of a grid cell
+    DENSE = 48                  # more segments than this in a label's reach: the grid is used
 
     def __init__(self, segments) -> None:
         rows = []
@@ -323,6 +330,7 @@ class _Segments:
             rows.append((min(a0, b0), min(a1, b1), max(a0, b0), max(a1, b1), a0, a1, b0 - a0, b1 - a1,
                          bool(heavy), math.hypot(b0 - a0, b1 - a1)))
         self.rows = rows
+        self._cells = None
 
     def around(self, p: Pt, margin: float) -> list[int]:
         """Indices, in order, of the segments whose boxes grown by ``margin`` hold ``p`` (every line
@@ -331,12 +339,36 @@ class _Segments:
         return [i for i, (x0, y0, x1, y1, *_) in enumerate(self.rows)
                 if x0 - margin <= x <= x1 + margin and y0 - margin <= y <= y1 + margin]
 
-    def near(self, reach: Rect) -> "_Segments":
-        """The segments whose boxes meet ``reach``, in their order."""
+    def near(self, reach: Rect) -> list[tuple]:
+        """The rows whose boxes meet ``reach``, in their order."""
         le, to, ri, bo = reach.left, reach.top, reach.right, reach.bottom
-        sub = object.__new__(_Segments)
-        sub.rows = [r for r in self.rows if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
-        return sub
+        return [r for r in self.rows if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
+
+    def meeting(self, le: float, to: float, ri: float, bo: float) -> list[tuple]:
+        """The rows whose boxes meet the box (le, to, ri, bo), in their order (by the grid: only the rows
+        of the cells it covers are tested)."""
+        cells = self._cells
+        if cells is None:
+            cells = self._cells = self._grid()
+        c = self.CELL
+        found: set[int] = set()
+        for gx in range(math.floor(le / c), math.floor(ri / c) + 1):
+            for gy in range(math.floor(to / c), math.floor(bo / c) + 1):
+                got = cells.get((gx, gy))
+                if got is not None:
+                    found.update(got)
+        rows = self.rows
+        return [r for r in (rows[i] for i in sorted(found))
+                if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
+
+    def _grid(self) -> dict[tuple[int, int], list[int]]:
+        c = self.CELL
+        cells: dict[tuple[int, int], list[int]] = {}
+        for i, (x0, y0, x1, y1, *_) in enumerate(self.rows):
+            for gx in range(math.floor(x0 / c), math.floor(x1 / c) + 1):
+                for gy in range(math.floor(y0 / c), math.floor(y1 / c) + 1):
+                    cells.setdefault((gx, gy), []).append(i)
+        return cells
 
 
 _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin

@@ -142,11 +142,16 @@ def draw_note(e: Note, ctx: DrawContext) -> None:
     x, y0 = ctx.T(e.at)
     hw, hh = _text_half(words)
 
+    # only a note over the same stretch of x can cover it, wherever it goes up or down
+    left = x - hw
+    right = left + 2 * hw
+    band = [o for o in ctx.notes if left < o.right + NOTE_GAP and o.left < right + NOTE_GAP]
+
     def free(y: float) -> bool:
-        return not any(Rect(x - hw, y - hh, 2 * hw, 2 * hh).overlaps(o, NOTE_GAP) for o in ctx.notes)
+        return not any(Rect(x - hw, y - hh, 2 * hw, 2 * hh).overlaps(o, NOTE_GAP) for o in band)
     clear = NOTE_GAP + hh + 1e-6                # (a hair more: the test is strict)
     ys = [y0] + [v for o in ctx.notes for v in (o.top - clear, o.bottom + clear)]
-    y = min((v for v in ys if free(v)), key=lambda v: (abs(v - y0), v))
+    y = next(v for v in sorted(ys, key=lambda v: (abs(v - y0), v)) if free(v))      # the nearest free
     ground = Rect(x - hw, y - hh, 2 * hw, 2 * hh)
     ctx.notes.append(ground)
     # set there where it is clear, else at the nearest clear place around: the placer keeps it off heavy
