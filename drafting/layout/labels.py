@@ -14,7 +14,8 @@ from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
 from .label_kin import Kin, clip_fraction
-from .leaders import crosses_heavy, clear_line, leader_of, led, led_leader, led_test, short, sparing
+from .leaders import (LONG_LEADER, LONGEST_LEADER, clear_line, crosses_heavy, leader_of, led, led_leader, led_test,
+                      short, sparing)
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -36,8 +37,9 @@ _DIR_ATAN = tuple(math.atan2(u[1], u[0]) for u in _DIRS)
 _DIR_LEAN = tuple(0.05 * angle_gap(2 * math.pi * i / 16, math.pi / 4) for i in range(16))
 
 
-_DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0), (3.0, 4.5, 6.0, 7.4))
-"""mm from the anchor; then relaxed; then an arrow's label set off by a leader (within LONGEST_LEADER)"""
+_DISTS = ((0.7, 1.6, 3.0, 4.5), (6.0, 8.0, 11.0, 15.0), (3.0, 4.5, 6.0, 7.4), (8.5, 10.0, 12.0, 14.0))
+"""mm from the anchor; then relaxed; then an arrow's label set off by a leader (within LONGEST_LEADER);
+then on a long leader (within LONG_LEADER)"""
 _ARROW_F = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)                # where along an arrow, best first
 _LED_F = _ARROW_F + (0.9, 0.95, 0.1)                          # ... and for a label set off by a leader
 _TRIAL_S = (3.0, 6.0, 10.0, 15.0, 22.0)                       # mm in from either end of a trial line
@@ -84,7 +86,7 @@ class _Candidates:
         if req.kind in ("point", "polygon", "note"):
             self._around(req, hw, hh, incident, dists, req.kind in ("polygon", "note") and relax == 0)
         elif req.kind == "arrow":
-            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists, _LED_F if relax == 2 else _ARROW_F)
+            self._along_arrow(req, hw, hh, dists[:3] if relax == 0 else dists, _LED_F if relax >= 2 else _ARROW_F)
         elif req.kind == "trial":
             self._along_trial(req, hw, hh, dists[:3] if relax == 0 else dists)
         else:
@@ -211,7 +213,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 raise LayoutError(f"no room for the label {req.markup!r} in the {region} viewport; use A3")
         _, centre, box = best
         placed.append(box)
-        own = led_leader(req, box) if by_leader else None      # placed by its leader: drawn, kept clear
+        own = led_leader(req, box, by_leader) if by_leader else None    # placed by its leader: drawn, kept clear
         if own is None and led(req, box):
             own = leader_of(req, box)
         if own is not None:
@@ -225,7 +227,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     # once every label is placed, the leaders: one hidden under another's ground would leave a stray
     # stroke, so a far label's goes only where clear (a label placed by its leader was placed where it is)
     for req, box, by_leader in tied:
-        leader = led_leader(req, box) if by_leader else leader_of(req, box)
+        leader = led_leader(req, box, by_leader) if by_leader else leader_of(req, box)
         if leader is None:
             continue
         if by_leader or short(req) or req.kind == "note" or (
@@ -239,20 +241,26 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
 def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
     """The searches a label's candidates go through, strictest first, as (heavy_ok, test, relaxes, led):
     hiding no heavy line and unambiguous; for an arrow, a trial line or a point, then set off it by a
-    leader that makes it unambiguous (:func:`~drafting.layout.leaders.led_test`); then hiding no heavy
-    line; then (a mandatory label only) anything."""
+    leader that makes it unambiguous (:func:`~drafting.layout.leaders.led_test`); then farther off with no
+    leader; then on a long leader; then hiding no heavy line; then (a mandatory label only) anything.
+    ``led`` is the longest leader the search may tie the label by (0: none)."""
     if req.kind == "note":          # a note set off its point is tied to it by a leader
-        yield False, None, (0, 1), False
-        yield True, None, (0,), False
+        yield False, None, (0, 1), 0.0
+        yield True, None, (0,), 0.0
         return
     if clear is not None:
-        yield False, clear, (0,), False
-        if req.kind == "point" or (req.kind in ("arrow", "trial") and req.other is not None and not short(req)):
-            yield False, led_test(req, clear, placed, d), (2,), True      # near, on a leader, before far
-        yield False, clear, (1,), False
-    yield False, None, (0, 1), False
+        yield False, clear, (0,), 0.0
+        if short(req):              # beside a short arrow, its leader from the arrow's middle counted its own
+            yield False, led_test(req, clear, placed, d), (0, 2), LONGEST_LEADER
+        ledable = req.kind == "point" or (req.kind in ("arrow", "trial") and req.other is not None and not short(req))
+        if ledable:
+            yield False, led_test(req, clear, placed, d), (2,), LONGEST_LEADER     # near, on a leader, before far
+        yield False, clear, (1,), 0.0
+        if ledable:
+            yield False, led_test(req, clear, placed, d, LONG_LEADER, 2), (3,), LONG_LEADER
+    yield False, None, (0, 1), 0.0
     if req.mandatory:
-        yield True, None, (0, 1), False
+        yield True, None, (0, 1), 0.0
 
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],

@@ -16,18 +16,21 @@ from ..render.paper import Line, Rect
 from .label_kin import clip_fraction
 
 
-def led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
-    """The test of a candidate set off its arrow, trial line or point (2.5-8 mm): its leader
-    (:func:`led_leader`) runs through no label or symbol and across no other heavy line, and the text is
+def led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing, longest: float | None = None,
+             crossings: int = 0):
+    """The test of a candidate set off its arrow, trial line or point (2.5 mm to ``longest``, by default
+    :data:`LONGEST_LEADER`): its leader (:func:`led_leader`) runs through no label or symbol and across no
+    other heavy line (or no more than ``crossings`` of them, each steeply: a long leader out of a crowded
+    pole), and the text is
     farther from every other entity of its kind than from that leader by the critic's margin -- the
     leader names what the label names."""
     def test(le: float, to: float, ri: float, bo: float) -> bool:
         box = Rect(le, to, ri - le, bo - to)
-        leader = led_leader(req, box)
+        leader = led_leader(req, box, longest)
         if leader is None or not clear_line(leader, placed + [h for h in d.hard
                                                           if not h.contains_point(leader.x1, leader.y1)]):
             return False
-        if crosses_heavy(leader, d.segments):
+        if crossings_of(leader, d.segments, crossings + 1) > crossings:
             return False
         return clear.with_ours([leader.points])(le, to, ri, bo)
     return test
@@ -59,6 +62,9 @@ FAR_LABEL = 2.5
 were taken) is tied to it by a leader, as a draughtsman does, so the reader need not guess its arrow --
 up to :data:`LONGEST_LEADER`: a longer thin line across a polygon reads as one more construction line."""
 LONGEST_LEADER = 8.0
+LONG_LEADER = 15.0
+"""mm: the longest leader, for a label of a crowded polygon that has no clear place nearer its entity
+(better one long leader that names it than a label as near another vector as its own)."""
 
 
 def clear_line(line: Line, boxes: list[Rect]) -> bool:
@@ -70,7 +76,20 @@ def clear_line(line: Line, boxes: list[Rect]) -> bool:
 def crosses_heavy(line: Line, segments) -> bool:
     """Whether ``line`` crosses a heavy line (a vector, a link...) other than the one it starts on: a
     leader across another arrow would seem to name that one."""
+    return crossings_of(line, segments, 1) > 0
+
+
+STEEP = math.sin(math.radians(40.0))
+"""A leader may cross a heavy line (on a long leader only) at no less than 40 degrees: a shallow crossing
+reads as the leader leaving that line."""
+
+
+def crossings_of(line: Line, segments, enough: int) -> int:
+    """How many heavy lines ``line`` crosses, other than the one it starts on, counting up to ``enough``;
+    a crossing shallower than :data:`STEEP` counts as ``enough`` at once."""
     p, r = (line.x1, line.y1), (line.x2 - line.x1, line.y2 - line.y1)
+    rn = math.hypot(*r)
+    n = 0
     for a, b, thick in segments:
         if not thick:
             continue
@@ -81,8 +100,10 @@ def crosses_heavy(line: Line, segments) -> bool:
         wx, wy = q[0] - p[0], q[1] - p[1]
         t, u = (wx * s[1] - wy * s[0]) / den, (wx * r[1] - wy * r[0]) / den
         if 1e-3 < t <= 1.0 and 0.0 <= u <= 1.0:       # (t = 0: the shaft the leader starts on)
-            return True
-    return False
+            n += 1 if abs(den) >= STEEP * rn * math.hypot(*s) else enough
+            if n >= enough:
+                return n
+    return n
 
 
 def short(req: LabelReq) -> bool:
@@ -91,10 +112,10 @@ def short(req: LabelReq) -> bool:
     return req.kind == "arrow" and req.other is not None and math.dist(req.anchor, req.other) < SHORT_ARROW
 
 
-def leader_of(req: LabelReq, box: Rect) -> Line | None:
+def leader_of(req: LabelReq, box: Rect, longest: float | None = None) -> Line | None:
     """A thin leader to a label's box from the middle of a short arrow, or from the nearest point of a
     long arrow's shaft when the box stands off it by more than :data:`FAR_LABEL` (and less than
-    :data:`LONGEST_LEADER`); None for a label that needs none (not an arrow, or beside its arrow) or that
+    :data:`LONGEST_LEADER`, or ``longest``); None for a label that needs none (not an arrow, or beside its arrow) or that
     a leader would not serve."""
     if req.other is None or req.kind not in ("arrow", "trial", "note"):
         return None
@@ -111,7 +132,7 @@ def leader_of(req: LabelReq, box: Rect) -> Line | None:
         if math.hypot(qx - mx, qy - my) <= FAR_LABEL:
             return None
         mx, my = nearest_on_segment((ax, ay), (bx, by), (qx, qy))
-        if math.hypot(qx - mx, qy - my) > LONGEST_LEADER:
+        if math.hypot(qx - mx, qy - my) > (longest or LONGEST_LEADER):
             return None
     else:
         mx, my = (ax + bx) / 2, (ay + by) / 2
@@ -121,17 +142,17 @@ def leader_of(req: LabelReq, box: Rect) -> Line | None:
     return Line(mx, my, qx, qy, "dimension", f"{req.name}:leader")
 
 
-def led_leader(req: LabelReq, box: Rect) -> Line | None:
+def led_leader(req: LabelReq, box: Rect, longest: float | None = None) -> Line | None:
     """The leader of a label set off what it names: an arrow's or a trial line's from the nearest point of
     its line (:func:`leader_of`); a point's (a joint, a pole, an arc's middle) from the edge of its mark
     towards the box, when the box stands off it by more than :data:`FAR_LABEL` and less than
-    :data:`LONGEST_LEADER`."""
+    :data:`LONGEST_LEADER` (or ``longest``)."""
     if req.kind != "point":
-        return leader_of(req, box)
+        return leader_of(req, box, longest)
     (px, py), r0 = req.anchor, req.r0
     qx, qy = min(max(px, box.left), box.right), min(max(py, box.top), box.bottom)
     gap = math.hypot(qx - px, qy - py)
-    if not FAR_LABEL + r0 < gap <= LONGEST_LEADER + r0:
+    if not FAR_LABEL + r0 < gap <= (longest or LONGEST_LEADER) + r0:
         return None
     k = r0 / gap
     return Line(px + (qx - px) * k, py + (qy - py) * k, qx, qy, "dimension", f"{req.name}:leader")
