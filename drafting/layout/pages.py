@@ -200,10 +200,12 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 # blank (the text beside the diagrams it speaks of, not a last page of a few lines); the
                 # drawings on as few pages as hold them (a reader compares the polygons with the space
                 # diagram); comfortable lettering, the largest diagrams, the largest lettering
+                head = (-steps_out_of_order(doc, sections), -doc.count)
+                if best is not None and head < best[0][:2]:
+                    continue                # (it loses before its bare pages are measured)
                 drawing_pages = sum(1 for pg in doc.pages if pg.panels)
                 bare = _bare_pages(paper, doc, sections, cache)
-                key = (-steps_out_of_order(doc, sections), -doc.count, -bare, -drawing_pages,
-                       doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
+                key = head + (-bare, -drawing_pages, doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
                     doc.size, -doc.empty_columns(), -m)
                 if best is None or key > best[0]:
                     best = (key, doc)
