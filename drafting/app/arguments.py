@@ -139,9 +139,9 @@ def parser() -> argparse.ArgumentParser:
                     "drawn station)."))
     n = sub.add_parser("lint", help="measure each scene's sheets against the sheet critic's checks",
                        description="Lay out each scene's worked sheets and report what the sheet critic finds: "
-                                   "labels overlapping, struck by lines or ambiguous, short arrows without a "
-                                   "leader, diagrams filling little of their panel, blank pages, small "
-                                   "lettering, long title-block cells. Exit 1 when anything is found.")
+                                   "labels overlapping, struck by lines, ambiguous or far off with no leader, "
+                                   "short arrows without a leader, diagrams filling little of their panel, blank "
+                                   "pages, small lettering, long title-block cells. Exit 1 when anything is found.")
     n.add_argument("scenes", nargs="+", type=Path, metavar="SCENE", help="scene files (TOML)")
     n.add_argument("--json", action="store_true", help="print the findings and counts as JSON")
     w = sub.add_parser("sweep", help="a linkage over one turn of its crank (table or CSV)",

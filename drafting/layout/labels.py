@@ -13,9 +13,9 @@ from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident
 from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
-from .label_kin import Kin, clip_fraction
-from .leaders import (LONG_LEADER, LONGEST_LEADER, clear_line, crosses_heavy, leader_of, led, led_leader, led_test,
-                      short, sparing)
+from .label_kin import NUMBER, Kin, clip_fraction
+from .leaders import (LONG_LEADER, LONGEST_LEADER, clear_line, crosses_heavy, far_leader, far_test, leader_of, led,
+                      led_leader, led_test, short, sparing)
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -216,6 +216,10 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         own = led_leader(req, box, by_leader) if by_leader else None    # placed by its leader: drawn, kept clear
         if own is None and led(req, box):
             own = leader_of(req, box)
+        if own is None:             # set far off what it names: tied by a long leader where one is clear
+            far = far_leader(req, box)
+            if far is not None and _clear_leader(far, box, placed, d):
+                own = far
         if own is not None:
             committed.append(own)
         x = centre[0] - ext.width / 2
@@ -223,19 +227,24 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         tag, ground = ("text", "note_bg") if req.kind == "note" else ("label", "label_bg")
         out.append(Rectangle(box.x, box.y, box.w, box.h, ground, f"{req.name}:{tag} bg"))
         out.append(Text(x, y, spans, "label", ext.box(x, y), region, f"{req.name}:{tag}"))
-        tied.append((req, box, by_leader))
+        tied.append((req, box, by_leader, own))
     # once every label is placed, the leaders: one hidden under another's ground would leave a stray
     # stroke, so a far label's goes only where clear (a label placed by its leader was placed where it is)
-    for req, box, by_leader in tied:
-        leader = led_leader(req, box, by_leader) if by_leader else leader_of(req, box)
+    for req, box, by_leader, own in tied:
+        leader = own if own is not None else leader_of(req, box)
         if leader is None:
             continue
-        if by_leader or short(req) or req.kind == "note" or (
-                clear_line(leader, [o for o in placed if o is not box]
-                           + [h for h in d.hard if not h.contains_point(leader.x1, leader.y1)])
-                and not crosses_heavy(leader, d.segments)):
+        if by_leader or short(req) or req.kind == "note" or _clear_leader(leader, box, placed, d):
             leaders.append(leader)
     return leaders + out            # the leaders first: under every label's white ground, never over a text
+
+
+def _clear_leader(leader: Line, box: Rect, placed: list[Rect], d: Drawing) -> bool:
+    """Whether ``leader`` (to ``box``) runs through no other label and no mark but the one it starts at,
+    and across no heavy line."""
+    return (clear_line(leader, [o for o in placed if o is not box]
+                       + [h for h in d.hard if not h.contains_point(leader.x1, leader.y1)])
+            and not crosses_heavy(leader, d.segments))
 
 
 def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
@@ -255,7 +264,10 @@ def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
         ledable = req.kind == "point" or (req.kind in ("arrow", "trial") and req.other is not None and not short(req))
         if ledable:
             yield False, led_test(req, clear, placed, d), (2,), LONGEST_LEADER     # near, on a leader, before far
-        yield False, clear, (1,), 0.0
+        # far off with no leader, only where a long leader would be clear (a link's number names the whole
+        # link, and a curve's name is measured from one point of it: those are judged by the critic)
+        far_tied = (req.kind in ("arrow", "trial") or req.r0 > 0) and ledable and not req.name.startswith(NUMBER)
+        yield False, far_test(req, clear, placed, d) if far_tied else clear, (1,), 0.0
         if ledable:
             yield False, led_test(req, clear, placed, d, LONG_LEADER, 2), (3,), LONG_LEADER
     yield False, None, (0, 1), 0.0

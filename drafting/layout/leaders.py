@@ -158,6 +158,49 @@ def led_leader(req: LabelReq, box: Rect, longest: float | None = None) -> Line |
     return Line(px + (qx - px) * k, py + (qy - py) * k, qx, qy, "dimension", f"{req.name}:leader")
 
 
+def far_leader(req: LabelReq, box: Rect) -> Line | None:
+    """The leader of a label set farther off what it names than a short leader reaches (a place beside it
+    was taken): an arrow's or a trial line's up to :data:`LONG_LEADER` from its line, a point's (a
+    circle's or a curve's name, a pivot's) when the box stands more than :data:`LONGEST_LEADER` off its
+    point; None for one set nearer, or farther than :data:`LONG_LEADER`."""
+    if req.kind in ("arrow", "trial"):
+        return leader_of(req, box, LONG_LEADER)
+    if req.kind != "point":
+        return None
+    (px, py), r0 = req.anchor, req.r0
+    qx, qy = min(max(px, box.left), box.right), min(max(py, box.top), box.bottom)
+    if math.hypot(qx - px, qy - py) <= LONGEST_LEADER:
+        return None
+    return led_leader(req, box, LONG_LEADER)
+
+
+def off_by(req: LabelReq, box: Rect) -> float:
+    """How far ``box`` stands off what ``req`` names: an arrow's or a trial line's line, else its point."""
+    if req.kind in ("arrow", "trial") and req.other is not None:
+        m = nearest_on_segment(req.anchor, req.other, (box.x + box.w / 2, box.y + box.h / 2))
+        q = (min(max(m[0], box.left), box.right), min(max(m[1], box.top), box.bottom))
+        m = nearest_on_segment(req.anchor, req.other, q)
+        return math.dist(m, q)
+    (px, py) = req.anchor
+    return math.hypot(min(max(px, box.left), box.right) - px, min(max(py, box.top), box.bottom) - py)
+
+
+def far_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
+    """``clear``, and a box more than :data:`LONGEST_LEADER` off what it names taken only where its long
+    leader (:func:`far_leader`) runs through no label or mark and across no heavy line: a label that far
+    off with no leader leaves the reader to guess what it names."""
+    def test(le: float, to: float, ri: float, bo: float) -> bool:
+        if not clear(le, to, ri, bo):
+            return False
+        box = Rect(le, to, ri - le, bo - to)
+        if off_by(req, box) <= LONGEST_LEADER:
+            return True
+        far = far_leader(req, box)
+        return far is not None and clear_line(far, placed + [h for h in d.hard if not h.contains_point(far.x1, far.y1)]) \
+            and not crosses_heavy(far, d.segments)
+    return test
+
+
 def nearest_on_segment(a: tuple[float, float], b: tuple[float, float], p: tuple[float, float]) -> tuple[float, float]:
     """The point of segment ab nearest ``p``."""
     dx, dy = b[0] - a[0], b[1] - a[1]

@@ -11,6 +11,7 @@ The checks, each defined in its function's docstring:
     label-overlap     two diagram texts whose boxes share area (labels.label_overlaps)
     label-crossed     a diagram text struck by another entity's line (labels.crossed_labels)
     label-ambiguous   a label not clearly nearer its own entity than another of its kind (labels.ambiguous_labels)
+    label-far         a label more than 8 mm from its own entity with no leader (labels.far_labels)
     short-arrow       a labelled arrow under 5 mm without a leader (labels.short_arrows)
     diagram-fill      a diagram filling < 60 % of its panel that a larger scale would fit (page.diagram_fill)
     blank-page        a frame more than 50 % blank (page.blank_page)
@@ -22,7 +23,7 @@ from __future__ import annotations
 
 from typing import Callable, Iterable
 
-from .labels import ambiguous_labels, crossed_labels, label_overlaps, short_arrows
+from .labels import ambiguous_labels, crossed_labels, far_labels, label_overlaps, short_arrows
 from .page import blank_fraction, blank_page, diagram_fill, small_lettering, title_cells
 from .parts import Finding, owner, part
 
@@ -32,6 +33,7 @@ CHECKS: dict[str, Callable[..., list[Finding]]] = {
     "label-overlap": label_overlaps,
     "label-crossed": crossed_labels,
     "label-ambiguous": ambiguous_labels,
+    "label-far": far_labels,
     "short-arrow": short_arrows,
     "diagram-fill": diagram_fill,
     "blank-page": blank_page,

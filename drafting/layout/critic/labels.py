@@ -229,6 +229,32 @@ def ambiguous_labels(sheet) -> list[Finding]:
     return out
 
 
+FAR_LABEL = 8.0
+"""mm: a label farther than this from what it names needs a leader to it (the placer's longest short leader)."""
+
+
+def far_labels(sheet) -> list[Finding]:
+    """label-far: a label ("<owner>:label") whose box is more than :data:`FAR_LABEL` from its own entity's
+    geometry (as :func:`ambiguous_labels` measures it: an arrow's shaft and head, a point's centre, a line's
+    or arc's path) with no leader drawn for it -- the reader must guess what it names even where nothing
+    else of its kind is near.  A link's number and a point drawn only as another entity's pin are left
+    to :func:`ambiguous_labels`.  Value: the distance, mm."""
+    ents = _entities(sheet)
+    out = []
+    for t in (c for c in diagram_texts(sheet.commands) if part(c.name) == "label"):
+        mine = owner(t.name)
+        if mine.startswith(NUMBER) or LEADER + mine in ents:
+            continue
+        kind, geometry, _ = ents.get(mine, ("point", [], None))
+        if not geometry:
+            continue
+        d = _distance(t.box, geometry)
+        if d > FAR_LABEL:
+            out.append(Finding("label-far", sheet.number,
+                               f"{t.plain!r} ({t.name}) is {d:.1f} mm from its own {kind}, with no leader", t.box, d))
+    return out
+
+
 def _nearest(box: Rect, cands: list) -> tuple[float, str] | None:
     """(distance, owner) of the candidate (owner, geometry, bounds) nearest ``box``: the candidates are
     measured in the order of their bounds' distance, which no part of them can be nearer than."""
