@@ -203,10 +203,11 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                 head = (-steps_out_of_order(doc, sections), -doc.count)
                 if best is not None and head < best[0][:2]:
                     continue                # (it loses before its bare pages are measured)
-                drawing_pages = sum(1 for pg in doc.pages if pg.panels)
-                bare = _bare_pages(paper, doc, sections, cache)
-                key = head + (-bare, -drawing_pages, doc.size >= COMFORTABLE_LETTERING - 1e-9) + doc.quality() + (
-                    doc.size, -doc.empty_columns(), -m)
+                rest = (-sum(1 for pg in doc.pages if pg.panels), doc.size >= COMFORTABLE_LETTERING - 1e-9) + \
+                    doc.quality() + (doc.size, -doc.empty_columns(), -m)
+                if best is not None and head == best[0][:2] and best[0][2] == 0 and rest <= best[0][3:]:
+                    continue                # (no bare page could make it win: the best has none)
+                key = head + (-_bare_pages(paper, doc, sections, cache),) + rest
                 if best is None or key > best[0]:
                     best = (key, doc)
     if best is None:
