@@ -73,3 +73,35 @@ def test_a_scale_bar_s_bottom_without_its_plan_is_its_laid_out_bottom(x, top, le
     it is the bottom of the bar's full plan, bit for bit."""
     from drafting.layout.scale_bar import _bar_plan, bar_bottom
     assert bar_bottom(top, unit) == _bar_plan(x, top, length, value, unit).box.bottom
+
+
+@settings(max_examples=150, deadline=None)
+@given(words, st.floats(20.0, 160.0), st.sampled_from([2.5, 3.5, 5.0]))
+def test_a_balanced_wrap_keeps_the_line_count_and_cannot_be_narrower(ws, width, size):
+    """balanced_width: no wider than asked, the same number of lines as there (no word split), and a
+    hundredth of a millimetre narrower would take another line -- so the lines are as even as a greedy
+    wrap makes them."""
+    from drafting.layout.wrap import _breaks, _word_columns, balanced_width
+    from drafting.render.style import text_width
+    text = " ".join(ws)
+    widths, space = _word_columns(text, size)[0], text_width(" ", size)
+    whole = _breaks(widths, width, space)
+    got = balanced_width(text, width, size)
+    assert got <= width
+    if whole is None or len(whole) < 2:
+        assert got == width
+        return
+    assert len(_breaks(widths, got, space)) == len(whole)
+    assert got - 0.011 < max(widths) or len(_breaks(widths, got - 0.011, space)) > len(whole)
+
+
+def test_a_title_of_two_lines_is_broken_into_lines_of_about_one_length():
+    """The acceleration example's title took a full line and "1)" under it; balanced, its two lines are
+    within a word of each other."""
+    from drafting.layout.wrap import balanced_width, wrap_words
+    from drafting.render.style import measure
+    title = "Slider-crank: acceleration polygon (notes, acceleration Example 1)"
+    greedy = [measure(line).width for line in wrap_words(title, 115.0, 3.5)]
+    even = [measure(line).width for line in wrap_words(title, balanced_width(title, 115.0, 3.5), 3.5)]
+    assert len(greedy) == len(even) == 2
+    assert greedy[1] < 0.1 * greedy[0] and abs(even[0] - even[1]) < 0.2 * even[0]

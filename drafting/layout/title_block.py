@@ -10,7 +10,7 @@ from typing import Sequence
 from ..render.errors import LayoutError
 from ..render.paper import Command, Line, Rect, Rectangle, Span, translated
 from ..render.style import LABEL, MIN_TEXT, TITLE, measure, plain, rich
-from .wrap import line_baselines, stack_lines, text_at, wrap_words
+from .wrap import balanced_width, line_baselines, stack_lines, text_at, wrap_words
 
 
 TB_PAD = 1.2
@@ -53,7 +53,7 @@ def _block_plan(width: float, title: str, fields: Sequence[Sequence[tuple[str, s
     if tw * size <= inner:
         title_lines = [rich(title, size)]
     else:
-        title_lines = wrap_words(title, inner, size)
+        title_lines = wrap_words(title, balanced_width(title, inner, size), size)     # lines of one length
     t_bottom = line_baselines([(m.top, m.bottom) for m in map(measure, title_lines)], TB_PAD + 0.6, size)[1]
     heights: list[float] = [max(12.0, t_bottom + TB_PAD + 0.6)]
     cap_ext = measure(plain("Xg", TB_CAPTION))

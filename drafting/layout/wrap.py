@@ -103,6 +103,27 @@ def _breaks(widths: Sequence[float], width: float, space: float) -> list[tuple[i
     return lines
 
 
+def balanced_width(markup: str, width: float, size: float) -> float:
+    """The least width, down to a hundredth of a millimetre, at which ``markup`` wraps greedily into no
+    more lines than at ``width``: a title wrapped to it has lines of about one length (as a typesetter
+    breaks a heading), not a full line and a word left over.  ``width`` itself when a word would have to
+    be split there or the text takes one line."""
+    widths = _word_columns(markup, size)[0]
+    space = text_width(" ", size)
+    got = _breaks(widths, width, space) if widths else None
+    if got is None or len(got) < 2:
+        return width
+    n = len(got)
+    lo, hi = max(widths), width                  # the greedy wrap's line count only grows as it narrows
+    while hi - lo > 0.01:
+        mid = (lo + hi) / 2
+        if len(_breaks(widths, mid, space)) <= n:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
 def _add(run: list[list], s: Span) -> None:
     if run and run[-1][1] == s.size and run[-1][2] == s.shift and run[-1][3] == s.italic:
         run[-1][0] += s.text
