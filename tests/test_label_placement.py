@@ -181,7 +181,7 @@ def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, se
         __slots__ = ()
         DENSE = -1
     for index in (_Segments(segments), Gridded(segments)):      # every segment tested, then by the grid
-        got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, index.rows, heavy_ok, clear, index)
+        got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, index.near(plot), heavy_ok, clear, index)
         if want is None:
             assert got is None
         else:
@@ -289,3 +289,20 @@ def test_an_arrow_label_crowded_by_a_collinear_arrow_is_set_off_by_a_leader_that
     lead = leaders["V_G2:leader"]
     assert 40.0 <= lead.x1 <= 70.0 and abs(lead.y1 - 50.3) < 0.5            # from V_G2's own shaft
     assert abs(lead.y2 - lead.y1) > FAR_LABEL - 1e-9 or abs(lead.x2 - lead.x1) > FAR_LABEL - 1e-9
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(segment, max_size=40), st.lists(st.tuples(coord, coord), min_size=1, max_size=5),
+       st.sampled_from([0.0, 0.2, 1.5]))
+def test_the_grid_finds_the_segments_around_a_point_that_the_scan_finds(segments, points, margin):
+    """A dense drawing's segments around a label's anchor are found through its grid: the same indices, in
+    the same order, as testing every segment."""
+    from drafting.layout.labels import _Segments
+
+    class Gridded(_Segments):
+        __slots__ = ()
+        DENSE = -1
+    scan, grid = _Segments(segments), Gridded(segments)
+    assert grid.dense and not scan.dense
+    for p in points:
+        assert grid.around(p, margin) == scan.around(p, margin)

@@ -295,7 +295,7 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
     pl, pt, pr, pb = plot.left - tol, plot.top - tol, plot.right + tol, plot.bottom + tol
     obstacles = [(o.left, o.top, o.right + gap, o.bottom + gap, gap)
                  for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)) for o in rects]
-    dense = segs is not None and len(near_segs) > segs.DENSE
+    dense = segs is not None and segs.dense
     w, h = 2 * hw, 2 * hh
     best_total, best_i = math.inf, -1
     for i in sorted(range(len(costs)), key=costs.__getitem__):     # cheapest first, ties in their order
@@ -338,10 +338,10 @@ class _Segments:
     gear's teeth), a grid of square cells naming the rows whose boxes meet each cell, so that a label's
     candidate box is tested against the few segments around it rather than every one in reach."""
 
-    __slots__ = ("rows", "_cells")
+    __slots__ = ("rows", "_cells", "dense")
 
     CELL = 4.0                  # mm, the side of a grid cell
-    DENSE = 48                  # more segments than this in a label's reach: the grid is used
+    DENSE = 240                 # a drawing of more segments than this is searched by its grid
 
     def __init__(self, segments) -> None:
         rows = []
@@ -351,22 +351,34 @@ class _Segments:
                          bool(heavy), math.hypot(b0 - a0, b1 - a1)))
         self.rows = rows
         self._cells = None
+        self.dense = len(rows) > self.DENSE
 
     def around(self, p: Pt, margin: float) -> list[int]:
         """Indices, in order, of the segments whose boxes grown by ``margin`` hold ``p`` (every line
         that can leave ``p`` within a tolerance below ``margin`` / 2 is among them)."""
         x, y = p
-        return [i for i, (x0, y0, x1, y1, *_) in enumerate(self.rows)
-                if x0 - margin <= x <= x1 + margin and y0 - margin <= y <= y1 + margin]
+        rows = self.rows
+        pick = self._indices(x - margin, y - margin, x + margin, y + margin) if self.dense else range(len(rows))
+        return [i for i in pick if rows[i][0] - margin <= x <= rows[i][2] + margin
+                and rows[i][1] - margin <= y <= rows[i][3] + margin]
 
     def near(self, reach: Rect) -> list[tuple]:
-        """The rows whose boxes meet ``reach``, in their order."""
+        """The rows whose boxes meet ``reach``, in their order (every row of a dense drawing: its
+        candidates are searched by :meth:`meeting`)."""
+        if self.dense:
+            return self.rows
         le, to, ri, bo = reach.left, reach.top, reach.right, reach.bottom
         return [r for r in self.rows if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
 
     def meeting(self, le: float, to: float, ri: float, bo: float) -> list[tuple]:
         """The rows whose boxes meet the box (le, to, ri, bo), in their order (by the grid: only the rows
         of the cells it covers are tested)."""
+        rows = self.rows
+        return [r for r in (rows[i] for i in self._indices(le, to, ri, bo))
+                if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
+
+    def _indices(self, le: float, to: float, ri: float, bo: float) -> list[int]:
+        """In order, the rows listed in the grid's cells that the box (le, to, ri, bo) covers."""
         cells = self._cells
         if cells is None:
             cells = self._cells = self._grid()
@@ -377,9 +389,7 @@ class _Segments:
                 got = cells.get((gx, gy))
                 if got is not None:
                     found.update(got)
-        rows = self.rows
-        return [r for r in (rows[i] for i in sorted(found))
-                if r[0] <= ri and r[2] >= le and r[1] <= bo and r[3] >= to]
+        return sorted(found)
 
     def _grid(self) -> dict[tuple[int, int], list[int]]:
         c = self.CELL
