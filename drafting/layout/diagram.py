@@ -41,8 +41,8 @@ def draw_entities(entities: Sequence[Entity], k: float, *, text: TextFn | None =
     T = Transform(k)
     d = Drawing()
     pts = model_points(entities)
-    paper_pts = [T(p) for p in pts]
-    paper_pts += [T(p) for p in trial_crossings(entities, pts)]
+    paper_pts = T.many(pts)
+    paper_pts += T.many(trial_crossings(entities, pts))
     pivots, bars, blocks = diagram_facts(entities, T)
     centroid = (sum(p[0] for p in paper_pts) / len(paper_pts), sum(p[1] for p in paper_pts) / len(paper_pts)) \
         if paper_pts else (0.0, 0.0)

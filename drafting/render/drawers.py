@@ -267,7 +267,7 @@ def draw_circle(e: CircleEntity, ctx: DrawContext) -> None:
 
 @drawer(Curve, points=lambda e: e.points)
 def draw_curve(e: Curve, ctx: DrawContext) -> None:
-    pts = tuple(ctx.T(p) for p in e.points if math.isfinite(p.x) and math.isfinite(p.y))
+    pts = tuple(ctx.T.many(p for p in e.points if math.isfinite(p.x) and math.isfinite(p.y)))
     if len(pts) < 2:
         return
     if e.closed:

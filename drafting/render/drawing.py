@@ -24,6 +24,7 @@ over a diagram.  This module imports neither, so they can import it.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from typing import Callable, Iterable, Sequence
@@ -82,12 +83,12 @@ class Drawing:
             self.segments.extend((a, b, thick) for a, b in cmd.segments)
         elif isinstance(cmd, (Polyline, Polygon)) and cmd.style not in NO_SEGMENT_STYLES:
             pts = list(cmd.points) + ([cmd.points[0]] if isinstance(cmd, Polygon) else [])
-            self.segments.extend((a, b, thick) for a, b in zip(pts[:-1], pts[1:]))
+            self.segments.extend(zip(pts[:-1], pts[1:], itertools.repeat(thick)))
 
     def add_segments(self, points: Sequence[Pt], thick: bool, closed: bool = False) -> None:
         """Line segments labels should avoid, for a command that is not made of segments (a circle)."""
         pts = list(points) + ([points[0]] if closed and points else [])
-        self.segments.extend((a, b, thick) for a, b in zip(pts[:-1], pts[1:]))
+        self.segments.extend(zip(pts[:-1], pts[1:], itertools.repeat(thick)))
 
     @property
     def commands(self) -> list[Command]:

@@ -26,6 +26,12 @@ class Transform:
     def __call__(self, v: Vec) -> tuple[float, float]:
         return (self.ox + self.k * v.x, self.oy - self.k * v.y)
 
+    def many(self, vs) -> list[tuple[float, float]]:
+        """Each of ``vs`` on paper, as calling the transform on each does (the same arithmetic: a curve of
+        thousands of points is mapped in one pass)."""
+        k, ox, oy = self.k, self.ox, self.oy
+        return [(ox + k * v.x, oy - k * v.y) for v in vs]
+
     def direction(self, v: Vec) -> tuple[float, float]:
         """A model direction as a paper unit vector."""
         n = math.hypot(v.x, v.y)
