@@ -7,7 +7,8 @@ futures): a thread pool, a process pool, or a cluster's executor such as Dask's
 the process may use -- forked, so each worker starts with the engine already imported (from a process
 running threads, such as a notebook's kernel, through the fork server instead) -- or, for fewer
 than :data:`SERIAL_BELOW` jobs or one core, runs them one after the other in this process (a pool's
-start-up and the pickling of results cost more than they save on a few jobs).
+start-up and the pickling of results cost more than they save on a few jobs).  ``concurrent.futures``
+and ``multiprocessing`` are loaded only when jobs run over an executor: one scene does without them.
 
 Faults, with the default process pool:
 
@@ -24,17 +25,18 @@ Faults, with the default process pool:
 
 from __future__ import annotations
 
-import concurrent.futures as cf
 import contextlib
 import gc
-import multiprocessing
 import os
 import signal
 import sys
 import threading
-from typing import Any, Callable, Iterable, Iterator, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Iterable, Iterator, Sequence
 
 from ..backends import faults
+
+if TYPE_CHECKING:
+    import concurrent.futures as cf
 
 SERIAL_BELOW = 3
 """Fewer jobs than this run serially when no executor is given (see the module docstring)."""
@@ -112,6 +114,7 @@ def _call(fn: Callable[[Any], Any], job: Any) -> Any:
     try:
         return fn(job)
     except faults.Interrupted as e:
+        import multiprocessing
         faults.remove_temporaries()
         if multiprocessing.parent_process() is not None:       # a pool worker: end the process
             os._exit(e.exit_code)
@@ -124,6 +127,8 @@ def default_executor(n_jobs: int, workers: int | None = None) -> cf.Executor | N
     n = workers or cores()
     if n_jobs < SERIAL_BELOW or n < 2:
         return None
+    import concurrent.futures as cf            # loaded for a pool only: a serial run does without
+    import multiprocessing
     methods = multiprocessing.get_all_start_methods()
     # fork: each worker starts with the engine imported -- unless this process runs threads (a notebook's),
     # which a fork would copy mid-step; then the fork server
@@ -155,6 +160,7 @@ def run(fn: Callable[[Any], Any], jobs: Sequence[Any], *, executor: cf.Executor 
             if on_done is not None:
                 on_done(i, r)
         return out
+    import concurrent.futures as cf
     results: list[Any] = [None] * len(jobs)
     futures: dict[cf.Future, int] = {}
     clean = False
@@ -187,6 +193,7 @@ def run(fn: Callable[[Any], Any], jobs: Sequence[Any], *, executor: cf.Executor 
 def _stop_pool(executor: cf.Executor, folders: Iterable[os.PathLike | str]) -> None:
     """End a process pool now: SIGTERM to every worker (each removes its temporary files), wait, SIGKILL
     what is left, then remove the temporary files of the workers that are gone."""
+    import concurrent.futures as cf
     with faults.deferred():
         procs = list((getattr(executor, "_processes", None) or {}).values()) \
             if isinstance(executor, cf.ProcessPoolExecutor) else []
