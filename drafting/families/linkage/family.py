@@ -14,14 +14,10 @@ from typing import TYPE_CHECKING, Mapping, NamedTuple
 from constructions.mechanisms.classify import classify_four_bar
 from constructions.forces.bodies import torque_name
 from constructions.forces.effects import NO_EFFECTS
-from constructions.forces.inverse import with_load
-from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
-from constructions.mechanisms.inverse_construction import inverse_step, with_inverse
 from constructions.mechanisms.pose import locate
 from constructions.quantities import Measured
-from constructions.polygons.acceleration import acceleration_polygon
 from constructions.polygons.driving_slider import driving_steps, with_first
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Construction
@@ -54,6 +50,7 @@ def _position(study):
     s = study.scene
     pose = locate(s.mechanism, s.angle, study.get("plan"), fmt=s.units.format)
     if getattr(s, "inverse", None) is not None:
+        from constructions.mechanisms.inverse_construction import inverse_step, with_inverse
         step = inverse_step(s.mechanism, s.inverse, study.get("plan"), s.solution)
         pose = replace(pose, construction=with_inverse(pose.construction, step))
     if s.dimensions:
@@ -95,6 +92,7 @@ def _alpha_by_virtual_work(study) -> float:
 
 
 def _acceleration(study):
+    from constructions.polygons.acceleration import acceleration_polygon
     s = study.scene
     aa = acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
     if getattr(s, "driven", None) is not None:
@@ -163,12 +161,16 @@ def _cannot_sweep(scene) -> str | None:
 def _effects(study):
     """The scene's effects, with the load a given torque holds at the magnitude found for it."""
     e = getattr(study.scene, "effects", None) or NO_EFFECTS
-    return e if e.balance is None else with_load(e, study.get("load for torque"))
+    if e.balance is None:
+        return e
+    from constructions.forces.inverse import with_load
+    return with_load(e, study.get("load for torque"))
 
 
 def _forces(study):
     """Static or D'Alembert force polygons: the accelerations only when some body has mass, the velocities
     only when friction needs the sliding direction -- what the scene declares and nothing else."""
+    from constructions.forces.polygon import force_analysis
     s, e = study.scene, _effects(study)
     velocity = study.get("velocity") if e.friction else None
     acceleration = study.get("acceleration") if e.inertial else None
