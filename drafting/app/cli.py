@@ -47,6 +47,9 @@ def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
     handler (:mod:`drafting.entry`'s while the ``drafting`` command loads), then its own handlers run it."""
     with safe_streams():
         try:
+            if exiting:                           # the command's own process: see drafting.app.parallel
+                from .parallel import collect_less
+                collect_less()
             args, command = _load(argv)
             # the signal may come while the handlers are being put in place: the try holds that too
             # a process about to exit (``exiting``) ignores a late signal: its status is the work's
@@ -93,6 +96,10 @@ def _main(args: argparse.Namespace, command: ModuleType, exiting: bool = False) 
     except UserError as e:
         print(f"drafting: error: {e}", file=sys.stderr)
         return e.code
+    finally:
+        if exiting:
+            from .parallel import leave_to_exit
+            leave_to_exit()
 
 
 if __name__ == "__main__":
