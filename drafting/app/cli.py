@@ -23,8 +23,8 @@ import importlib
 import os
 import signal
 import sys
+from collections.abc import Sequence
 from types import ModuleType
-from typing import Sequence
 
 from ..backends.faults import Interrupted, remove_temporaries, signals_handled
 from .arguments import parser
@@ -47,10 +47,7 @@ def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
     handler (:mod:`drafting.entry`'s while the ``drafting`` command loads), then its own handlers run it."""
     with safe_streams():
         try:
-            if exiting:                           # the command's own process: see drafting.app.parallel
-                from .parallel import collect_less
-                collect_less()
-            args, command = _load(argv)
+            args, command = _load(argv, exiting)
             # the signal may come while the handlers are being put in place: the try holds that too
             # a process about to exit (``exiting``) ignores a late signal: its status is the work's
             with signals_handled(after=signal.SIG_IGN if exiting else None):
@@ -80,9 +77,14 @@ def _silence_stdout() -> None:
         pass
 
 
-def _load(argv: Sequence[str] | None) -> tuple[argparse.Namespace, ModuleType]:
-    """The parsed arguments and the module of their command (:data:`COMMANDS`), imported now."""
+def _load(argv: Sequence[str] | None, exiting: bool = False) -> tuple[argparse.Namespace, ModuleType]:
+    """The parsed arguments and the module of their command (:data:`COMMANDS`), imported now -- in the
+    command's own process (``exiting``) with the collector tuned for loading first
+    (:func:`drafting.app.parallel.collect_less`)."""
     args = parser().parse_args(argv)
+    if exiting:
+        from .parallel import collect_less
+        collect_less()
     return args, importlib.import_module(COMMANDS[args.command], __package__)
 
 

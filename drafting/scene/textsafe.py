@@ -17,7 +17,7 @@ from __future__ import annotations
 import contextlib
 import re
 import sys
-from typing import Iterator
+from collections.abc import Iterator
 
 REPLACEMENT = "\ufffd"
 QUOTE_LIMIT = 60
