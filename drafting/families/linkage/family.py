@@ -18,7 +18,6 @@ from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
 from constructions.mechanisms.pose import locate
 from constructions.quantities import Measured
-from constructions.polygons.driving_slider import driving_steps, with_first
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Construction
 
@@ -33,7 +32,12 @@ from .inverse import driven_analytic, driven_measured, driven_notes, inverse_ana
 from .inverse_load import LOAD_ANALYSES, found_load_note, found_load_rows
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, TABLES, LinkageScene, assembly_check, read_linkage
-from .vary import read_vary
+
+
+def _read_vary(data, path, units):
+    """The scene's [vary] (:mod:`.vary`, loaded for such a scene only)."""
+    from .vary import read_vary
+    return read_vary(data, path, units)
 
 
 def _classification(study):
@@ -63,6 +67,7 @@ def _velocity(study):
     s = study.scene
     va = velocity_polygon(s.mechanism, study.get("position"), s.omega)
     if getattr(s, "driven", None) is not None:
+        from constructions.polygons.driving_slider import driving_steps, with_first
         step = driving_steps(s.driven, s.mechanism.crank, s.inverse.along)[0]
         va = replace(va, construction=with_first(va.construction, step))
     return va
@@ -96,6 +101,7 @@ def _acceleration(study):
     s = study.scene
     aa = acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
     if getattr(s, "driven", None) is not None:
+        from constructions.polygons.driving_slider import driving_steps, with_first
         step = driving_steps(s.driven, s.mechanism.crank, s.inverse.along)[1]
         aa = replace(aa, construction=with_first(aa.construction, step))
     return aa
@@ -371,7 +377,7 @@ LINKAGE = Family(
     sections=SECTIONS, keys=TABLES,
     read=read_linkage,
     checks=("plan",),
-    vary=read_vary,
+    vary=_read_vary,
     given=given_lines,
     dimensioned_problem=True,
     sweeps="turn",
