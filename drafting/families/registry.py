@@ -148,9 +148,9 @@ def _discover_named(kind: str) -> None:
 
 
 def family(kind: str) -> Family:
-    """The family of ``kind``: the entry point of that name first, then (a family declared under another
-    name) every entry point; a kind not known yet has the entry points looked at again (a family
-    installed since), then KeyError.  This package's own kinds are loaded from :data:`BUILT_IN`."""
+    """The family of ``kind``: one of this package's own from :data:`BUILT_IN`; else the entry point of
+    that name first, then (a family declared under another name) every entry point; a kind not known yet
+    has the entry points looked at again (a family installed since), then KeyError."""
     if kind not in FAMILIES and kind in BUILT_IN:
         module, _, name = BUILT_IN[kind].partition(":")
         found = getattr(importlib.import_module(module), name)
