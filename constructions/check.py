@@ -13,12 +13,10 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
-from .analytic import chain_solution
 from .closed_forms import closed_form_parts, closed_form_state
 from .errors import CannotAssemble, DegenerateInput, IndeterminatePosition
 from .geometry import Vec
 from .mechanisms.assembly import SlotThrough, TwoLines, assembly_plan
-from .mechanisms.constraint_kinematics import solve_constraints
 from .mechanisms.model import Mechanism
 from .quantities import Measured
 from .tolerance import AGREEMENT, CONDITION_FLOOR, EPSILON, OTHER_ASSEMBLY, SAFETY
@@ -121,6 +119,7 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
     left None."""
     parts = closed_form_parts(m)
     if parts is None:
+        from .analytic import chain_solution         # the dyad chains' loops: not loaded for a plain four-bar
         try:
             st = chain_solution(m, angle, omega, alpha)
         except DegenerateInput as e:
@@ -152,6 +151,7 @@ def analytic_solution(m: Mechanism, angle: float, omega: float, alpha: float = 0
 
 def _constraint_solution(m, angle, omega, alpha, guess, accelerations) -> AnalyticSolution | None:
     """The constraint-equation solution; None where it cannot assemble near the guess."""
+    from .mechanisms.constraint_kinematics import solve_constraints
     try:
         st = solve_constraints(m, angle, omega, alpha, guess)
     except CannotAssemble:

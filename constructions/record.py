@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import re
-from html import escape
 from dataclasses import dataclass
 from enum import Enum
 from typing import Callable, Iterator, Mapping
@@ -200,6 +199,7 @@ class Construction:
 
     def _repr_html_(self) -> str:
         """Jupyter: the numbered steps (values in SI; a sheet writes them in the scene's units)."""
+        from html import escape
         items = "".join(f"<li>{escape(st.text())}</li>" for st in self.steps)
         return f"<div><b>{escape(self.title)}</b><ol>{items}</ol></div>"
 

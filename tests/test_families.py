@@ -90,3 +90,12 @@ def test_unknown_and_planned_kinds_are_named(monkeypatch):
     with pytest.raises(SceneError, match="'spring' is not a scene kind; choose from cam, free body, gear pair, gear "
                                          "train, linkage"):
         parse_scene('kind = "spring"\n')
+
+
+def test_the_built_in_families_are_those_pyproject_declares():
+    """A scene of this package's own kinds loads its family without reading the entry points
+    (registry.BUILT_IN): the table names the objects of the package's entry points, each under its kind."""
+    import tomllib
+    pyproject = tomllib.loads((Path(__file__).resolve().parents[1] / "pyproject.toml").read_text())
+    assert sorted(registry.BUILT_IN.values()) == sorted(pyproject["project"]["entry-points"][GROUP].values())
+    assert all(family(kind).kind == kind for kind in registry.BUILT_IN)

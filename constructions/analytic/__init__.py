@@ -62,18 +62,36 @@ Modules
 ``inputs``, ``parts``, ``states``
     The checked inputs of the closed forms, the pieces they share (crank tip, the three-way gap
     decision) and their frozen results.
+
+The package's names from the other modules are loaded on first use (:func:`__getattr__`): the analytic
+check of a plain four-bar or slider-crank, which needs the inputs and states only, loads neither the
+dyad chain nor the closed forms the sweep's kernels stand in for.
 """
 
+import importlib
+
 from ..tolerance import ASSEMBLY_RTOL
-from .chain_order import solving_order
-from .chain_state import ChainPoint, ChainState
-from .four_bar_loop import four_bar
 from .parts import SINE_TOL
-from .point_on_link import coupler_point
-from .slider_loop import slider_crank
 from .states import FourBarState, PointState, SliderCrankState
-from .vector_loops import SINGULAR, chain_solution
-from .yoke_loop import ScotchYokeState, scotch_yoke
+
+_FROM = {"solving_order": "chain_order", "ChainPoint": "chain_state", "ChainState": "chain_state",
+         "four_bar": "four_bar_loop", "coupler_point": "point_on_link", "slider_crank": "slider_loop",
+         "SINGULAR": "vector_loops", "chain_solution": "vector_loops",
+         "ScotchYokeState": "yoke_loop", "scotch_yoke": "yoke_loop"}
+"""The module of each name the package exports besides the inputs and states."""
+
+
+def __getattr__(name: str):
+    if name not in _FROM:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{_FROM[name]}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     "ASSEMBLY_RTOL",

@@ -28,7 +28,6 @@ import numpy as np
 from ..errors import DegenerateInput
 from ..formatting import Formatter, si_format
 from ..geometry import Vec
-from ..sweep import sweep
 from .assembly import PlanStep, assembly_plan
 from .model import Mechanism, slide_line
 from .pose import locate
@@ -129,6 +128,7 @@ def inverse_position(m: Mechanism, target: Target, *, plan: tuple[PlanStep, ...]
     plan = assembly_plan(m) if plan is None else plan
     kind = "length" if isinstance(target, SliderAt) else "angle"
     goal = target.position if isinstance(target, SliderAt) else target.angle
+    from ..sweep import sweep                   # the whole-turn machinery: loaded when a target is sought
     grid = TURN * np.arange(samples) / samples
     res = sweep(m, grid, 0.0, 0.0)
     values = np.full(samples, np.nan)

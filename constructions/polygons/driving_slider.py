@@ -29,7 +29,6 @@ from ..geometry import Vec
 from ..mechanisms.model import Mechanism, Slide, slide_line
 from ..mechanisms.pose import Pose
 from ..record import Construction, Step, StepKind, Value
-from .acceleration import acceleration_polygon
 from .velocity import velocity_polygon
 
 __all__ = ["DrivenCrank", "along_line", "driven_crank", "driving_steps", "with_first"]
@@ -84,6 +83,7 @@ def driven_crank(m: Mechanism, pose: Pose, block: int, speed: float, acceleratio
     omega = speed / k
     if omega == 0.0:
         return DrivenCrank(block, speed, acceleration, k, 0.0, 0.0, acceleration / k)
+    from .acceleration import acceleration_polygon
     va = velocity_polygon(m, pose, omega)
     aa = acceleration_polygon(m, va, 0.0)
     _, a0 = along_line(m, s, pose.positions, va.velocities, va.angular, aa.accelerations, aa.angular)

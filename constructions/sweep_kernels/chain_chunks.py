@@ -3,8 +3,12 @@ chunk of angles at a time, so the chain's many temporaries stay in cache."""
 
 from __future__ import annotations
 
-from ..analytic import ChainState, chain_solution
+from typing import TYPE_CHECKING
+
 from ..mechanisms.model import Mechanism
+
+if TYPE_CHECKING:
+    from ..analytic import ChainState
 
 __all__ = ["CHAIN_CHUNK", "chain_sweep"]
 
@@ -16,4 +20,5 @@ CHAIN_CHUNK = 2**13
 def chain_sweep(m: Mechanism, theta, omega, alpha=0.0) -> ChainState:
     """:func:`constructions.analytic.chain_solution` (the same arguments and result, bit for bit), in
     chunks of :data:`CHAIN_CHUNK` angles."""
+    from ..analytic import chain_solution        # the dyad chain: loaded by the sweeps that run one
     return chain_solution(m, theta, omega, alpha, chunk=CHAIN_CHUNK)

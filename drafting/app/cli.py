@@ -23,8 +23,8 @@ import importlib
 import os
 import signal
 import sys
+from collections.abc import Sequence
 from types import ModuleType
-from typing import Sequence
 
 from ..backends.faults import Interrupted, remove_temporaries, signals_handled
 from .arguments import parser
@@ -37,7 +37,7 @@ COMMANDS = {
 }
 """Each command's module (relative to this package), imported only when that command runs: its
 ``run_command(args)`` runs it.  ``drafting --help`` and a command's start load nothing they do not use
-(numpy, the engine, svgwrite, cairo are each loaded by the modules that draw or solve)."""
+(numpy, the engine, cairo are each loaded by the modules that draw or solve)."""
 
 
 def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
@@ -47,7 +47,7 @@ def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:
     handler (:mod:`drafting.entry`'s while the ``drafting`` command loads), then its own handlers run it."""
     with safe_streams():
         try:
-            args, command = _load(argv)
+            args, command = _load(argv, exiting)
             # the signal may come while the handlers are being put in place: the try holds that too
             # a process about to exit (``exiting``) ignores a late signal: its status is the work's
             with signals_handled(after=signal.SIG_IGN if exiting else None):
@@ -77,9 +77,14 @@ def _silence_stdout() -> None:
         pass
 
 
-def _load(argv: Sequence[str] | None) -> tuple[argparse.Namespace, ModuleType]:
-    """The parsed arguments and the module of their command (:data:`COMMANDS`), imported now."""
+def _load(argv: Sequence[str] | None, exiting: bool = False) -> tuple[argparse.Namespace, ModuleType]:
+    """The parsed arguments and the module of their command (:data:`COMMANDS`), imported now -- in the
+    command's own process (``exiting``) with the collector tuned for loading first
+    (:func:`drafting.app.parallel.collect_less`)."""
     args = parser().parse_args(argv)
+    if exiting:
+        from .parallel import collect_less
+        collect_less()
     return args, importlib.import_module(COMMANDS[args.command], __package__)
 
 
@@ -93,6 +98,10 @@ def _main(args: argparse.Namespace, command: ModuleType, exiting: bool = False) 
     except UserError as e:
         print(f"drafting: error: {e}", file=sys.stderr)
         return e.code
+    finally:
+        if exiting:
+            from .parallel import leave_to_exit
+            leave_to_exit()
 
 
 if __name__ == "__main__":

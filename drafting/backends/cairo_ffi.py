@@ -20,12 +20,11 @@ then parses as it always did.
 from __future__ import annotations
 
 import contextlib
-import hashlib
 import importlib.util
 import os
 import sys
-import tempfile
 import types
+import zlib
 from pathlib import Path
 
 MODULE = "_tom_drafting_cairo_ffi"
@@ -45,6 +44,8 @@ def _load(name: str, path: Path) -> types.ModuleType:
 
 def _write(path: Path, headers: str) -> None:
     """cffi's out-of-line module for ``headers``, written beside ``path`` and renamed into place."""
+    import tempfile
+
     import cffi
     builder = cffi.FFI()
     builder.cdef(headers)
@@ -67,7 +68,7 @@ def prebuilt_ffi():
         return None
     import cffi
     constants = Path(spec.origin).parent / "constants.py"
-    key = hashlib.sha256(constants.read_bytes() + cffi.__version__.encode()).hexdigest()[:16]
+    key = f"{zlib.crc32(constants.read_bytes() + cffi.__version__.encode()):08x}"   # a CRC names it (hashlib: ~3 ms to load)
     path = _cache_folder() / f"cairo_ffi_{key}.py"
     if not path.exists():
         headers = _load("_tom_drafting_cairocffi_constants", constants)._CAIRO_HEADERS

@@ -17,7 +17,7 @@ from __future__ import annotations
 import contextlib
 import re
 import sys
-from typing import Iterator
+from collections.abc import Iterator
 
 REPLACEMENT = "\ufffd"
 QUOTE_LIMIT = 60
@@ -25,19 +25,22 @@ QUOTE_LIMIT = 60
 MESSAGE_LIMIT = 1000
 """A message longer than this is cut (whatever survives the quote cutting)."""
 
+# The patterns are kept as text and compiled on first use (``re``'s own cache): compiling their classes of
+# surrogates at import cost every start a few ms, and most texts never need them -- every character
+# they match is one ``str.isprintable`` refuses (a control, separator, format character, surrogate or
+# non-character), so a printable text is passed as it is.
 # XML 1.0: Char ::= #x9 | #xA | #xD | [#x20-#xD7FF] | [#xE000-#xFFFD] | [#x10000-#x10FFFF]
-_XML_FORBIDDEN = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+_XML_FORBIDDEN = "[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]"
 # what a terminal must not receive raw: C0 (also tab/newline in a one-line text), DEL, C1,
 # the Unicode line/paragraph separators, bidi overrides and unpaired surrogates
-_UNPRINTABLE = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]")
-_UNPRINTABLE_KEEP_LINES = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069"
-                                     "\ud800-\udfff]")
+_UNPRINTABLE = "[\x00-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]"
+_UNPRINTABLE_KEEP_LINES = "[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069\ud800-\udfff]"
 _QUOTED = re.compile(r"'(?:[^'\\]|\\.)*'|\"(?:[^\"\\]|\\.)*\"")
 
 
 def xml_safe(text: str) -> str:
     """``text`` with every character XML 1.0 forbids replaced by U+FFFD (visible, never dropped)."""
-    return _XML_FORBIDDEN.sub(REPLACEMENT, text)
+    return text if text.isprintable() else re.sub(_XML_FORBIDDEN, REPLACEMENT, text)
 
 
 def _escape(m: re.Match) -> str:
@@ -50,7 +53,9 @@ def printable(text: str, *, keep_lines: bool = False) -> str:
     """``text`` with control characters and unpaired surrogates escaped (``\\x1b``, ``\\udcff``).
 
     With ``keep_lines`` newlines and tabs pass (for multi-line output such as a results table)."""
-    return (_UNPRINTABLE_KEEP_LINES if keep_lines else _UNPRINTABLE).sub(_escape, text)
+    if text.isprintable() or (keep_lines and text.replace("\n", "").replace("\t", "").isprintable()):
+        return text
+    return re.sub(_UNPRINTABLE_KEEP_LINES if keep_lines else _UNPRINTABLE, _escape, text)
 
 
 def cut(text: str, limit: int = QUOTE_LIMIT) -> str:

@@ -14,15 +14,10 @@ from typing import TYPE_CHECKING, Mapping, NamedTuple
 from constructions.mechanisms.classify import classify_four_bar
 from constructions.forces.bodies import torque_name
 from constructions.forces.effects import NO_EFFECTS
-from constructions.forces.inverse import with_load
-from constructions.forces.polygon import force_analysis
 from constructions.geometry import Vec
 from constructions.check import NotModelled, analytic_solution, analytic_values
-from constructions.mechanisms.inverse_construction import inverse_step, with_inverse
 from constructions.mechanisms.pose import locate
 from constructions.quantities import Measured
-from constructions.polygons.acceleration import acceleration_polygon
-from constructions.polygons.driving_slider import driving_steps, with_first
 from constructions.polygons.velocity import velocity_polygon
 from constructions.record import Construction
 
@@ -37,7 +32,12 @@ from .inverse import driven_analytic, driven_measured, driven_notes, inverse_ana
 from .inverse_load import LOAD_ANALYSES, found_load_note, found_load_rows
 from .output import linkage_json, transmission_at_pose
 from .scene import SECTIONS, TABLES, LinkageScene, assembly_check, read_linkage
-from .vary import read_vary
+
+
+def _read_vary(data, path, units):
+    """The scene's [vary] (:mod:`.vary`, loaded for such a scene only)."""
+    from .vary import read_vary
+    return read_vary(data, path, units)
 
 
 def _classification(study):
@@ -54,6 +54,7 @@ def _position(study):
     s = study.scene
     pose = locate(s.mechanism, s.angle, study.get("plan"), fmt=s.units.format)
     if getattr(s, "inverse", None) is not None:
+        from constructions.mechanisms.inverse_construction import inverse_step, with_inverse
         step = inverse_step(s.mechanism, s.inverse, study.get("plan"), s.solution)
         pose = replace(pose, construction=with_inverse(pose.construction, step))
     if s.dimensions:
@@ -66,6 +67,7 @@ def _velocity(study):
     s = study.scene
     va = velocity_polygon(s.mechanism, study.get("position"), s.omega)
     if getattr(s, "driven", None) is not None:
+        from constructions.polygons.driving_slider import driving_steps, with_first
         step = driving_steps(s.driven, s.mechanism.crank, s.inverse.along)[0]
         va = replace(va, construction=with_first(va.construction, step))
     return va
@@ -95,9 +97,11 @@ def _alpha_by_virtual_work(study) -> float:
 
 
 def _acceleration(study):
+    from constructions.polygons.acceleration import acceleration_polygon
     s = study.scene
     aa = acceleration_polygon(s.mechanism, study.get("velocity"), _alpha(study))
     if getattr(s, "driven", None) is not None:
+        from constructions.polygons.driving_slider import driving_steps, with_first
         step = driving_steps(s.driven, s.mechanism.crank, s.inverse.along)[1]
         aa = replace(aa, construction=with_first(aa.construction, step))
     return aa
@@ -163,12 +167,16 @@ def _cannot_sweep(scene) -> str | None:
 def _effects(study):
     """The scene's effects, with the load a given torque holds at the magnitude found for it."""
     e = getattr(study.scene, "effects", None) or NO_EFFECTS
-    return e if e.balance is None else with_load(e, study.get("load for torque"))
+    if e.balance is None:
+        return e
+    from constructions.forces.inverse import with_load
+    return with_load(e, study.get("load for torque"))
 
 
 def _forces(study):
     """Static or D'Alembert force polygons: the accelerations only when some body has mass, the velocities
     only when friction needs the sliding direction -- what the scene declares and nothing else."""
+    from constructions.forces.polygon import force_analysis
     s, e = study.scene, _effects(study)
     velocity = study.get("velocity") if e.friction else None
     acceleration = study.get("acceleration") if e.inertial else None
@@ -369,7 +377,7 @@ LINKAGE = Family(
     sections=SECTIONS, keys=TABLES,
     read=read_linkage,
     checks=("plan",),
-    vary=read_vary,
+    vary=_read_vary,
     given=given_lines,
     dimensioned_problem=True,
     sweeps="turn",

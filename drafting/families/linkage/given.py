@@ -4,7 +4,6 @@ in the scene's units."""
 
 from __future__ import annotations
 
-from constructions.mechanisms.inverse_position import describe_target
 
 from ...scene.unitset import direction_deg
 
@@ -45,6 +44,7 @@ def given_lines(study) -> list[str]:
     motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) at {f('angle', s.angle)}"]
     inv = getattr(s, "inverse", None)
     if inv is not None:
+        from constructions.mechanisms.inverse_position import describe_target
         motion = [f"Crank {''.join(crank.joints)} (link {crank.number}) turned to put "
                   f"{describe_target(inv.target, s.units.format, inv.along)}"
                   + (f" (the {_ORDINAL.get(s.solution, f'{s.solution}th')} crank angle from 0\u00b0 "

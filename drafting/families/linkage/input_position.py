@@ -7,15 +7,19 @@ from ``slider_speed`` and ``slider_acceleration``, read off the polygons
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from constructions.errors import DegenerateInput
 from constructions.mechanisms.assembly import assembly_plan
-from constructions.mechanisms.inverse_position import InversePosition, OutputAngle, SliderAt, inverse_position
 from constructions.mechanisms.model import Mechanism
 from constructions.mechanisms.pose import locate
-from constructions.polygons.driving_slider import DrivenCrank, driven_crank
 
 from ...scene.reader import SceneReader
 from ...scene.unitset import Units
+
+if TYPE_CHECKING:      # loaded by the scenes that give these keys: a scene with a crank angle does without
+    from constructions.mechanisms.inverse_position import InversePosition
+    from constructions.polygons.driving_slider import DrivenCrank
 
 
 INVERSE_KEYS = frozenset({"slider_at", "slider", "output_angle", "output", "solution"})
@@ -31,6 +35,7 @@ drawn, counted from 0 deg counter-clockwise."""
 def read_inverse(r: SceneReader, units: Units, m: Mechanism, inp: dict) -> tuple[InversePosition | None, int]:
     """Every crank angle that puts the mechanism at the [input]'s slider_at or output_angle, and which
     one is drawn; (None, 1) when the mechanism cannot be built dyad by dyad (the family's check says so)."""
+    from constructions.mechanisms.inverse_position import OutputAngle, SliderAt, inverse_position
     if "slider_at" in inp:
         if "output" in inp:
             raise r.fail("input.output", "goes with output_angle, not slider_at")
@@ -88,6 +93,7 @@ def read_driving(r: SceneReader, units: Units, m: Mechanism, inp: dict, inverse:
                  angle: float) -> DrivenCrank:
     """The crank's omega and alpha that move the [input]'s block at slider_speed and slider_acceleration
     at the crank angle drawn."""
+    from constructions.polygons.driving_slider import driven_crank
     speed = r.quantity("input.slider_speed", inp["slider_speed"], "velocity", units)
     acc = r.quantity("input.slider_acceleration", inp.get("slider_acceleration", 0), "acceleration", units)
     try:

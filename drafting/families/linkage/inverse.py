@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from constructions.check import NotModelled, analytic_solution
 from constructions.closed_forms import closed_form_inverse
-from constructions.polygons.driving_slider import along_line
 from constructions.quantities import Measured
 
 
@@ -65,6 +64,7 @@ def driven_analytic(scene, guess) -> dict[str, float]:
     dc = getattr(scene, "driven", None)
     if dc is None:
         return {}
+    from constructions.polygons.driving_slider import along_line
     m, s = scene.mechanism, scene.mechanism.blocks()[dc.block]
     try:
         unit = analytic_solution(m, scene.angle, 1.0, 0.0, accelerations=False, guess=guess)

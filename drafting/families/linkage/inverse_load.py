@@ -5,13 +5,13 @@ independent route) -- and compared in the results like every other value."""
 
 from __future__ import annotations
 
-from constructions.forces.inverse import load_for_torque
 from constructions.quantities import Measured
 
 from ..registry import Analysis
 
 
 def _found(study, by: str) -> float:
+    from constructions.forces.inverse import load_for_torque
     s = study.scene
     return load_for_torque(s.mechanism, s.angle, s.omega, s.alpha, s.effects,
                            guess=study.get("position").positions, by=by)

@@ -10,14 +10,12 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from constructions.errors import DegenerateInput
 from constructions.forces.effects import Effects
 from constructions.geometry import Vec
 from constructions.mechanisms.assembly import assembly_plan
-from constructions.mechanisms.inverse_position import InversePosition
-from constructions.polygons.driving_slider import DrivenCrank
 from constructions.mechanisms.model import Attached, Branch, Link, Mechanism, Slide
 
 from ...scene.effect_keys import TABLES as EFFECT_TABLES
@@ -26,6 +24,10 @@ from ...scene.keys import Key, KeyTable
 from ...scene.reader import Scene, SceneError, SceneReader
 from ...scene.unitset import Units
 from .input_position import INVERSE_KEYS, read_driving, read_inverse
+
+if TYPE_CHECKING:
+    from constructions.mechanisms.inverse_position import InversePosition
+    from constructions.polygons.driving_slider import DrivenCrank
 
 
 SECTIONS = frozenset({"frame", "link", "slider", "point", "input", "assembly"}) | EFFECT_SECTIONS
