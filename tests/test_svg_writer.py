@@ -77,51 +77,10 @@ def test_a_coordinate_prints_as_its_rounding_prints():
     assert [fmt(v) for v in (-0.0004, 0.0625, -12.3456)] == ["0", "0.062", "-12.346"]
 
 
-def _svgwrite_drawing(root: dict, css: str, elements: list):
-    """The same document made with svgwrite: its Drawing, its defs and style, and each element as the
-    svgwrite class of its tag (a group holding its title), with the writer's attributes and text."""
-    import svgwrite
-    from svgwrite import container, path, shapes, text
-    from svgwrite.base import Title
-    from drafting.backends import svg
-    dwg = svgwrite.Drawing(size=(root["width"], root["height"]), profile="full", debug=False)
-    dwg.attribs.update({k: v for k, v in root.items() if k not in svg.SVG_NAMESPACES})
-    dwg.defs.add(dwg.style(css))
-    kinds = {"line": shapes.Line, "rect": shapes.Rect, "circle": shapes.Circle, "text": text.Text,
-             "tspan": text.TSpan}
-
-    def made(el):
-        if type(el) is svg._Run:
-            g = container.Group(factory=dwg)
-            g.attribs.update(el.attribs)
-            if el.title is not None:
-                g.elements.append(Title(el.title))
-        elif el.tag in ("polyline", "polygon"):
-            points = [tuple(p.split(",")) for p in el.attribs["points"].split(" ")]
-            g = (shapes.Polyline if el.tag == "polyline" else shapes.Polygon)(points, factory=dwg)
-            g.attribs.update({k: v for k, v in el.attribs.items() if k != "points"})
-        elif el.tag == "path":
-            g = path.Path(el.attribs["d"], factory=dwg)
-            g.attribs.update({k: v for k, v in el.attribs.items() if k != "d"})
-        elif el.tag in ("text", "tspan"):
-            g = kinds[el.tag](el.text, factory=dwg)
-            g.attribs.update(el.attribs)
-        else:
-            g = kinds[el.tag](factory=dwg)
-            g.attribs.clear()
-            g.attribs.update(el.attribs)
-        for sub in el.elements:
-            g.elements.append(made(sub))
-        return g
-    for el in elements:
-        dwg.elements.append(made(el))
-    return dwg
-
-
-def _svgwrite_own(root: dict, css: str, elements: list) -> str:
+def _svgwrite_own(dwg) -> str:
     """The document as svgwrite writes it (through ElementTree), made safe in one pass over the whole."""
     from drafting.scene.textsafe import xml_safe
-    return xml_safe(ET.tostring(_svgwrite_drawing(root, css, elements).get_xml(), encoding="unicode"))
+    return xml_safe(ET.tostring(dwg.get_xml(), encoding="unicode"))
 
 
 def _held_to_svgwrite(monkeypatch) -> list:
@@ -130,9 +89,9 @@ def _held_to_svgwrite(monkeypatch) -> list:
     write = svg._document
     written: list = []
 
-    def both(root, css, elements):
-        got = write(root, css, elements)
-        assert got == _svgwrite_own(root, css, elements)
+    def both(dwg):
+        got = write(dwg)
+        assert got == _svgwrite_own(dwg)
         written.append(got)
         return got
     monkeypatch.setattr(svg, "_document", both)

@@ -37,7 +37,7 @@ COMMANDS = {
 }
 """Each command's module (relative to this package), imported only when that command runs: its
 ``run_command(args)`` runs it.  ``drafting --help`` and a command's start load nothing they do not use
-(numpy, the engine, cairo are each loaded by the modules that draw or solve)."""
+(numpy, the engine, svgwrite, cairo are each loaded by the modules that draw or solve)."""
 
 
 def main(argv: Sequence[str] | None = None, *, exiting: bool = False) -> int:

@@ -1,4 +1,4 @@
-"""SVG: the one module that writes the sheets' markup.
+"""SVG: the only module that imports svgwrite.
 
 One user unit is one millimetre (``width="297mm" viewBox="0 0 297 210"``).  Every command becomes one
 element with its style written out as presentation attributes (stroke, width, dashes, fill), which
@@ -6,12 +6,11 @@ cairosvg reads reliably.  Coordinates are rounded to 3 decimals so the output is
 uses what cairosvg cannot render: arrowheads are filled polygons (no markers), subscripts are tspans
 moved with ``dy`` (no ``baseline-shift``), label backgrounds are white rectangles (no ``paint-order``).
 
-The document is a small tree of :class:`_Element` (tag, attributes, text, children) written out in
-one pass by :func:`_write`, to the characters svgwrite writes for the same document through
-ElementTree (attributes sorted by name, None and empty values left out, ``<x a="1" />`` when empty,
-the style sheet as CDATA): the sheets were first written with svgwrite, whose import alone (its
-validator's regular expressions, and urllib) took a tenth of a cold ``drafting render``.  A test holds
-every gallery sheet to svgwrite's own writing of the same tree, character for character.
+svgwrite holds the document; :func:`_write` writes its tree out in one pass, to the same characters as
+svgwrite's own writer (its ``get_xml`` builds an ElementTree of the whole document first, which took
+half of the SVG's time).  The elements this module makes -- shapes, paths, texts and their tspans --
+are written directly; anything else (the ``<defs>`` with the font's style sheet) by svgwrite itself.
+A test holds every gallery sheet to svgwrite's own output, character for character.
 
 Every text that reaches the document -- titles, drawing numbers, names, labels, file names -- passes
 :func:`drafting.scene.textsafe.xml_safe` here, the one place that writes SVG: every text and attribute value
@@ -39,6 +38,12 @@ from __future__ import annotations
 
 import functools
 from typing import Callable
+from xml.etree import ElementTree
+
+import svgwrite
+from svgwrite import path as svg_path, shapes, text as svg_text
+from svgwrite.base import Title
+from svgwrite.utils import strlist
 
 from .fonts import css_for
 from ..render.paper import Circle, Command, Line, Polygon, Polyline, Rectangle, Strokes, Text
@@ -47,26 +52,12 @@ from ..layout.sheet import Sheet
 from ..render.style import FONT_FAMILY, style
 from ..scene.textsafe import xml_safe
 
-SVG_NAMESPACES = {"xmlns": "http://www.w3.org/2000/svg", "xmlns:xlink": "http://www.w3.org/1999/xlink",
-                  "xmlns:ev": "http://www.w3.org/2001/xml-events"}
-"""The root's namespaces, as svgwrite's full profile declares them (with ``baseProfile="full"``)."""
-
 
 def fmt(v: float) -> str:
     """A coordinate in mm with at most 3 decimals and no '-0' (``.3f`` rounds as ``round(v, 3)`` does:
     both are correctly rounded)."""
     s = f"{v:.3f}".rstrip("0").rstrip(".")
     return "0" if s in ("", "-0") else s
-
-
-class _Element:
-    """One element of the document: ``tag``, ``attribs`` (values as strings; written sorted, None and
-    empty ones left out), ``text`` and the ``elements`` it holds."""
-
-    __slots__ = ("tag", "attribs", "text", "elements")
-
-    def __init__(self, tag: str, attribs: dict[str, str], text: str = "") -> None:
-        self.tag, self.attribs, self.text, self.elements = tag, attribs, text, []
 
 
 @functools.lru_cache(maxsize=None)
@@ -85,41 +76,36 @@ def _paint(name: str) -> dict[str, str]:
     return a
 
 
-def _points(points) -> str:
-    return " ".join(f"{fmt(x)},{fmt(y)}" for x, y in points)
+def _line(dwg, c: Line):
+    return shapes.Line((fmt(c.x1), fmt(c.y1)), (fmt(c.x2), fmt(c.y2)), factory=dwg)
 
 
-def _line(c: Line) -> _Element:
-    return _Element("line", {"x1": fmt(c.x1), "y1": fmt(c.y1), "x2": fmt(c.x2), "y2": fmt(c.y2)})
+def _polyline(dwg, c: Polyline):
+    return shapes.Polyline([(fmt(x), fmt(y)) for x, y in c.points], factory=dwg)
 
 
-def _polyline(c: Polyline) -> _Element:
-    return _Element("polyline", {"points": _points(c.points)})
+def _polygon(dwg, c: Polygon):
+    return shapes.Polygon([(fmt(x), fmt(y)) for x, y in c.points], factory=dwg)
 
 
-def _polygon(c: Polygon) -> _Element:
-    return _Element("polygon", {"points": _points(c.points)})
-
-
-def _strokes(c: Strokes) -> _Element:
+def _strokes(dwg, c: Strokes):
     """One path of separate strokes: "M x y L x y" for each."""
-    return _Element("path", {"d": " ".join(f"M{fmt(a[0])} {fmt(a[1])}L{fmt(b[0])} {fmt(b[1])}"
-                                           for a, b in c.segments)})
+    return svg_path.Path([f"M{fmt(a[0])} {fmt(a[1])}L{fmt(b[0])} {fmt(b[1])}" for a, b in c.segments], factory=dwg)
 
 
-def _rect(c: Rectangle) -> _Element:
-    return _Element("rect", {"x": fmt(c.x), "y": fmt(c.y), "width": fmt(c.w), "height": fmt(c.h)})
+def _rect(dwg, c: Rectangle):
+    return shapes.Rect((fmt(c.x), fmt(c.y)), (fmt(c.w), fmt(c.h)), factory=dwg)
 
 
-def _circle(c: Circle) -> _Element:
-    return _Element("circle", {"cx": fmt(c.cx), "cy": fmt(c.cy), "r": fmt(c.r)})
+def _circle(dwg, c: Circle):
+    return shapes.Circle((fmt(c.cx), fmt(c.cy)), fmt(c.r), factory=dwg)
 
 
-def _element(c: Command, attrs: Callable[[Command], dict[str, str]] | None = None) -> _Element:
+def _element(dwg: svgwrite.Drawing, c: Command, attrs: Callable[[Command], dict[str, str]] | None = None):
     make = _MAKERS.get(type(c))
     if make is None:
         raise TypeError(f"not a drawing command: {c!r}")
-    el = make(c)
+    el = make(dwg, c)
     if make is not _text:
         el.attribs.update(_paint(c.style))
     if attrs is not None:
@@ -127,15 +113,16 @@ def _element(c: Command, attrs: Callable[[Command], dict[str, str]] | None = Non
     return el
 
 
-def _text(c: Text) -> _Element:
+def _text(dwg: svgwrite.Drawing, c: Text):
     base = c.spans[0].size if c.spans else 3.5
-    el = _Element("text", {"x": fmt(c.x), "y": fmt(c.y), "font-size": fmt(base), "xml:space": "preserve"})
+    el = svg_text.Text("", factory=dwg)
+    el.attribs.update({"x": fmt(c.x), "y": fmt(c.y), "font-size": fmt(base), "xml:space": "preserve"})
     shift = 0.0
     for i, s in enumerate(c.spans):
         if i == 0 and s.shift == 0 and not s.italic:
             el.text = s.text
             continue
-        ts = _Element("tspan", {}, s.text)
+        ts = svg_text.TSpan(s.text, factory=dwg)
         dy = s.shift - shift
         if abs(dy) > 5e-4:
             ts.attribs["dy"] = fmt(dy)
@@ -144,7 +131,7 @@ def _text(c: Text) -> _Element:
             ts.attribs["font-size"] = fmt(s.size)
         if s.italic:
             ts.attribs["font-style"] = "italic"
-        el.elements.append(ts)
+        el.add(ts)
     return el
 
 
@@ -159,15 +146,17 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
     sweep card, which names its own); ``ids`` shares the ids of several documents on one page (each id is
     then written once over all of them)."""
     w, h = sheet.width, sheet.height
-    root = {"width": f"{fmt(w)}mm", "height": f"{fmt(h)}mm", "viewBox": f"0 0 {fmt(w)} {fmt(h)}",
-            "font-family": FONT_FAMILY,                  # every text's (black, the default fill)
-            **SVG_NAMESPACES, "baseProfile": "full", "version": "1.1"}
-    css = css_for(s.text for c in sheet.commands if isinstance(c, Text) for s in c.spans)
-    page = _Element("rect", {"x": "0", "y": "0", "width": fmt(w), "height": fmt(h), "fill": "white", "stroke": "none"})
-    elements: list = [page]
+    dwg = svgwrite.Drawing(size=(f"{fmt(w)}mm", f"{fmt(h)}mm"), profile="full", debug=False)
+    dwg.attribs["viewBox"] = f"0 0 {fmt(w)} {fmt(h)}"
+    dwg.attribs["font-family"] = FONT_FAMILY          # every text's (black, the default fill)
+    page = dwg.rect()
+    page.attribs.update({"x": "0", "y": "0", "width": fmt(w), "height": fmt(h), "fill": "white", "stroke": "none"})
+    dwg.add(page)
+    dwg.defs.add(dwg.style(css_for(s.text for c in sheet.commands if isinstance(c, Text) for s in c.spans)))
     if not grouped:
-        elements += [_element(c, attrs) for c in sheet.commands]
-        return _document(root, css, elements)
+        for c in sheet.commands:
+            dwg.add(_element(dwg, c, attrs))
+        return _document(dwg)
     entities = sheet.entities
     ids = Ids(entities) if ids is None else ids
     run, key, name = None, None, None
@@ -178,19 +167,28 @@ def sheet_to_svg(sheet: Sheet, attrs: Callable[[Command], dict[str, str]] | None
             if (part.owner, part.label) != key:
                 key = (part.owner, part.label)
                 run = _run(part, ids)
-                elements.append(run)
-        run.elements.append(_element(c, attrs))
-    return _document(root, css, elements)
+                dwg.elements.append(run)
+        run.elements.append(_element(dwg, c, attrs))
+    return _document(dwg)
 
 
 class _Run:
-    """One group of the document: a run of one part's commands (see the module's words), written as
-    :func:`_run_head` (a ``<g>`` and its ``<title>``) and its elements."""
+    """One group of the document: a run of one part's commands (see the module's words).  It is
+    written as :func:`_run_head` and its elements; ``get_xml`` is svgwrite's tree of the same (a
+    ``Group`` holding a ``Title``), which a test holds the writer to."""
 
     __slots__ = ("attribs", "title", "elements")
 
     def __init__(self, attribs: dict[str, str], title: str | None) -> None:
         self.attribs, self.title, self.elements = attribs, title, []
+
+    def get_xml(self):
+        xml = ElementTree.Element("g", dict(sorted(self.attribs.items())))
+        if self.title is not None:
+            xml.append(Title(self.title).get_xml())
+        for el in self.elements:
+            xml.append(el.get_xml())
+        return xml
 
 
 def _run(part: Part, ids: Ids) -> _Run:
@@ -228,7 +226,7 @@ def svg_inline(sheet: Sheet, width: str = "100%") -> str:
     return f"<svg{tag}>{body}"
 
 
-# ---- the writer: the tree as svgwrite (through ElementTree) writes it --------------------------------
+# ---- the writer: svgwrite's tree as svgwrite (through ElementTree) writes it ------------------------
 
 def _escaped(v: str, *, attribute: bool) -> str:
     """``v`` made safe (:func:`xml_safe`) and escaped as ElementTree escapes text or an attribute."""
@@ -263,44 +261,64 @@ def _start(tag: str, attribs: dict, out: list[str]) -> None:
                 out.append(f' {k}="{_attribute(v)}"')
 
 
-def _write(el: _Element | _Run, out: list[str]) -> None:
+def _write(el, out: list[str]) -> None:
     """One element and what it holds (ElementTree's layout: ``<x a="1" />`` when empty)."""
-    if type(el) is _Run:
+    kind = type(el)
+    if kind is _Run:
         out.append(_run_head(tuple(el.attribs.items()), el.title))
         for sub in el.elements:
             _write(sub, out)
         out.append("</g>")
         return
-    _start(el.tag, el.attribs, out)
-    text = str(el.text)
+    if kind in _POINTS:
+        el.attribs["points"] = el.points_to_string(el.points)
+    elif kind is svg_path.Path:
+        el.attribs["d"] = strlist(el.commands, " ")
+    elif kind not in _PLAIN:
+        out.append(_by_svgwrite(el))
+        return
+    _start(el.elementname, el.attribs, out)
+    text = str(el.text) if kind in _TEXTS else ""
     if text or el.elements:
         out.append(">")
         if text:
             out.append(_escaped(text, attribute=False))
         for sub in el.elements:
             _write(sub, out)
-        out.append(f"</{el.tag}>")
+        out.append(f"</{el.elementname}>")
     else:
         out.append(" />")
 
 
+_POINTS = (shapes.Polyline, shapes.Polygon)
+_TEXTS = (svg_text.Text, svg_text.TSpan)
+_PLAIN = frozenset(_TEXTS + (shapes.Line, shapes.Rect, shapes.Circle))
+"""The element kinds whose ``get_xml`` is svgwrite's plain one (after the points and path data above)."""
+
+
+def _by_svgwrite(el) -> str:
+    """An element svgwrite writes itself (the defs with the font's style sheet)."""
+    return _made_safe(ElementTree.tostring(el.get_xml(), encoding="unicode"))
+
+
 @functools.lru_cache(maxsize=16)
-def _defs(css: str) -> str:
-    """The ``<defs>`` holding the style sheet as CDATA (svgwrite's ``<style>``), made safe
-    (:func:`xml_safe`) and remembered: it embeds the font (~36 kB), the same for many sheets."""
-    return xml_safe(f'<defs><style type="text/css"><![CDATA[{css}]]></style></defs>' if css
-                    else '<defs><style type="text/css" /></defs>')
+def _made_safe(xml: str) -> str:
+    """:func:`xml_safe`, remembered: the style sheet embeds the font (~36 kB), the same for many sheets."""
+    return xml_safe(xml)
 
 
-def _document(root: dict[str, str], css: str, elements: list) -> str:
-    """The whole document: the ``<svg>`` with ``root``'s attributes, the style sheet's ``<defs>``, then
-    ``elements`` (as ``ElementTree.tostring(drawing.get_xml(), encoding="unicode")`` writes svgwrite's
-    drawing of the same)."""
+def _document(dwg: svgwrite.Drawing) -> str:
+    """The whole document, as ``ElementTree.tostring(dwg.get_xml(), encoding="unicode")`` writes it
+    (svgwrite's tostring() encodes to UTF-8 and decodes again: the same text)."""
+    held, dwg.elements = dwg.elements, []
+    try:
+        root = dwg.get_xml()                          # the root's attributes as svgwrite sets them
+    finally:
+        dwg.elements = held
     out: list[str] = []
-    _start("svg", root, out)
+    _start(root.tag, dict(root.attrib), out)
     out.append(">")
-    out.append(_defs(css))
-    for el in elements:
+    for el in held:
         _write(el, out)
     out.append("</svg>")
     return "".join(out)
