@@ -8,7 +8,7 @@ import math
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from drafting.layout.labels import _Segments
+from drafting.layout.segments import Segments
 
 
 def clip_len(a, b, left, top, right, bottom) -> float:
@@ -177,10 +177,10 @@ def test_the_pruned_search_picks_what_the_exhaustive_one_picks(cands, hw, hh, se
     clear = None if kin is None else _Clear(kin[0], [(*_element_bounds(g), g) for g in kin[1]], 0.4)
     want = exhaustive_best(cands, hw, hh, plot, placed, hard, segments, heavy_ok, clear)
 
-    class Gridded(_Segments):           # the grid used however few the segments are
+    class Gridded(Segments):           # the grid used however few the segments are
         __slots__ = ()
         DENSE = -1
-    for index in (_Segments(segments), Gridded(segments)):      # every segment tested, then by the grid
+    for index in (Segments(segments), Gridded(segments)):      # every segment tested, then by the grid
         got = _best_candidate(Listed(cands), hw, hh, plot, placed, hard, index.near(plot), heavy_ok, clear, index)
         if want is None:
             assert got is None
@@ -297,12 +297,12 @@ def test_an_arrow_label_crowded_by_a_collinear_arrow_is_set_off_by_a_leader_that
 def test_the_grid_finds_the_segments_around_a_point_that_the_scan_finds(segments, points, margin):
     """A dense drawing's segments around a label's anchor are found through its grid: the same indices, in
     the same order, as testing every segment."""
-    from drafting.layout.labels import _Segments
+    from drafting.layout.segments import Segments
 
-    class Gridded(_Segments):
+    class Gridded(Segments):
         __slots__ = ()
         DENSE = -1
-    scan, grid = _Segments(segments), Gridded(segments)
+    scan, grid = Segments(segments), Gridded(segments)
     assert grid.dense and not scan.dense
     for p in points:
         assert grid.around(p, margin) == scan.around(p, margin)

@@ -16,6 +16,7 @@ from typing import Callable, Sequence
 from ..render.paper import TITLE_BLOCK_MAX_WIDTH, Paper, Rect
 from ..render.scales import ratio_factor
 from .fills import Fill, arrangements, fill, min_width, quality
+from .flow import page_slot
 from .panel import Panel
 from .panels import SpacePanel
 
@@ -296,6 +297,13 @@ def text_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> Pag
             plan.text_slots.append(("text:1", Rect.from_edges(F.x + GUTTER, tb.top + GUTTER, tb.left - GUTTER,
                                                                F.bottom - GUTTER)))
     return plan
+
+
+def slots_of(pages: Sequence[PagePlan]) -> list[tuple[str, Rect]]:
+    """The text slots of ``pages`` worth setting text in (over 20 x 10 mm), each named by its page
+    (:func:`~drafting.layout.flow.page_slot`)."""
+    return [(page_slot(i, name), r) for i, pg in enumerate(pages) for name, r in pg.text_slots
+            if r.w > 20 and r.h > 10]
 
 
 def text_page_options(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> list[PagePlan]:

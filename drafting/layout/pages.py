@@ -24,13 +24,13 @@ from dataclasses import dataclass
 from typing import Callable, Sequence
 
 from ..render.errors import LayoutError
-from ..render.paper import Paper, Rect, Text, command_points
+from ..render.paper import Paper
 from ..render.scales import ratio_factor
-from .flow import TEXT_SIZES, FlowText, flow, flow_shrinking, layout_item, page_slot, slot_page
-from .critic.geometry import covered_area
+from .flow import TEXT_SIZES, FlowText, flow, flow_shrinking, slot_page
 from .fills import quality, smallest_fill
-from .items import Section, TooWide
-from .page_plans import PagePlan, TbHeight, diagram_page, text_page, text_page_options
+from .items import Section
+from .page_blanks import bare_pages
+from .page_plans import PagePlan, TbHeight, diagram_page, slots_of, text_page, text_page_options
 from .panel import Panel
 from .panels import SpacePanel, VectorPanel
 from .reading_order import reading_slots, steps_out_of_order
@@ -38,13 +38,6 @@ from .reading_order import reading_slots, steps_out_of_order
 COMFORTABLE_LETTERING = 3.0
 """Lettering below this is taken only when nothing else fits."""
 MAX_PAGES = 12
-MOST_BARE = 0.55
-"""A page of a document with more of its frame than this left blank, as planned, is *bare* (the critic's
-blank page is over half blank; the plan's measure, :func:`blank_shares`, counts text as the critic does
-but a panel across its whole width, and runs up to 0.1 higher on the gallery): of two documents of as
-many pages, the one with fewer bare pages is taken."""
-TEXT_MARGIN = 2.0
-"""The white each side of a block of text that reads as part of it (the critic's block margin), mm."""
 
 
 @dataclass
@@ -64,11 +57,6 @@ class Document:
         """Pages whose text slots the text never reached (room left blank)."""
         used = {slot_page(slot) for slot in self.text}
         return sum(1 for i, pg in enumerate(self.pages) if pg.text_slots and str(i) not in used)
-
-
-def slots_of(pages: Sequence[PagePlan]) -> list[tuple[str, Rect]]:
-    return [(page_slot(i, name), r) for i, pg in enumerate(pages) for name, r in pg.text_slots
-            if r.w > 20 and r.h > 10]
 
 
 def _flow(sections, pages, cache) -> tuple[list, float] | None:
@@ -207,7 +195,7 @@ def _several_pages(plans: "_GroupPlans", panels: list, sections: FlowText, cache
                     doc.quality() + (doc.size, -doc.empty_columns(), -m)
                 if best is not None and head == best[0][:2] and best[0][2] == 0 and rest <= best[0][3:]:
                     continue                # (no bare page could make it win: the best has none)
-                key = head + (-_bare_pages(paper, doc, sections, cache),) + rest
+                key = head + (-bare_pages(paper, doc, sections, cache),) + rest
                 if best is None or key > best[0]:
                     best = (key, doc)
     if best is None:
@@ -331,52 +319,6 @@ def _document(plans: _GroupPlans, groups, mode, sections, cache) -> Document | N
                 if g2 is not None and g2[1] >= got[1] - 1e-9:
                     pages, got = cand, g2
     return Document(pages, got[0], got[1])
-
-
-def _bare_pages(paper: Paper, doc: Document, sections: FlowText, cache) -> int:
-    """How many of ``doc``'s pages leave more than :data:`MOST_BARE` of the frame blank (see
-    :func:`blank_shares`)."""
-    return sum(1 for b in blank_shares(paper, doc, sections, cache) if b > MOST_BARE)
-
-
-def blank_shares(paper: Paper, doc: Document, sections: FlowText, cache) -> list[float]:
-    """The share of the frame each of ``doc``'s pages leaves blank, as planned: the title block covers
-    its rectangle; a panel its width from the top of its heading to the foot of its drawing (the room the
-    drawing needs at its rung, centred in what the heading leaves); an item of text its height across
-    its lines' width (:func:`_text_width`); the rest is blank."""
-    F = paper.frame
-    covered = [0.0] * doc.count
-    for i, pg in enumerate(doc.pages):
-        if pg.title_block is not None:
-            covered[i] += pg.title_block.w * pg.title_block.h
-        for p, r, rect in pg.panels:
-            got = p.need(r, rect.w)
-            h = rect.h if got is None else (rect.h + min(got[1], rect.h)) / 2
-            covered[i] += rect.w * h
-    if doc.text:
-        slots = dict(slots_of(doc.pages))
-        items = [item for group in sections.groups for item in group]
-        for item, slot in zip(items, doc.text):
-            r = slots[slot]
-            try:
-                covered[int(slot_page(slot))] += _text_cover(item, r.w, doc.size, cache)
-            except TooWide:             # (never placed so: the flow measured it)
-                continue
-    return [1.0 - c / (F.w * F.h) for c in covered]
-
-
-def _text_cover(item, width: float, size: float, cache) -> float:
-    """The area ``item`` covers set ``width`` wide at ``size`` as the critic measures a page: the union of
-    its lines' boxes (and rules) each grown by :data:`TEXT_MARGIN`, within its own height (the items of a
-    slot abut: the margins between them are counted once), remembered in ``cache``."""
-    key = ("text cover", item, round(width, 6), size)
-    if key not in cache:
-        placed = layout_item(item, width, size, cache)
-        m = TEXT_MARGIN
-        boxes = [(c.box if isinstance(c, Text) else Rect.bounding(command_points(c))).expanded(m)
-                 for c in placed.commands if isinstance(c, Text) or c.style == "rule"]
-        cache[key] = covered_area(boxes, Rect(-m, 0.0, width + 2 * m, placed.height))
-    return cache[key]
 
 
 def _check_blocks(paper, panels, sections, tb_height, cache) -> None:
