@@ -235,6 +235,8 @@ def _golden(f, a: float, b: float) -> tuple[float, float]:
     c, d = b - g * (b - a), a + g * (b - a)
     fc, fd = f(c), f(d)
     for _ in range(120):
+        if b - a <= 4 * math.ulp(max(abs(a), abs(b), 1.0)):
+            break                   # the bracket is a few ulps of the angle: no narrower one exists
         if fc < fd:
             b, d, fd = d, c, fc
             c = b - g * (b - a)
