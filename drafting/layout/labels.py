@@ -308,8 +308,7 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
         ri, bo = le + w, to + h
         if not (le >= pl and ri <= pr and to >= pt and bo <= pb):
             continue
-        if any(le < o_r and o_l < ri + gap and to < o_b and o_t < bo + gap
-               for o_l, o_t, o_r, o_b, gap in obstacles):
+        if _hits(obstacles, le, to, ri, bo):        # it overlaps a label or a symbol
             continue
         thin = thick = 0.0
         for x0, y0, x1, y1, a0, a1, dx, dy, heavy, length in (segs.meeting(le, to, ri, bo) if dense
@@ -331,6 +330,15 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
         return None
     x, y = centre_of(best_i)
     return best_total, (x, y), Rect(x - hw, y - hh, w, h)
+
+
+def _hits(obstacles: list[tuple], le: float, to: float, ri: float, bo: float) -> bool:
+    """Whether the box (le, to, ri, bo) overlaps one of ``obstacles`` (left, top, right + gap, bottom + gap,
+    gap) -- a loop, not any() over a generator: the search asks this of thousands of candidates."""
+    for o_l, o_t, o_r, o_b, gap in obstacles:
+        if le < o_r and o_l < ri + gap and to < o_b and o_t < bo + gap:
+            return True
+    return False
 
 
 _FAR = 15.0 + 1.0       # the farthest candidate distance (relaxed) and a margin
