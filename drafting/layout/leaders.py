@@ -69,8 +69,12 @@ LONG_LEADER = 15.0
 
 def clear_line(line: Line, boxes: list[Rect]) -> bool:
     """Whether ``line`` passes through none of ``boxes``."""
-    dx, dy = line.x2 - line.x1, line.y2 - line.y1
-    return not any(clip_fraction(line.x1, line.y1, dx, dy, o.left, o.top, o.right, o.bottom) > 0 for o in boxes)
+    x1, y1 = line.x1, line.y1
+    dx, dy = line.x2 - x1, line.y2 - y1
+    for o in boxes:                 # (a loop: the placer asks this of every candidate's leader)
+        if clip_fraction(x1, y1, dx, dy, o.left, o.top, o.right, o.bottom) > 0:
+            return False
+    return True
 
 
 def crosses_heavy(line: Line, segments) -> bool:
