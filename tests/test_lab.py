@@ -18,7 +18,8 @@ from drafting.study.study import Study
 
 from paths import ROOT
 SCENES = ["notes-velocity-example-1", "notes-velocity-example-4", "notes-acceleration-example-1",
-          "notes-static-force-sample", "gear-pair-20-40", "notes-front-end-loader"]
+          "notes-static-force-sample", "gear-pair-20-40", "notes-front-end-loader",
+          "inverse-position-slider-crank", "hydraulic-cylinder-boom"]
 
 
 def svg_texts(svg: str) -> list[str]:
@@ -162,3 +163,45 @@ def test_lab_bare_writes_the_problem_sheet_without_the_step_recipe(tmp_path, cap
         assert words in bare, words
     assert (tmp_path / "bare" / "notes-velocity-example-1-key.csv").read_text() == \
         (tmp_path / "full" / "notes-velocity-example-1-key.csv").read_text()
+
+
+def _owners_in(sheet, region: str) -> set[str]:
+    """The owners of the commands drawn inside a region of a sheet."""
+    from drafting.render.paper import command_points
+    r = sheet.regions[region]
+    return {c.name.split(":")[0] for c in sheet.commands
+            if any(r.contains_point(*p) for p in command_points(c))}
+
+
+def test_an_inverse_problem_asks_for_its_crank_angles_and_draws_the_frame_alone():
+    """The crank angles that put the block at 120 mm are the question: on the problem sheet they are
+    blanks and asked for (in Find, the results and the key), and its space diagram draws the frame alone --
+    the links drawn at the answer would give it away -- in the room the worked sheet's mechanism takes."""
+    study = Study(dimensioned(load_scene(ROOT / "gallery" / "inverse-position-slider-crank.toml"))).run()
+    lab = lab_for(study)
+    assert {"theta_1", "theta_1'"} <= {i.name for i in lab.items}
+    assert any("\u03b8_1" in line for line in lab.given if line.startswith("Find:"))
+    space = next(sh for sh in lab.problem if "viewport:space" in sh.regions)
+    owners = _owners_in(space, "viewport:space")
+    assert {"pivot O1", "guide C"} <= owners
+    assert not owners & {"link 1", "link 2", "block 3", "joint B", "crank angle", "inverse crank circle"}
+    worked = next(sh for sh in lab.worked if "viewport:space" in sh.regions)
+    w_bb = _bounds(worked, "viewport:space", lambda o: o.startswith(("link", "block", "pivot", "guide")))
+    p_box = space.regions["viewport:space"]
+    assert p_box.w >= w_bb[0] and p_box.h >= w_bb[1]        # room for what the student draws
+
+
+def _bounds(sheet, region, keep) -> tuple[float, float]:
+    from drafting.render.paper import Rect, command_points
+    r = sheet.regions[region]
+    pts = [p for c in sheet.commands if keep(c.name.split(":")[0]) for p in command_points(c) if r.contains_point(*p)]
+    bb = Rect.bounding(pts)
+    return bb.w, bb.h
+
+
+def test_a_driving_slider_problem_asks_for_the_crank_rates():
+    """The boom's crank turns as the cylinder drives it: omega_1 and alpha_1 are read off the polygons,
+    so the problem sheet asks for them (the worked sheet states them in its numbering step)."""
+    study = Study(dimensioned(load_scene(ROOT / "gallery" / "hydraulic-cylinder-boom.toml"))).run()
+    lab = lab_for(study)
+    assert {"theta_1", "omega_1", "alpha_1"} <= {i.name for i in lab.items}

@@ -37,7 +37,9 @@ from ..render.errors import LayoutError
 from ..layout.sheet import ResultRow, Sheet, SheetInfo, compose_sheets, sheet_date
 from ..families.registry import family
 from ..study.study import Study
+from ..layout.panel import RoomFigure
 from ..layout.panels import held_to
+from ..render.drawing import is_panel_entity
 
 BLANK = "________"
 """What a problem sheet writes for a value the student finds."""
@@ -137,7 +139,7 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "", bare: bo
 def _stated(study: Study) -> set[str]:
     """The values the problem sheet prints as data, as it prints them ("20.00 deg")."""
     from ..layout.formats import value_text
-    _, shown = problem_construction(study.construction)
+    _, shown = problem_construction(study.construction, unknown=unknowns(study))
     units = study.scene.units
     out = set()
     for v in shown:
@@ -159,19 +161,43 @@ def _given_like(step: Step) -> bool:
     return bool(step.entities) and all(e.diagram.kind == "space" and e.role in _POSITION_ROLES for e in step.entities)
 
 
-def problem_construction(c: Construction, bare: bool = False) -> tuple[Construction, set]:
+def unknowns(study: Study) -> frozenset[tuple[str, float]]:
+    """The values, as (kind, magnitude), a problem asks for that a worked sheet states as the data of its
+    space diagram: an inverse position problem's crank angles (every solution: :mod:`drafting.families.
+    linkage.inverse`) and a driving slider's crank rates (omega and alpha, read off the polygons)."""
+    s = study.scene
+    out: set[tuple[str, float]] = set()
+    inv = getattr(s, "inverse", None)
+    if inv is not None:
+        out.update(("angle", float(t)) for t in inv.solutions)
+    dc = getattr(s, "driven", None)
+    if dc is not None:
+        out.update({("angular velocity", abs(dc.omega)), ("angular acceleration", abs(dc.alpha))})
+    return frozenset(out)
+
+
+def _asked(v, unknown) -> bool:
+    return v.value is not None and (v.kind, abs(v.value)) in unknown
+
+
+def problem_construction(c: Construction, bare: bool = False,
+                         unknown: frozenset[tuple[str, float]] = frozenset()) -> tuple[Construction, set]:
     """The construction as a problem sheet shows it, and the values it may print: the space diagram
     keeps what the problem states; a sense of turning in a step that works something out is blanked (the
     crank's own is in the given data).  ``bare``: every step keeps its entities but not its words, equation or table
-    (the problem without the recipe: its data are in the Given list)."""
+    (the problem without the recipe: its data are in the Given list).  ``unknown``: values the problem
+    asks for (:func:`unknowns`) -- never printed; once a step states an unknown crank angle the space
+    diagram keeps nothing more (the frame alone: the links drawn at the answer would give it away)."""
     steps = []
     shown = set()
+    posed = False               # a step has stated an unknown crank angle: the pose drawn from here on is an answer
     for st in c.steps:
         given = _given_like(st)
+        posed = posed or any(v.kind == "angle" and _asked(v, unknown) for _, v in st.values)
         if given:
-            shown.update(v for _, v in st.values)
+            shown.update(v for _, v in st.values if not _asked(v, unknown))
         ents = tuple(e for e in st.entities if e.diagram.kind != "space" or
-                     (e.role in SHOWN_ROLES and (given or e.role is not Role.DIMENSION)))
+                     (not posed and e.role in SHOWN_ROLES and (given or e.role is not Role.DIMENSION)))
         words = st.words
         if not given:           # a sense of turning found on the way (the Coriolis rule names omega_3's) is an answer
             words = _SENSE_WORDS.sub(BLANK, words)
@@ -201,16 +227,28 @@ def blank_panel(panel, scale=None):
 def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[KeyItem], date: str,
                    suffix: str = "", bare: bool = False) -> tuple[Sheet, ...]:
     s = study.scene
-    c, shown = problem_construction(study.construction, bare)
+    c, shown = problem_construction(study.construction, bare, unknowns(study))
     rows = [ResultRow(i.shown, ANSWER_LINE, "", "") for i in items]
     info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
 
+    posed = any(kind == "angle" for kind, _ in unknowns(study))
+
+    def room(p):
+        """An inverse problem's space diagram: the frame where the worked sheet draws it, in the room of
+        the whole mechanism (drawn at the angle to be found)."""
+        if not posed or p.key != "space":
+            return p
+        p = copy.copy(p)
+        whole = [e for e in study.construction.entities() if e.diagram.key == p.key and not is_panel_entity(e)]
+        p.figure = RoomFigure(p.figure.entities, whole, p.figure.text)
+        return p
+
     def held(panels):
-        return [(held_to(p, scales["space"].units_per_mm) if "space" in scales else p) if p.key == "space"
+        return [room(held_to(p, scales["space"].units_per_mm) if "space" in scales else p) if p.key == "space"
                 else blank_panel(p, scales.get(p.key)) for p in panels]
 
     def free(panels):
-        return [p if p.key == "space" else blank_panel(p) for p in panels]
+        return [room(p) if p.key == "space" else blank_panel(p) for p in panels]
     try:
         return compose_sheets(c, info, rows, values=_hook(shown), panel_hook=held, given=given)
     except LayoutError:                       # the worked sheet's scales do not fit beside the givens

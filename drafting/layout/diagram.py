@@ -27,8 +27,11 @@ def model_points(entities: Sequence[Entity]) -> list[Vec]:
     return pts
 
 
-def draw_entities(entities: Sequence[Entity], k: float, *, text: TextFn | None = None) -> Drawing:
-    """Every entity of one diagram drawn at ``k`` paper mm per model unit, model origin at (0, 0).
+def draw_entities(entities: Sequence[Entity], k: float, *, text: TextFn | None = None,
+                  among: Sequence[Entity] | None = None) -> Drawing:
+    """Every entity of one diagram drawn at ``k`` paper mm per model unit, model origin at (0, 0); laid out
+    (a guide's length, the side a hatch takes) among the points of ``among`` when given (a problem
+    sheet's frame among the mechanism the student is to draw), else of ``entities``.
 
     Raises :class:`DrawingError` for an entity without a drawer (or a panel entity such as a chart)."""
     entries = []
@@ -40,9 +43,10 @@ def draw_entities(entities: Sequence[Entity], k: float, *, text: TextFn | None =
         entries.append(entry)
     T = Transform(k)
     d = Drawing()
-    pts = model_points(entities)
+    around = entities if among is None else among
+    pts = model_points(around)
     paper_pts = T.many(pts)
-    paper_pts += T.many(trial_crossings(entities, pts))
+    paper_pts += T.many(trial_crossings(around, pts))
     pivots, bars, blocks = diagram_facts(entities, T)
     centroid = (sum(p[0] for p in paper_pts) / len(paper_pts), sum(p[1] for p in paper_pts) / len(paper_pts)) \
         if paper_pts else (0.0, 0.0)

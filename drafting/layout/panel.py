@@ -119,6 +119,31 @@ class Figure:
         return self._boxes[k]
 
 
+class RoomFigure(Figure):
+    """A figure that draws some of its entities in the room of all of them: a problem sheet's space
+    diagram of an inverse position problem draws the frame alone, where the worked sheet draws the whole
+    mechanism at the crank angle the student is to find -- at the same place, with the room to draw the
+    rest.  Its extent, legibility and box are the whole's; its drawing is ``shown``'s."""
+
+    def __init__(self, shown: Sequence[Entity], room: Sequence[Entity], text: TextFn | None = None) -> None:
+        super().__init__(room, text)
+        self.shown = tuple(shown)
+
+    def drawing(self, k: float) -> Drawing:
+        d = self._draws.get(k)
+        if d is None:
+            d = self._draws[k] = draw_entities(self.shown, k, text=self.text, among=self.entities)
+            self.draws += 1
+        return d
+
+    def bbox(self, k: float) -> Rect | None:
+        if k not in self._boxes:
+            boxes = [b for b in (draw_entities(self.entities, k, text=self.text).bbox(), self.drawing(k).bbox())
+                     if b is not None]
+            self._boxes[k] = boxes[0].union(boxes[-1]) if boxes else None
+        return self._boxes[k]
+
+
 class Panel:
     """One diagram block: a ladder of scales (rungs, smallest drawing first) and what each needs."""
 

@@ -74,8 +74,8 @@ class SpacePanel(Panel):
         LABEL_GAP_MM apart (a crowd of labels, as in a diagram of instant centres, needs room to be read),
         the second only as long as the diagram stays within LABEL_ROOM_MAX_MM."""
         size = self.figure.size
-        if size <= 0:
-            return self.ratios.index((1, 1))
+        if size <= 0:               # a single point (a problem's frame): the rung nearest full size
+            return min(range(len(self.ratios)), key=lambda i: abs(math.log(ratio_factor(self.ratios[i]))))
         gap = self.figure.label_gap
         first = len(self.ratios) - 1
         for i in range(len(self.ratios)):
