@@ -31,7 +31,9 @@ _PI_1 = 6.283185310661793 / 2.0
 _PI_2 = -3.4822062768002926e-09 / 2.0
 _PI_3 = -1.401373759235972e-18 / 2.0
 _INV_FOUR_PI = 0.07957747154594767
-_NO_REDUCTION = 6.28  # |th| <= this: k = rint(th / 4pi) is certainly 0, reduction is the identity
+# |th| <= this (2 pi rounded, the end of a sweep np.linspace(0, 2 pi, n)): th / 4pi rounds to at most 0.5
+# (exactly 0.5 at the end), so k = rint(th / 4pi) is 0 (half to even) and the reduction is the identity
+_NO_REDUCTION = 2.0 * math.pi
 _FAST_TRIG_LIMIT = 1.0e6  # |theta| up to this uses the fast path (|k| < 2**17, products exact)
 
 
