@@ -57,7 +57,11 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
         buffers pays no page faults for fresh memory (see :func:`~.shared_steps.four_bar_buffers`).
     """
     k = four_bar_links(crank_pivot, rocker_pivot, crank, coupler, rocker, branch)
-    th, w1, a1, shape = angles(theta1, omega1, alpha1)
+    if (type(theta1) is np.ndarray and theta1.dtype == np.float64 and theta1.ndim == 1 and theta1.flags.c_contiguous
+            and type(omega1) is float and type(alpha1) is float):
+        th, w1, a1, shape = theta1, omega1, alpha1, theta1.shape  # what angles() returns for these, sooner
+    else:
+        th, w1, a1, shape = angles(theta1, omega1, alpha1)
     n = th.size
     S, T, K, tol = k.S, k.T, k.K, k.tol
     inv_2r2r3, half_sumsq = k.inv_2r2r3, k.half_sumsq
@@ -71,7 +75,7 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
             # p = (px, py) and q = (qx, qy) in XY = [[px, qx], [py, qy]], so that one atan2 call over
             # [px, qx], [py, qy] gives both link angles; w = O2 - B first in the places of q
             (px, wx), (py, wy) = XY
-            (Bx, By, Cx, Cy, t2, t3, om2, om3, VBx, VBy, VCx, VCy,
+            (Bx, By, Cx, Cy, _t2, _t3, om2, om3, VBx, VBy, VCx, VCy,
              al2, al3, ABx, ABy, ACx, ACy, cond) = (res[name][i:j] for name in FOURBAR_FIELDS)
             asm = asm_all[i:j]
             crank_motion(th[i:j], k.r1, k.o1x, k.o1y, chunk_of(w1, i, j), chunk_of(a1, i, j), c, s, t, u,
@@ -110,7 +114,6 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
             # q = C - O2 = p - w  (into wx, wy)
             np.subtract(px, wx, out=wx)
             np.subtract(py, wy, out=wy)
-            qx, qy = wx, wy
             # theta2, theta3 in one call over [p, q] (scratch: the first eight rows, now free)
             atan2_into(XY[1], XY[0], block[_THETA, i:j], sc[0:2], sc[2:4], sc[4:6], sc[6:8], M[0], M[1])
             # -1 / cross(p, q) = -2 branch / sqrt(P), NaN where the sine is below SINE_TOL
@@ -141,4 +144,6 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
             np.negative(ACx, out=ACx)
             products(ACy, tmp, (al3, wx), (-1, be, wy))
 
+    if shape == (n,):
+        return FourBarState(assembles=asm_all, **res)
     return FourBarState(assembles=asm_all.reshape(shape), **{name: res[name].reshape(shape) for name in FOURBAR_FIELDS})
