@@ -145,5 +145,5 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
             products(ACy, tmp, (al3, wx), (-1, be, wy))
 
     if shape == (n,):
-        return FourBarState(assembles=asm_all, **res)
+        return FourBarState(assembles=asm_all.view(), **res)  # views: freezing them leaves the buffers writable
     return FourBarState(assembles=asm_all.reshape(shape), **{name: res[name].reshape(shape) for name in FOURBAR_FIELDS})
