@@ -204,6 +204,18 @@ def test_four_bar_into_the_callers_buffers():
             four_bar(th, 10.0, 20.0, out=bad, **kw)
 
 
+def test_four_bar_reuses_the_callers_buffers():
+    """The same buffers call after call: the result's arrays are read-only views, the buffers stay writable."""
+    kw = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(0.1, 0.02), crank=0.03, coupler=0.09, rocker=0.07, branch=1)
+    th = np.linspace(0.0, 2 * np.pi, 101)
+    block, asm = sk.four_bar_buffers(th.size)
+    first = four_bar(th, 10.0, 20.0, out=(block, asm), **kw)
+    assert not first.assembles.flags.writeable and not first.Cx.flags.writeable
+    assert block.flags.writeable and asm.flags.writeable
+    again = four_bar(th + 0.1, 10.0, 20.0, out=(block, asm), **kw)
+    np.testing.assert_array_equal(again.Cx, four_bar(th + 0.1, 10.0, 20.0, **kw).Cx)
+
+
 def test_chain_sweep_is_the_chain_solution_in_chunks(monkeypatch):
     """chain_sweep gives chain_solution's numbers bit for bit, however the angles are chunked."""
     th = np.linspace(-7.0, 7.0, 1001)

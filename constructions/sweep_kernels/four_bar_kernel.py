@@ -4,15 +4,44 @@ sweep's own trigonometry and, if the caller keeps them, the caller's output buff
 
 from __future__ import annotations
 
+import threading
+
 import numpy as np
 
 from ..analytic.inputs import angles, four_bar_links
 from ..analytic.states import FOURBAR_FIELDS, FourBarState
-from .shared_steps import (chunk_of, chunks, crank_motion, given_outputs, nan_at_gaps, nan_where_singular, products,
+from . import shared_steps
+from .shared_steps import (chunk_of, crank_motion, given_block, nan_at_gaps, nan_where_singular, products,
                            three_way)
-from .trig import atan2
+from .trig import atan2_into
 
 __all__ = ["four_bar"]
+
+_THETA = slice(FOURBAR_FIELDS.index("theta2"), FOURBAR_FIELDS.index("theta2") + 2)
+assert FOURBAR_FIELDS[_THETA] == ("theta2", "theta3")
+
+_held = threading.local()
+
+
+def _chunks(n: int):
+    """Yield ``(i, j, scratch, flags, XY, M)`` for each chunk [i, j) of ``n`` angles (chunks of
+    :data:`~.shared_steps.CHUNK`): twelve float scratch rows (a ``(12, m)`` array, so that neighbouring
+    rows make the contiguous ``(2, m)`` scratch of the one atan2 call over both links), a bool row, p and q
+    as ``(2, 2, m)`` and a ``(2, 2, m)`` bool.  The arrays are this thread's, kept from call to call for
+    the last chunk length asked for; the last, short chunk gets views of them."""
+    chunk = shared_steps.CHUNK
+    m = min(chunk, max(n, 1))
+    held = getattr(_held, "arrays", None)
+    if held is None or held[0].shape[1] != m:
+        held = _held.arrays = (np.empty((12, m)), np.empty(m, dtype=bool), np.empty((2, 2, m)),
+                               np.empty((2, 2, m), dtype=bool))
+    sc, flags, XY, M = held
+    for i in range(0, n, chunk):
+        j = min(i + chunk, n)
+        if j - i != m:
+            m = j - i
+            sc, flags, XY, M = sc[:, :m], flags[:m], XY[..., :m], M[..., :m]
+        yield i, j, sc, flags, XY, M
 
 
 def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, coupler, rocker, branch,
@@ -28,20 +57,28 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
         buffers pays no page faults for fresh memory (see :func:`~.shared_steps.four_bar_buffers`).
     """
     k = four_bar_links(crank_pivot, rocker_pivot, crank, coupler, rocker, branch)
-    th, w1, a1, shape = angles(theta1, omega1, alpha1)
+    if (type(theta1) is np.ndarray and theta1.dtype == np.float64 and theta1.ndim == 1 and theta1.flags.c_contiguous
+            and type(omega1) is float and type(alpha1) is float):
+        th, w1, a1, shape = theta1, omega1, alpha1, theta1.shape  # what angles() returns for these, sooner
+    else:
+        th, w1, a1, shape = angles(theta1, omega1, alpha1)
     n = th.size
     S, T, K, tol = k.S, k.T, k.K, k.tol
     inv_2r2r3, half_sumsq = k.inv_2r2r3, k.half_sumsq
     r2sq, r3sq = k.r2 * k.r2, k.r3 * k.r3
-    res, asm_all = given_outputs(out, FOURBAR_FIELDS, n)
+    block, asm_all = given_block(out, FOURBAR_FIELDS, n)
+    res = {name: block[row] for row, name in enumerate(FOURBAR_FIELDS)}
 
     with np.errstate(all="ignore"):  # NaN/inf handled explicitly below
-        for i, j, scratch, bt in chunks(n, 12):
-            c, s, wx, wy, d2, d, f1, f2, tmp, inv, al, be = scratch
-            (Bx, By, Cx, Cy, t2, t3, om2, om3, VBx, VBy, VCx, VCy,
+        for i, j, sc, bt, XY, M in _chunks(n):
+            c, s, t, u, d, f2, tmp, inv, d2, f1, al, be = sc
+            # p = (px, py) and q = (qx, qy) in XY = [[px, qx], [py, qy]], so that one atan2 call over
+            # [px, qx], [py, qy] gives both link angles; w = O2 - B first in the places of q
+            (px, wx), (py, wy) = XY
+            (Bx, By, Cx, Cy, _t2, _t3, om2, om3, VBx, VBy, VCx, VCy,
              al2, al3, ABx, ABy, ACx, ACy, cond) = (res[name][i:j] for name in FOURBAR_FIELDS)
             asm = asm_all[i:j]
-            crank_motion(th[i:j], k.r1, k.o1x, k.o1y, chunk_of(w1, i, j), chunk_of(a1, i, j), c, s, wx, wy,
+            crank_motion(th[i:j], k.r1, k.o1x, k.o1y, chunk_of(w1, i, j), chunk_of(a1, i, j), c, s, t, u,
                          Bx, By, VBx, VBy, ABx, ABy)
             # w = O2 - B, d
             np.subtract(k.o2x, Bx, out=wx)
@@ -70,22 +107,22 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
             np.multiply(f1, inv, out=be)
             if k.branch < 0:
                 np.negative(be, out=be)
-            products(f2, tmp, (al, wx), (-1, be, wy))  # f2 = px
-            products(d, tmp, (al, wy), (1, be, wx))  # d = py (d no longer needed)
-            np.add(Bx, f2, out=Cx)
-            np.add(By, d, out=Cy)
-            atan2(d, f2, t2, c, s, tmp, inv, al, bt)
+            products(px, tmp, (al, wx), (-1, be, wy))
+            products(py, tmp, (al, wy), (1, be, wx))
+            np.add(Bx, px, out=Cx)
+            np.add(By, py, out=Cy)
             # q = C - O2 = p - w  (into wx, wy)
-            np.subtract(f2, wx, out=wx)
-            np.subtract(d, wy, out=wy)
-            atan2(wy, wx, t3, c, s, tmp, inv, al, bt)
+            np.subtract(px, wx, out=wx)
+            np.subtract(py, wy, out=wy)
+            # theta2, theta3 in one call over [p, q] (scratch: the first eight rows, now free)
+            atan2_into(XY[1], XY[0], block[_THETA, i:j], sc[0:2], sc[2:4], sc[4:6], sc[6:8], M[0], M[1])
             # -1 / cross(p, q) = -2 branch / sqrt(P), NaN where the sine is below SINE_TOL
             np.divide(-2.0 * k.branch, f1, out=inv)
             nan_where_singular(inv, cond, bt)
             # omega2 = -(V_B . q)/cross(p,q);  omega3 = -(V_B . p)/cross(p,q)
             products(om2, tmp, (VBx, wx), (1, VBy, wy))
             om2 *= inv
-            products(om3, tmp, (VBx, f2), (1, VBy, d))
+            products(om3, tmp, (VBx, px), (1, VBy, py))
             om3 *= inv
             # V_C = omega3 k x q
             np.multiply(om3, wy, out=VCx)
@@ -100,11 +137,13 @@ def four_bar(theta1, omega1, alpha1=0.0, *, crank_pivot, rocker_pivot, crank, co
             products(al2, tmp, (ABx, wx), (1, ABy, wy), (-1, al, c), (1, be, r3sq))
             al2 *= inv
             # alpha3 = -(R . p)/cross(p, q),  R . p = A_B . p - omega2^2 coupler^2 + omega3^2 (p . q)
-            products(al3, tmp, (ABx, f2), (1, ABy, d), (-1, al, r2sq), (1, be, c))
+            products(al3, tmp, (ABx, px), (1, ABy, py), (-1, al, r2sq), (1, be, c))
             al3 *= inv
             # A_C = alpha3 k x q - omega3^2 q = (-alpha3 q_y - omega3^2 q_x, alpha3 q_x - omega3^2 q_y)
             products(ACx, tmp, (al3, wy), (1, be, wx))
             np.negative(ACx, out=ACx)
             products(ACy, tmp, (al3, wx), (-1, be, wy))
 
+    if shape == (n,):
+        return FourBarState(assembles=asm_all.view(), **res)  # views: freezing them leaves the buffers writable
     return FourBarState(assembles=asm_all.reshape(shape), **{name: res[name].reshape(shape) for name in FOURBAR_FIELDS})

@@ -14,7 +14,7 @@ from ..analytic.parts import SINE_TOL
 from ..analytic.states import FOURBAR_FIELDS
 from .trig import sincos
 
-__all__ = ["CHUNK", "chunk_of", "chunks", "crank_motion", "four_bar_buffers", "given_outputs", "nan_at_gaps",
+__all__ = ["CHUNK", "chunk_of", "chunks", "crank_motion", "four_bar_buffers", "given_block", "given_outputs", "nan_at_gaps",
            "nan_where_singular", "outputs", "products", "three_way"]
 
 #: Number of crank angles processed per chunk (tuned on a Xeon with 2 MB of L2 per core;
@@ -31,10 +31,11 @@ def outputs(names, n):
     return {name: block[k] for k, name in enumerate(names)}
 
 
-def given_outputs(given, names, n):
-    """The caller's buffers (``(block, assembles)``, checked) as the fields' views, or fresh ones."""
+def given_block(given, names, n):
+    """The caller's buffers (``(block, assembles)``, checked), or a fresh block (a row per field, see
+    :func:`outputs`) and assembles."""
     if given is None:
-        return outputs(names, n), np.empty(n, dtype=bool)
+        return np.empty((len(names), n)), np.empty(n, dtype=bool)
     try:
         block, asm = given
     except (TypeError, ValueError):
@@ -44,6 +45,12 @@ def given_outputs(given, names, n):
         raise ValueError(f"out[0] must be a writable C-contiguous float64 array of shape ({len(names)}, {n})")
     if not (isinstance(asm, np.ndarray) and asm.dtype == np.bool_ and asm.shape == (n,) and asm.flags.writeable):
         raise ValueError(f"out[1] must be a writable bool array of shape ({n},)")
+    return block, asm
+
+
+def given_outputs(given, names, n):
+    """The caller's buffers (``(block, assembles)``, checked) as the fields' views, or fresh ones."""
+    block, asm = given_block(given, names, n)
     return {name: block[k] for k, name in enumerate(names)}, asm
 
 

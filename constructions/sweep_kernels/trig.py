@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 
-__all__ = ["atan2", "sincos"]
+__all__ = ["atan2", "atan2_into", "sincos"]
 
 # pi split into three parts for Cody-Waite argument reduction (half of a 2 pi split derived from
 # 60+ digits of pi with ``decimal``): _PI_1 and _PI_2 carry 30 significant bits each, so k*_PI_1 and
@@ -31,7 +31,9 @@ _PI_1 = 6.283185310661793 / 2.0
 _PI_2 = -3.4822062768002926e-09 / 2.0
 _PI_3 = -1.401373759235972e-18 / 2.0
 _INV_FOUR_PI = 0.07957747154594767
-_NO_REDUCTION = 6.28  # |th| <= this: k = rint(th / 4pi) is certainly 0, reduction is the identity
+# |th| <= this (2 pi rounded, the end of a sweep np.linspace(0, 2 pi, n)): th / 4pi rounds to at most 0.5
+# (exactly 0.5 at the end), so k = rint(th / 4pi) is 0 (half to even) and the reduction is the identity
+_NO_REDUCTION = 2.0 * math.pi
 _FAST_TRIG_LIMIT = 1.0e6  # |theta| up to this uses the fast path (|k| < 2**17, products exact)
 
 
@@ -97,7 +99,14 @@ _HALF_PI = math.pi / 2
 
 
 def atan2(y, x, out, a, b, c, d, e, m) -> None:
-    """out = atan2(y, x) in [-pi, pi] for 1-D arrays; a .. e (float) and m (bool) are scratch.
+    """out = atan2(y, x) in [-pi, pi] for arrays of one shape; a .. e (float) and m (bool) are scratch
+    (d is not used: see :func:`atan2_into`, which this calls)."""
+    atan2_into(y, x, out, a, b, c, e, m, np.empty(m.shape, dtype=bool))
+
+
+def atan2_into(y, x, out, a, b, c, e, m, swap) -> None:
+    """out = atan2(y, x) in [-pi, pi] for arrays of one shape (any strides); a, b, c, e (float) and m,
+    swap (bool) are scratch.
 
     numpy's arctan2 is a scalar libm loop on CPUs without AVX-512 (~40 ns per element on the AMD
     EPYC of these machines, two of them a third of the four-bar's time); this is ~40 vector passes.
@@ -110,36 +119,34 @@ def atan2(y, x, out, a, b, c, d, e, m) -> None:
     """
     np.abs(x, out=a)
     np.abs(y, out=b)
+    np.less(a, b, out=swap)  # |y| > |x|
     np.minimum(a, b, out=c)
-    np.maximum(a, b, out=d)
-    c /= d  # z
-    a -= b  # a < 0 where |y| > |x|
+    np.maximum(a, b, out=a)
+    c /= a  # z
     np.greater(c, 0.66, out=m)
-    np.add(c, 1.0, out=d)
+    np.add(c, 1.0, out=a)
     np.subtract(c, 1.0, out=b)
-    b /= d
+    b /= a
     np.copyto(c, b, where=m)  # z, now in [-0.205, 0.66]
-    np.multiply(m, _QUARTER_PI, out=out)  # pi/4 where reduced
-    np.multiply(c, c, out=d)  # w = z^2
+    np.multiply(c, c, out=a)  # w = z^2
     p0, p1, p2, p3, p4 = _ATAN_P
-    np.multiply(d, p0, out=b)
+    np.multiply(a, p0, out=b)
     b += p1
     for k in (p2, p3, p4):
-        b *= d
+        b *= a
         b += k
     q0, q1, q2, q3, q4 = _ATAN_Q
-    np.add(d, q0, out=e)
+    np.add(a, q0, out=e)
     for k in (q1, q2, q3, q4):
-        e *= d
+        e *= a
         e += k
-    b *= d
+    b *= a
     b /= e
     b *= c
-    b += c  # atan(z)
-    out += b
-    np.less(a, 0.0, out=m)
+    np.add(b, c, out=out)  # atan(z)
+    np.add(out, _QUARTER_PI, out=out, where=m)  # + pi/4 where reduced
     np.subtract(_HALF_PI, out, out=b)
-    np.copyto(out, b, where=m)
+    np.copyto(out, b, where=swap)
     np.less(x, 0.0, out=m)
     np.subtract(math.pi, out, out=b)
     np.copyto(out, b, where=m)
