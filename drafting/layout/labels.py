@@ -2,7 +2,8 @@
 
 ``place_labels`` searches candidate positions around each label's anchor and scores them by how much
 line they would hide and how well they sit in the gap between the lines at the anchor.  Only the lines,
-symbols and labels in the neighbourhood a label's candidates can reach are tested against them.
+symbols and labels in the neighbourhood a label's candidates can reach are tested against them (a dense
+drawing's lines through the grid of :mod:`drafting.layout.segments`).
 """
 
 from __future__ import annotations

@@ -1,7 +1,10 @@
 """Leaders: the thin line that ties a label to what it names when the label cannot sit beside it -- a
 short arrow's (always); an arrow's, a trial line's or a point's set off 2.5-8 mm (where the leader runs
 through no other label or mark and across no other heavy line, and makes the label clearly its entity's);
-a note's or a dimension's set off its point (whatever it crosses: the text must be read where it was put).
+one set 8-15 mm off where such a leader is clear (:func:`far_leader`, :func:`far_test`); in a crowded
+polygon, as the last resort before an ambiguous place, a leader of up to 15 mm that crosses at most two
+other heavy lines, each steeply (:func:`crossings_of`); a note's or a dimension's set off its point
+(whatever it crosses: the text must be read where it was put).
 
 The label placer (:mod:`drafting.layout.labels`) asks here whether a candidate place would get a leader
 and whether that leader is clear; the leaders are drawn under every label's white ground.
