@@ -111,3 +111,13 @@ def test_text_that_reaches_the_room_under_the_space_diagram_is_set_there_first()
     region = {c.name: c.region for c in sheets[0].commands if getattr(c, "name", "").startswith("step ")}
     first = {n: region[f"step {n} number"] for n in (1, 5)}
     assert first[1] == "text:1" and first[5] == "text:0", first              # steps 1-4 under the space diagram, 5 on in the column
+
+
+def test_a_solution_s_prime_follows_its_subscript_at_full_size():
+    """theta_1' is the second solution theta_1-prime: a digit carries no prime, so the prime is set after
+    the subscript at full size (a point's prime in a subscript, V_B', stays in it)."""
+    from drafting.render.style import rich
+    got = rich(display_name("theta_1'"), 3.5)
+    assert [(s.text, s.shift > 0) for s in got] == [("\u03b8", False), ("1", True), ("\u2032", False)]
+    assert got[2].size == 3.5
+    assert [(s.text, s.shift > 0) for s in rich("V_B'", 3.5)] == [("V", False), ("B'", True)]

@@ -297,6 +297,9 @@ _PAIR = re.compile(r"([A-Za-z\u0370-\u03ff])([0-9]*)")
 "O2G2", "omega2" ... as subscripts ("O4I" -> O with 4 below, then I), and a prime as a prime (b' ->
 b\u2032, C'' -> C\u2033); words without digits or primes ("D'Alembert", "Kennedy's") stay as written."""
 _PRIMES = {"'": "\u2032", "''": "\u2033"}
+_NUMBER_PRIMED = re.compile(r"^[0-9]+'{1,2}$")
+"""An unbraced subscript of digits with one or two primes after it (theta_1', the second solution): a
+digit carries no prime, so the primes are the symbol's, set at full size after the subscript."""
 
 
 def _strip(group: str | None) -> str:
@@ -332,7 +335,12 @@ def rich(markup: str, size: float, *, pivot_digits: bool = False, italic_symbols
     for m in _TOKEN.finditer(markup):
         if m.start() > pos:
             spans.append(Span(markup[pos:m.start()], size))
-        spans.extend(_symbol(m["base"], _strip(m["sub"]), _strip(m["sup"]), size, italic_symbols))
+        sub, primes = _strip(m["sub"]), ""
+        if not m["sup"] and _NUMBER_PRIMED.match(m["sub"]):     # theta_1': the symbol's prime, not the 1's
+            sub, primes = sub.rstrip("'"), _PRIMES.get(sub[len(sub.rstrip("'")):], "")
+        spans.extend(_symbol(m["base"], sub, _strip(m["sup"]), size, italic_symbols))
+        if primes:
+            spans.append(Span(primes, size, 0.0, italic_symbols))
         pos = m.end()
     if pos < len(markup):
         spans.append(Span(markup[pos:], size))
