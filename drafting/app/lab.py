@@ -227,11 +227,11 @@ def blank_panel(panel, scale=None):
 def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[KeyItem], date: str,
                    suffix: str = "", bare: bool = False) -> tuple[Sheet, ...]:
     s = study.scene
-    c, shown = problem_construction(study.construction, bare, unknowns(study))
+    unknown = unknowns(study)
+    c, shown = problem_construction(study.construction, bare, unknown)
     rows = [ResultRow(i.shown, ANSWER_LINE, "", "") for i in items]
     info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
-
-    posed = any(kind == "angle" for kind, _ in unknowns(study))
+    posed = any(kind == "angle" for kind, _ in unknown)         # the mechanism's pose is asked for
 
     def room(p):
         """An inverse problem's space diagram: the frame where the worked sheet draws it, in the room of

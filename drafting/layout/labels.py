@@ -16,8 +16,8 @@ from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
 from .label_kin import NUMBER, Kin, clip_fraction
 from .segments import Segments
-from .leaders import (LONG_LEADER, LONGEST_LEADER, clear_line, crosses_heavy, far_leader, far_test, leader_of, led,
-                      led_leader, led_test, short, sparing)
+from .leaders import (LONG_LEADER, LONGEST_LEADER, far_leader, far_test, leader_of, led, led_leader, led_test,
+                      runs_clear, short, sparing)
 
 LABEL_PAD = 0.4         # white margin of a label's background
 
@@ -220,7 +220,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
             own = leader_of(req, box)
         if own is None:             # set far off what it names: tied by a long leader where one is clear
             far = far_leader(req, box)
-            if far is not None and _clear_leader(far, box, placed, d):
+            if far is not None and runs_clear(far, [o for o in placed if o is not box], d):
                 own = far
         if own is not None:
             committed.append(own)
@@ -236,17 +236,9 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         leader = own if own is not None else leader_of(req, box)
         if leader is None:
             continue
-        if by_leader or short(req) or req.kind == "note" or _clear_leader(leader, box, placed, d):
+        if by_leader or short(req) or req.kind == "note" or runs_clear(leader, [o for o in placed if o is not box], d):
             leaders.append(leader)
     return leaders + out            # the leaders first: under every label's white ground, never over a text
-
-
-def _clear_leader(leader: Line, box: Rect, placed: list[Rect], d: Drawing) -> bool:
-    """Whether ``leader`` (to ``box``) runs through no other label and no mark but the one it starts at,
-    and across no heavy line."""
-    return (clear_line(leader, [o for o in placed if o is not box]
-                       + [h for h in d.hard if not h.contains_point(leader.x1, leader.y1)])
-            and not crosses_heavy(leader, d.segments))
 
 
 def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):

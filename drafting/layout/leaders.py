@@ -30,10 +30,7 @@ def led_test(req: LabelReq, clear, placed: list[Rect], d: Drawing, longest: floa
     def test(le: float, to: float, ri: float, bo: float) -> bool:
         box = Rect(le, to, ri - le, bo - to)
         leader = led_leader(req, box, longest)
-        if leader is None or not clear_line(leader, placed + [h for h in d.hard
-                                                          if not h.contains_point(leader.x1, leader.y1)]):
-            return False
-        if crossings_of(leader, d.segments, crossings + 1) > crossings:
+        if leader is None or not runs_clear(leader, placed, d, crossings):
             return False
         return clear.with_ours([leader.points])(le, to, ri, bo)
     return test
@@ -78,6 +75,13 @@ def clear_line(line: Line, boxes: list[Rect]) -> bool:
         if clip_fraction(x1, y1, dx, dy, o.left, o.top, o.right, o.bottom) > 0:
             return False
     return True
+
+
+def runs_clear(leader: Line, labels: list[Rect], d: Drawing, crossings: int = 0) -> bool:
+    """Whether ``leader`` runs through none of ``labels`` and no mark of ``d`` but the one it starts at, and
+    across no more than ``crossings`` of its heavy lines (each steeply: :func:`crossings_of`)."""
+    return (clear_line(leader, labels + [h for h in d.hard if not h.contains_point(leader.x1, leader.y1)])
+            and crossings_of(leader, d.segments, crossings + 1) <= crossings)
 
 
 def crosses_heavy(line: Line, segments) -> bool:
@@ -203,8 +207,7 @@ def far_test(req: LabelReq, clear, placed: list[Rect], d: Drawing):
         if off_by(req, box) <= LONGEST_LEADER:
             return True
         far = far_leader(req, box)
-        return far is not None and clear_line(far, placed + [h for h in d.hard if not h.contains_point(far.x1, far.y1)]) \
-            and not crosses_heavy(far, d.segments)
+        return far is not None and runs_clear(far, placed, d)
     return test
 
 
