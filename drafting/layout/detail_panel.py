@@ -78,7 +78,7 @@ class DetailPanel(Panel):
         return (max(2 * d.radius * k for d in self.details),
                 sum(2 * d.radius * k for d in self.details) + GAP_MM * (len(self.details) - 1))
 
-    def need(self, rung: int, width: float) -> Size | None:
+    def measure(self, rung: int, width: float) -> Size | None:
         w, h = self.drawn_size(rung)
         w, h = w + 2 * VIEW_PAD + 2, h + 2 * VIEW_PAD + 2
         if w > width + 1e-9:

@@ -24,6 +24,7 @@ from .labels import place_labels
 VIEW_PAD = 7.0          # room around a drawing for its labels
 
 Size = tuple[float, float]
+_UNMEASURED = object()
 
 
 @dataclass
@@ -168,7 +169,19 @@ class Panel:
 
     def need(self, rung: int, width: float) -> Size | None:
         """(width, height) of the panel the diagram needs at ``rung`` in a panel ``width`` wide, or None
-        when it does not fit that width."""
+        when it does not fit that width: :meth:`measure`'d once per rung and width (the packer asks the
+        same some twenty times over its arrangements and climbs).  The memo is this panel's own: a copy
+        (a lab sheet's held or blank panel) starts its own."""
+        memo = self.__dict__.get("_needs")
+        if memo is None or memo[0] != id(self):
+            memo = self._needs = (id(self), {})
+        got = memo[1].get((rung, width), _UNMEASURED)
+        if got is _UNMEASURED:
+            got = memo[1][(rung, width)] = self.measure(rung, width)
+        return got
+
+    def measure(self, rung: int, width: float) -> Size | None:
+        """:meth:`need`, measured."""
         raise NotImplementedError
 
     def min_width(self) -> float:

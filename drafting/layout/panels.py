@@ -91,7 +91,7 @@ class SpacePanel(Panel):
     def ppu(self, rung: int) -> float:
         return self.k(rung) / self.per_m                      # paper mm per display length unit
 
-    def need(self, rung: int, width: float) -> Size | None:
+    def measure(self, rung: int, width: float) -> Size | None:
         if self.beside is not None:
             return self.beside.need(rung, width, self.own_need(rung, width - self.beside.min_width(rung)))
         return self.own_need(rung, width)
@@ -181,7 +181,7 @@ class VectorPanel(Panel):
                 return i
         return len(self.values) - 1
 
-    def need(self, rung: int, width: float) -> Size | None:
+    def measure(self, rung: int, width: float) -> Size | None:
         got = self.figure.fit(self.k(rung), width, VECTOR_MIN_W)
         if got is None:
             return None
@@ -228,7 +228,7 @@ class ChartPanel(Panel):
     def rungs(self) -> int:
         return 1
 
-    def need(self, rung: int, width: float) -> Size | None:
+    def measure(self, rung: int, width: float) -> Size | None:
         if width < CHART_MIN[0]:
             return None
         hh = self.cache.header_height(width, self.title, None, "")
