@@ -3,6 +3,8 @@ height planning reads off the word table is the laid-out height (as is a scale b
 
 from __future__ import annotations
 
+import math
+
 import pytest
 from hypothesis import given, settings, strategies as st
 
@@ -22,6 +24,25 @@ def test_the_two_greedy_wraps_agree(ws, width, size):
     split = _breaks(_word_columns(text, size)[0], width, text_width(" ", size)) is None
     assert split == any(w[1] > width for w in _words(text, size))
     assert wrap_words(text, width, size) == _wrap_splitting(text, width, size)
+
+
+@settings(max_examples=100, deadline=None)
+@given(words, st.lists(st.floats(4.0, 160.0), min_size=1, max_size=12), st.sampled_from([2.5, 3.0, 3.5]))
+def test_a_wrap_remembered_for_a_range_of_widths_is_the_wrap_at_each_width(ws, widths, size):
+    """Line extents are remembered per range of widths that break the lines alike: asked at widths in any
+    order (and at the edges of the ranges found), each answer is the greedy wrap at that very width."""
+    from drafting.layout.wrap import _breaks, _line_extents, _word_columns, _wrap_ranges, wrapped_extents
+    from drafting.render.style import text_width
+    text = " ".join(ws)
+    _wrap_ranges.cache_clear()
+    edges = []
+    for w in widths:
+        wrapped_extents(text, w, size)
+        edges += [e for lo, hi, _ in _wrap_ranges(text, size) for e in (lo, hi) if 0 < e < 1e6]
+    col_w, tops, bottoms = _word_columns(text, size)
+    for w in widths + edges + [math.nextafter(e, 0.0) for e in edges]:
+        got = _breaks(col_w, w, text_width(" ", size))
+        assert wrapped_extents(text, w, size) == (None if got is None else _line_extents(got, tops, bottoms, size))
 
 
 def assert_height_is_laid_out_height(item, width: float, size: float) -> None:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import math
 import re
 from typing import Sequence
 
@@ -233,14 +234,53 @@ def line_baselines(extents: Sequence[tuple[float, float]], top: float, size: flo
     return ys, (top if not ys else y_prev + prev_bottom)
 
 
+def _same_breaks(widths: Sequence[float], lines: list[tuple[int, int]], space: float) -> tuple[float, float]:
+    """The widths [lo, hi) at which :func:`_breaks` breaks ``widths`` into ``lines`` again, from the very sums
+    it compares: every line fits (its running width, the largest of its sums, is at most the width; no
+    word longer) and none could take the next line's first word (its width plus a space and that word is
+    over the width).  Greedy breaking makes each line's end depend only on where it starts, so in that
+    range every line ends where it did."""
+    lo, hi = max(widths), math.inf
+    for n, (i0, i1) in enumerate(lines):
+        cur = widths[i0]
+        for w in widths[i0 + 1:i1]:
+            cur += space
+            cur += w
+        lo = max(lo, cur)
+        if n + 1 < len(lines):
+            hi = min(hi, cur + space + widths[i1])
+    return lo, hi
+
+
+@functools.lru_cache(maxsize=4096)
+def _wrap_ranges(markup: str, size: float) -> list:
+    """The wraps of ``markup`` at ``size`` found so far, as [lo, hi, line extents] (filled by
+    :func:`wrapped_extents`)."""
+    return []
+
+
 def wrapped_extents(markup: str, width: float, size: float) -> list[tuple[float, float]] | None:
     """The (top, bottom) extent of each line of ``markup`` wrapped to ``width``, as :func:`measure` takes
     the line :func:`wrap_words` makes, found from the word table without making a span; None when a
-    word would have to be split."""
+    word would have to be split.  Remembered per range of widths that wrap alike (a page planner asks
+    at many widths, most of which break the lines where another did)."""
+    ranges = _wrap_ranges(markup, size)
+    for lo, hi, ext in ranges:
+        if lo <= width < hi:
+            return ext
     widths, tops, bottoms = _word_columns(markup, size)
-    got = _breaks(widths, width, text_width(" ", size)) if widths else []
+    space = text_width(" ", size)
+    got = _breaks(widths, width, space) if widths else []
     if got is None:
+        ranges.append((-math.inf, max(widths), None))
         return None
+    ext = _line_extents(got, tops, bottoms, size)
+    ranges.append(_same_breaks(widths, got, space) + (ext,) if widths else (-math.inf, math.inf, ext))
+    return ext
+
+
+def _line_extents(got: list[tuple[int, int]], tops: list[float], bottoms: list[float],
+                  size: float) -> list[tuple[float, float]]:
     asc, desc = font_metrics()
     sp_top, sp_bottom = -asc * size, desc * size              # the space between words
     ext = []
