@@ -32,6 +32,36 @@ def test_notes_roller_cam_agrees_and_draws_every_step():
         assert w in words
 
 
+def test_the_lift_at_every_station_is_set_out_as_a_table_under_its_step():
+    """The notes' 36 stations in four column groups of nine, read down each group: station, cam angle and
+    the lift at that station (the construction's own value, in the scene's unit), on the same sheet and in
+    the same text slot as the step that sets it out."""
+    import re
+    from constructions.cams.construction import station_rows
+    s = study("notes-roller-cam.toml")
+    step = next(st for st in s.construction.steps if st.table)
+    head, *rows = step.table_text()
+    assert head == ("Station", "\u03b8 (\u00b0)", "s") * 4 and len(rows) == 9
+    for r, row in enumerate(rows):
+        for g in range(4):
+            i = 9 * g + r
+            assert row[3 * g:3 * g + 2] == (str(i), f"{10 * i}")
+            assert float(row[3 * g + 2].split()[0]) == pytest.approx(step.value(f"s{i}").value, rel=5e-4, abs=1e-15)
+    assert step.value("s14").value == pytest.approx(0.2 * 0.0254, rel=1e-12)   # 140 deg: 0.2 in of lift
+    # the step and its table are set in one slot, the table under the step's words
+    sheets = sheets_for(s)
+    n = 1 + s.construction.steps.index(step)
+    regions = {t.region for sh in sheets for t in sh.texts() if t.name in (f"step {n}", f"step {n} number")}
+    table = {t.region for sh in sheets for t in sh.texts() if t.name.startswith(f"step {n} table")}
+    assert len(regions) == 1 and table == regions
+    # fewer stations, fewer groups; six or fewer in one
+    for count, groups, nrows in ((12, 2, 6), (24, 3, 8), (36, 4, 9), (5, 1, 5), (72, 4, 18)):
+        got = station_rows([2 * math.pi * i / count for i in range(count)], "s")
+        assert len(got[0]) == 3 * groups and len(got) - 1 == nrows
+        cells = [c for row in got[1:] for c in row if re.fullmatch(r"\$s\d+", c)]
+        assert sorted(cells, key=lambda c: int(c[2:])) == [f"$s{i}" for i in range(count)]
+
+
 def test_flat_faced_question_values():
     s = study("notes-flat-faced-cam.toml")
     cp = s.get("profile").profile

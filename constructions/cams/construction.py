@@ -58,6 +58,29 @@ def _v(p) -> Vec:
     return Vec(float(p[0]), float(p[1]))
 
 
+STATION_ROWS = 9
+"""The most rows of a table of stations up to 36 stations: the stations are set in two to four column groups
+side by side (12 stations in two groups of six, 24 in three of eight, 36 in four of nine), read down each
+group, as a student lays the table out on the sheet; six stations or fewer in one."""
+
+
+def station_rows(th, s_head: str) -> tuple[tuple[str, ...], ...]:
+    """The table of the stations' lift: station number, cam angle (degrees) and ``$s<i>``, in column
+    groups of :data:`STATION_ROWS` rows (at most four groups: more rows when there are more stations)."""
+    n = len(th)
+    groups = 1 if n <= 6 else min(4, max(2, math.ceil(n / STATION_ROWS)))
+    rows = math.ceil(n / groups)
+    head = ("Station", "\u03b8 (\u00b0)", s_head) * groups
+    body = []
+    for r in range(rows):
+        cells: list[str] = []
+        for g in range(groups):
+            i = g * rows + r
+            cells += [str(i), _deg(th[i]), f"$s{i}"] if i < n else ["", "", ""]
+        body.append(tuple(cells))
+    return (head, *body)
+
+
 def _deg(theta: float) -> str:
     d = math.degrees(theta)
     return f"{d:.6g}"
@@ -123,8 +146,8 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
 
     # 2: the table of s
     tvals = {f"s{i}": Value(lk, float(ev.s[i])) for i in range(n)}
-    rows = "; ".join(f"{_deg(th[i])}: $s{i}" for i in range(n))
-    rec = rec.then(f"Calculate and tabulate s at every station (cam angle in degrees: s) -- {rows}.", values=tvals)
+    rec = rec.then("Calculate s at every station and set it out in a table: the station, its cam angle and s.",
+                   values=tvals, table=station_rows(th, "swing s" if f.kind in (OSCILLATING, OSC_FLAT) else "s"))
 
     # 3-5: circles
     rec = rec.then("Draw the base circle of radius $rb about the cam centre O.",

@@ -66,6 +66,7 @@ class Paragraph(Item):
     label: str = ""
     label_chars: str = ""         # the widest label of the list, to size the label column
     name: str = ""
+    keep_with_next: bool = False  # set in the same slot as the next item (a step with its table under it)
 
     def _indent(self, size: float) -> float:
         return text_width(self.label_chars or self.label, size) + 0.6 * size if self.label or self.label_chars else 0.0

@@ -9,6 +9,7 @@ drawing's lines through the grid of :mod:`drafting.layout.segments`).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from ..render.drawing import Drawing, LabelReq, Pt, shifted, angle_gap, incident_directions, unit_vector
 from ..render.errors import LayoutError
@@ -175,11 +176,9 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                                                         LABEL_KINDS.index(d.labels[i].kind)))
     segs = Segments(d.segments)
     kin = Kin(d) if d.labels else None
-    for i in order:
-        req = d.labels[i]
-        spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
-        ext = measure(spans)
-        hw, hh = ext.width / 2 + LABEL_PAD, ext.height / 2 + LABEL_PAD
+    def search(req: LabelReq, strict: bool):
+        """The best candidate of ``req`` through its tiers (the first tier only when ``strict``), whether
+        it is placed by its leader, the placed labels near it and the directions of the lines at it."""
         incident = (incident_directions(req.anchor, [d.segments[j] for j in segs.around(req.anchor, 0.2)])
                     if req.kind == "point" else [])
         # the neighbourhood every candidate box lies in: only what is in it can collide
@@ -197,8 +196,26 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                                        near_placed, near_hard, near_segs, heavy_ok, clear, segs)
                 if best is not None:
                     break
-            if best is not None:
+            if best is not None or strict:
                 break
+        return best, by_leader, near_placed, incident
+
+    for i in order:
+        req = d.labels[i]
+        spans = rich(req.markup, size, pivot_digits=req.pivot_digits)
+        ext = measure(spans)
+        hw, hh = ext.width / 2 + LABEL_PAD, ext.height / 2 + LABEL_PAD
+        best, by_leader, near_placed, incident = search(req, strict=bool(req.alternates))
+        if best is None and req.alternates:
+            # by another point of its entity, clear and unambiguous there; else anywhere by its anchor
+            for at in req.alternates:
+                moved = replace(req, anchor=at, alternates=())
+                best, by_leader, near_placed, incident = search(moved, strict=True)
+                if best is not None:
+                    req = moved
+                    break
+            else:
+                best, by_leader, near_placed, incident = search(req, strict=False)
         if best is None:
             if not req.mandatory:
                 continue

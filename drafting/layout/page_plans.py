@@ -121,13 +121,16 @@ def _place_rows(fl: Fill, x: float, top: float, bottom: float, *, from_bottom: b
             y += hgt
 
 
-def _best_fill(arrs, w: float, h: float, *, climb: bool) -> Fill | None:
+def _best_fill(arrs, w: float, h: float, *, climb: bool, room: bool = True) -> Fill | None:
+    """The arrangement whose fill draws the diagrams largest; of those, the one that leaves the most
+    height (``room``: for text under it) or the least (a page of diagrams only, which shares what is left
+    among its rows: two charts one over the other in a tall column, not side by side stretched tall)."""
     best = None
     for a in arrs:
         fl = fill(a, w, h, climb=climb)
         if fl is None:
             continue
-        key = fl.quality() + (h - fl.used,)
+        key = fl.quality() + ((h - fl.used) if room else -(h - fl.used),)
         if best is None or key > best[0]:
             best = (key, fl)
     return None if best is None else best[1]
@@ -224,7 +227,7 @@ def diagram_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> 
     best: tuple | None = None
     tbw = paper.title_block_max_width
     h_tb = tb_height(tbw, panels)
-    fl = _best_fill(arrangements(panels), F.w, F.h - h_tb, climb=True)
+    fl = _best_fill(arrangements(panels), F.w, F.h - h_tb, climb=True, room=False)
     if fl is not None:
         best = (fl.quality() + (F.h - h_tb - fl.used,), [(fl, F.x, F.top, F.h - h_tb)], tbw, h_tb)
     if paper.orientation == "landscape" and len(panels) >= 2:
@@ -239,8 +242,8 @@ def diagram_page(paper: Paper, panels: Sequence[Panel], tb_height: TbHeight) -> 
         for wt in dict.fromkeys(w for w in widths if w >= TEXT_COL_MIN):
             h2 = tb_height(min(tbw, wt), panels)
             for k in range(1, len(panels)):
-                left = _best_fill(arrangements(panels[:k]), F.w - wt, F.h, climb=True)
-                right = _best_fill(arrangements(panels[k:]), wt, F.h - h2, climb=True) if left else None
+                left = _best_fill(arrangements(panels[:k]), F.w - wt, F.h, climb=True, room=False)
+                right = _best_fill(arrangements(panels[k:]), wt, F.h - h2, climb=True, room=False) if left else None
                 if left is None or right is None:
                     continue
                 q = quality([(p, f.rungs[p.key]) for f in (left, right) for row in f.rows for p in row])

@@ -49,9 +49,10 @@ def text_sections(construction: Construction, results: Sequence, notes: Sequence
         n = len(steps)
         items = []
         for i, (t, s) in enumerate(steps):
-            items.append(Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}"))
-            table = getattr(s, "table_text", None)
-            if table is not None and s.table:                 # the table the step sets out, under its words
+            table = getattr(s, "table_text", None) if getattr(s, "table", None) else None
+            items.append(Paragraph(t, label=f"{i + 1}.", label_chars=f"{n}.", name=f"step {i + 1}",
+                                   keep_with_next=table is not None))
+            if table is not None:                            # the table the step sets out, under its words
                 head, *rows = table(step_formatter(fmt, s))
                 items.append(TableItem(head, tuple(rows), ("l",) + ("r",) * (len(head) - 1),
                                        name=f"step {i + 1} table"))

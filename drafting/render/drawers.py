@@ -248,6 +248,13 @@ def _circle_points(e: CircleEntity) -> tuple[Vec, ...]:
     return (c + Vec(r, 0), c + Vec(-r, 0), c + Vec(0, r), c + Vec(0, -r))
 
 
+CIRCLE_NAME_AT = (45.0, 135.0, 225.0, 315.0, 90.0, 270.0, 0.0, 180.0)
+"""Where a circle's name goes (degrees counter-clockwise from the right): the first place that is clear and
+unambiguous; by the first, up and to the right, when none is."""
+CURVE_NAME_AT = (0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875)
+"""Where a curve's name goes, as a share of its points: the first place that is clear and unambiguous."""
+
+
 @drawer(CircleEntity, points=_circle_points)
 def draw_circle(e: CircleEntity, ctx: DrawContext) -> None:
     if not (e.radius > 0 and math.isfinite(e.radius)):
@@ -260,9 +267,8 @@ def draw_circle(e: CircleEntity, ctx: DrawContext) -> None:
     ctx.d.add_segments([(c[0] + r * math.cos(2 * math.pi * i / n), c[1] + r * math.sin(2 * math.pi * i / n))
                         for i in range(n)], style in THICK_STYLES, closed=True)
     if e.label:
-        a = math.radians(45.0)
-        at = (c[0] + r * math.cos(a), c[1] - r * math.sin(a))
-        ctx.d.labels.append(LabelReq("point", e.label, at, False, e.name))
+        at = [(c[0] + r * math.cos(math.radians(a)), c[1] - r * math.sin(math.radians(a))) for a in CIRCLE_NAME_AT]
+        ctx.d.labels.append(LabelReq("point", e.label, at[0], False, e.name, alternates=tuple(at[1:])))
 
 
 @drawer(Curve, points=lambda e: e.points)
@@ -275,7 +281,8 @@ def draw_curve(e: Curve, ctx: DrawContext) -> None:
     else:
         ctx.d.add(PATHS, Polyline(pts, line_style_for(e.role), e.name))
     if e.label:
-        ctx.d.labels.append(LabelReq("point", e.label, pts[len(pts) // 2], False, e.name))
+        at = [pts[min(len(pts) - 1, int(f * len(pts)))] for f in CURVE_NAME_AT]
+        ctx.d.labels.append(LabelReq("point", e.label, at[0], False, e.name, alternates=tuple(at[1:])))
 
 
 @drawer(Segment, points=lambda e: (e.start, e.end))

@@ -58,6 +58,8 @@ class LabelReq:
     other: Pt | None = None         # arrow tail / trial far end
     pivot_digits: bool = False
     ground: Rect | None = None      # a note's ground at its anchor: the drawing's extent counts it
+    alternates: tuple[Pt, ...] = () # other points of the same entity (a circle's, a curve's) where its name
+    # may go when it cannot be set clear and unambiguous by its anchor, tried in order
 
 
 THICK_STYLES = frozenset({"vector", "link", "guide", "load", "block"})
@@ -107,7 +109,8 @@ class Drawing:
         d = Drawing({k: [translated(c, dx, dy, region) for c in v] for k, v in self.layers.items()})
         d.labels = [LabelReq(r.kind, r.markup, (r.anchor[0] + dx, r.anchor[1] + dy), r.mandatory, r.name, r.r0,
                              None if r.other is None else (r.other[0] + dx, r.other[1] + dy), r.pivot_digits,
-                             None if r.ground is None else r.ground.translated(dx, dy))
+                             None if r.ground is None else r.ground.translated(dx, dy),
+                             tuple((x + dx, y + dy) for x, y in r.alternates))
                     for r in self.labels]
         d.hard = [h.translated(dx, dy) for h in self.hard]
         d.segments = [((a[0] + dx, a[1] + dy), (b[0] + dx, b[1] + dy), t) for a, b, t in self.segments]
