@@ -72,9 +72,9 @@ def test_the_gallery_table_names_every_scene_and_every_stage(tmp_path, monkeypat
     assert main(["bench", "--gallery", "--quick"]) == 0
     out = capsys.readouterr().out.splitlines()
     head = next(line for line in out if line.lstrip().startswith("scene"))
-    assert head.split() == ["scene", "pages", "solve", "layout", "SVG", "total", "worst"]
+    assert head.split() == ["scene", "pages", "solve", "layout", "(plan", "labels)", "SVG", "total", "worst"]
     rows = {line.split()[0]: line.split()[1:] for line in out if line.split() and line.split()[0] in scenes}
-    assert set(rows) == set(scenes) and all(len(r) == 6 for r in rows.values())
+    assert set(rows) == set(scenes) and all(len(r) == 8 for r in rows.values())
     assert any(line.lstrip().startswith("slowest: ") for line in out)
     assert out[-1].startswith("Machine speed in this run")
 
@@ -90,8 +90,8 @@ def test_the_gallery_figures_as_json(tmp_path, monkeypatch, capsys):
     assert data["repeats"] == 3 and data["unit"] == "ms"
     assert [s["scene"] for s in data["sheets"]] == sorted(scenes)
     for s in data["sheets"]:
-        assert s["pages"] == 1 and all(s[k] > 0 for k in ("solve", "layout", "svg", "total"))
-        assert s["total"] <= s["worst"]
+        assert s["pages"] == 1 and all(s[k] > 0 for k in ("solve", "layout", "plan", "labels", "svg", "total"))
+        assert s["total"] <= s["worst"] and max(s["plan"], s["labels"]) < s["layout"]     # parts of the layout
 
 
 def test_json_without_the_gallery_is_one_sentence(capsys):

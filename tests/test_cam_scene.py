@@ -37,7 +37,7 @@ def test_the_lift_at_every_station_is_set_out_as_a_table_under_its_step():
     the lift at that station (the construction's own value, in the scene's unit), on the same sheet and in
     the same text slot as the step that sets it out."""
     import re
-    from constructions.cams.construction import station_rows
+    from constructions.cams.stations import station_rows
     s = study("notes-roller-cam.toml")
     step = next(st for st in s.construction.steps if st.table)
     head, *rows = step.table_text()

@@ -37,6 +37,7 @@ from .laws import DWELL, TAU, Program
 from .envelope import evaluate
 from .follower import FLAT, KNIFE, OSC_FLAT, OSCILLATING, ROLLER, Follower, drawn_follower
 from .profile import CamProfile, analyse
+from .stations import degree_text, station_rows
 from .details import details_words, profile_details
 
 CAM = Diagram("cam", "profile")
@@ -56,34 +57,6 @@ class CamConstruction:
 
 def _v(p) -> Vec:
     return Vec(float(p[0]), float(p[1]))
-
-
-STATION_ROWS = 9
-"""The most rows of a table of stations up to 36 stations: the stations are set in two to four column groups
-side by side (12 stations in two groups of six, 24 in three of eight, 36 in four of nine), read down each
-group, as a student lays the table out on the sheet; six stations or fewer in one."""
-
-
-def station_rows(th, s_head: str) -> tuple[tuple[str, ...], ...]:
-    """The table of the stations' lift: station number, cam angle (degrees) and ``$s<i>``, in column
-    groups of :data:`STATION_ROWS` rows (at most four groups: more rows when there are more stations)."""
-    n = len(th)
-    groups = 1 if n <= 6 else min(4, max(2, math.ceil(n / STATION_ROWS)))
-    rows = math.ceil(n / groups)
-    head = ("Station", "\u03b8 (\u00b0)", s_head) * groups
-    body = []
-    for r in range(rows):
-        cells: list[str] = []
-        for g in range(groups):
-            i = g * rows + r
-            cells += [str(i), _deg(th[i]), f"$s{i}"] if i < n else ["", "", ""]
-        body.append(tuple(cells))
-    return (head, *body)
-
-
-def _deg(theta: float) -> str:
-    d = math.degrees(theta)
-    return f"{d:.6g}"
 
 
 def construct(program: Program, f: Follower, divisions: int, *, omega: float | None = None,
@@ -203,7 +176,7 @@ def construct(program: Program, f: Follower, divisions: int, *, omega: float | N
     join_stations = sorted({int(round(t / step)) % n for t in program.starts
                             if abs(t / step - round(t / step)) < STATION_REL})
     for i in join_stations:
-        tag = _deg(th[i])
+        tag = degree_text(th[i])
         measured.append(Measured(f"P_{tag}", "length", _v(centres[:, i])))
         names[f"P_{tag}"] = i
         measured.append(Measured(f"C_{tag}", "length", _v(contacts[:, i])))

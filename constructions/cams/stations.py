@@ -15,6 +15,7 @@ has none: the face's foot is no pitch point), and a knife edge's pitch curve is 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -52,4 +53,32 @@ def station_table(program: Program, f: Follower, theta, omega: float | None = No
                         ev.rho_pitch, ev.rho_profile, ev.profile, not omega)
 
 
-__all__ = ["StationTable", "station_table"]
+STATION_ROWS = 9
+"""The most rows of a table of stations up to 36 stations: the stations are set in two to four column groups
+side by side (12 stations in two groups of six, 24 in three of eight, 36 in four of nine), read down each
+group, as a student lays the table out on the sheet; six stations or fewer in one."""
+
+
+def station_rows(th, s_head: str) -> tuple[tuple[str, ...], ...]:
+    """The table of the stations' lift: station number, cam angle (degrees) and ``$s<i>``, in column
+    groups of :data:`STATION_ROWS` rows (at most four groups: more rows when there are more stations)."""
+    n = len(th)
+    groups = 1 if n <= 6 else min(4, max(2, math.ceil(n / STATION_ROWS)))
+    rows = math.ceil(n / groups)
+    head = ("Station", "\u03b8 (\u00b0)", s_head) * groups
+    body = []
+    for r in range(rows):
+        cells: list[str] = []
+        for g in range(groups):
+            i = g * rows + r
+            cells += [str(i), degree_text(th[i]), f"$s{i}"] if i < n else ["", "", ""]
+        body.append(tuple(cells))
+    return (head, *body)
+
+
+def degree_text(theta: float) -> str:
+    """A station's cam angle (rad) in degrees as the construction writes it: 10, 22.5, 337.5."""
+    return f"{math.degrees(theta):.6g}"
+
+
+__all__ = ["StationTable", "station_table", "station_rows", "degree_text", "STATION_ROWS"]

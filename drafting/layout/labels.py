@@ -17,6 +17,7 @@ from ..render.paper import Command, Line, Rect, Rectangle, Text
 from ..render.style import LABEL, measure, rich
 from .label_kin import NUMBER, Kin, clip_fraction
 from .segments import Segments
+from .stopwatch import timed
 from .leaders import (LONG_LEADER, LONGEST_LEADER, far_leader, far_test, leader_of, led, led_leader, led_test,
                       runs_clear, short, sparing)
 
@@ -155,6 +156,7 @@ where that is clear, else around it, on a note's white ground, named "<owner>:te
 so no other entity can be mistaken for its own."""
 
 
+@timed("labels")
 def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> list[Command]:
     """Put every label where it overlaps no other label, arrowhead or symbol, inside ``plot``.
 

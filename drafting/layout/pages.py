@@ -34,6 +34,7 @@ from .page_plans import PagePlan, TbHeight, diagram_page, slots_of, text_page, t
 from .panel import Panel
 from .panels import SpacePanel, VectorPanel
 from .reading_order import reading_slots, steps_out_of_order
+from .stopwatch import timed
 
 COMFORTABLE_LETTERING = 3.0
 """Lettering below this is taken only when nothing else fits."""
@@ -123,6 +124,7 @@ def _compositions(n: int, m: int):
         yield [bounds[i + 1] - bounds[i] for i in range(m)]
 
 
+@timed("plan")
 def plan_document(paper: Paper, panels: Sequence[Panel], sections, tb_height: TbHeight, *,
                   cache: dict | None = None, what: str = "", prune: bool = True) -> Document:
     """The pages for ``panels`` and the text ``sections``: one page when it can be set legibly, else
