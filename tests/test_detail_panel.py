@@ -95,6 +95,6 @@ def test_clipping_keeps_the_inside_of_a_line_and_drops_what_lies_outside():
 def test_a_sheet_with_details_says_as_shown_in_its_scale_cell():
     """The cam diagram at 1:2 and its details at 5:1: two scales, so the title block's cell says "As
     shown" (each drawing states its own in its heading)."""
-    (sheet,) = drafting.load(GALLERY / "roller-cam-undercut.toml").sheets()
+    sheet = drafting.load(GALLERY / "roller-cam-undercut.toml").sheets()[0]        # (the drawings' sheet)
     cell = [t.plain for t in sheet.texts() if t.region == "title_block"]
     assert "As shown" in cell and not any(t.startswith("Cam diagram") for t in cell)
