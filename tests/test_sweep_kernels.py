@@ -269,10 +269,12 @@ def _hard_angles(n):
     return th
 
 
-@pytest.mark.parametrize("n", [sweep_threads.THREADED_FROM, 10_001, 3 * shared_steps.CHUNK + 5])
-def test_threads_give_the_same_numbers_bit_for_bit(n):
+@pytest.mark.parametrize("n", [4000, 10_001, 3 * shared_steps.CHUNK + 5])
+def test_threads_give_the_same_numbers_bit_for_bit(n, monkeypatch):
     """Any number of threads, fresh output or the caller's buffers: the single-thread run's bytes, over
-    gaps, toggles (NaN rates), the extended toggle snapped, NaN angles, signed zeros and large angles."""
+    gaps, toggles (NaN rates), the extended toggle snapped, NaN angles, signed zeros and large angles
+    (threaded from 4000 angles here: halves, and chunks)."""
+    monkeypatch.setattr(sweep_threads, "THREADED_FROM", 4000)
     th = _hard_angles(n)
     al = np.linspace(-50.0, 50.0, n)
     fb = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(1.0, 0.0), crank=0.8, coupler=0.5, rocker=0.6, branch=-1)
@@ -303,6 +305,7 @@ def test_the_pieces_of_a_threaded_call(monkeypatch):
     of threads, and on two threads both of them at work when a piece takes long enough to wait for."""
     import threading
     import time
+    monkeypatch.setattr(sweep_threads, "THREADED_FROM", 4000)
 
     def pieces(n, threads, most=shared_steps.CHUNK, wait=0.0):
         seen = []
@@ -314,7 +317,7 @@ def test_the_pieces_of_a_threaded_call(monkeypatch):
         return sorted(seen)
     me = threading.current_thread().name
     assert pieces(0, 2) == []
-    assert pieces(sweep_threads.THREADED_FROM - 1, 2) == [(0, sweep_threads.THREADED_FROM - 1, me)]
+    assert pieces(3999, 2) == [(0, 3999, me)]
     assert [p[:2] for p in pieces(10_000, 2)] == [(0, 5000), (5000, 10_000)]
     assert [p[:2] for p in pieces(10_001, 1)] == [(0, 5001), (5001, 10_001)]
     big = pieces(100_000, 2)
@@ -371,7 +374,7 @@ def test_pool_workers_sweep_on_one_thread_and_a_fork_makes_its_own_pool():
     from drafting.app import parallel
     if parallel.cores() >= 2:
         assert parallel.run(_worker_threads, [0, 1, 2], workers=2) == [1, 1, 1]
-    n = 10_000
+    n = max(10_000, sweep_threads.THREADED_FROM)
     here = _forked_sweep(n)
     assert sweep_threads.pool_threads() >= 1
     with multiprocessing.get_context("fork").Pool(1) as pool:
