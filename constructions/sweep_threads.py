@@ -27,10 +27,11 @@ ENV = "DRAFTING_SWEEP_THREADS"
 
 THREADED_FROM = 30_000
 """Calls over fewer angles than this run on the calling thread.  Measured on the four-bar (2 cores of a
-virtual machine, 2026-11-27): two threads against one gave 0.5-0.9 of the speed at 1e3 and 1e4 angles,
-about even at 2e4, 1.1-1.15 at 3e4, 1.3-1.5 at 1e5 and 1e6 -- each thread takes the GIL back after every
-numpy call (some 180 for a chunk), and when the other holds it the wait is a wake-up of a sleeping thread,
-tens of microseconds here, against a few microseconds of arithmetic per call on a few thousand angles."""
+virtual machine, 2026-11-27, the other core free): two threads against one gave 0.5 of the speed at 1e3
+angles, 0.64 at 1e4, 1.06 at 2e4, 1.1-1.15 at 3e4 and 5e4, 1.3-1.5 at 1e5 and 1e6.  Each thread takes the
+GIL back after every numpy call (some 180 for a chunk), and when the other holds it the wait is the wake-up
+of a sleeping thread, tens of microseconds here, against a few microseconds of arithmetic per call on a
+few thousand angles."""
 
 PREFIX = "sweep-thread"
 """The name prefix of the pool's threads (:mod:`drafting.app.parallel` tells them from a caller's own)."""
