@@ -2,7 +2,8 @@
 drafting/, and drafting never solves -- only study/ and families/ call the engine's solvers.  The drawing
 rooms (render/, layout/, backends/) import of constructions/ only the record and the data types it is made
 of (geometry, and the tolerance the drawing's one geometric helper is given); scene/ the model's data types
-it reads a scene into; app/ the errors and values it reports.  Every number and point they draw or print
+it reads a scene into; app/ the errors and values it reports (and the sweep's thread setting, one thread in
+its pool workers).  Every number and point they draw or print
 comes from the Study's record and results.  And drafting's rooms import only down their floors
 (render < scene < layout < backends < study < families < app = serve)."""
 
@@ -22,7 +23,7 @@ ROOM_IMPORTS = {
     "scene": {"constructions.forces.effects", "constructions.forces.inertia", "constructions.geometry",
               "constructions.mechanisms.model"},
     "app": {"constructions.entities", "constructions.errors", "constructions.geometry", "constructions.quantities",
-            "constructions.record"},
+            "constructions.record", "constructions.sweep_threads"},
     "serve": set(),
 }
 """Each room that does not solve and exactly the constructions modules it imports."""
@@ -37,8 +38,10 @@ a solver, to time it, drawing nothing."""
 
 DATA_TYPES = {"constructions.record", "constructions.entities", "constructions.forces.effects",
               "constructions.forces.inertia", "constructions.mechanisms.model", "constructions.geometry", "constructions.quantities", "constructions.formatting",
-              "constructions.errors", "constructions.dimensions", "constructions.tolerance"}
-"""The engine's modules that hold data types and names, no solver: all a drawing room may ever import."""
+              "constructions.errors", "constructions.dimensions", "constructions.tolerance",
+              "constructions.sweep_threads"}
+"""The engine's modules that hold data types and names, no solver: all a drawing room may ever import (and
+the sweep's thread setting, the standard library only)."""
 
 
 def imported_modules(folder: Path) -> dict[str, set[str]]:

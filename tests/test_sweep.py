@@ -315,3 +315,27 @@ def test_a_scene_at_zero_runs_0_to_355_and_the_summary_stays_within_the_turn(tmp
     assert code == 0 and len(first) == 3600 and first[:2] == ["60.0", "60.1"] and first[-1] == "59.9"
     assert first[2998:3002] == ["359.8", "359.9", "0.0", "0.1"]
     assert all(len(c.split(".")[1]) == 1 for c in first)                     # 0.1 steps, not 60.30000000000001
+
+
+@pytest.mark.parametrize("name", ["notes-velocity-example-2", "notes-velocity-example-1"])
+def test_a_long_sweep_runs_on_the_default_threads_with_the_same_numbers(name, monkeypatch):
+    """sweep() of a four-bar or slider-crank gives its kernel the default thread count (here two, by
+    DRAFTING_SWEEP_THREADS): the pool is asked for, and the numbers are the one-thread run's, bit for bit."""
+    from constructions import sweep_threads
+    sc = load_scene(GALLERY / f"{name}.toml")
+    th = _turn(sc, 4 * sweep_threads.THREADED_FROM + 3)
+    monkeypatch.setattr(sweep_threads, "_process_threads", None)
+    monkeypatch.setenv(sweep_threads.ENV, "1")
+    one = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    asked = []
+    executor = sweep_threads._executor
+    monkeypatch.setattr(sweep_threads, "_executor", lambda: asked.append(1) or executor())
+    monkeypatch.setenv(sweep_threads.ENV, "2")
+    two = sweep(sc.mechanism, th, sc.omega, sc.alpha)
+    assert asked and one.model == two.model
+    for kind in ("positions", "velocities", "accelerations"):
+        for n, (x, y) in getattr(one, kind).items():
+            assert x.tobytes() == getattr(two, kind)[n][0].tobytes() and y.tobytes() == getattr(two, kind)[n][1].tobytes()
+    for kind in ("angular", "angular_acceleration"):
+        for k, w in getattr(one, kind).items():
+            assert w.tobytes() == getattr(two, kind)[k].tobytes()

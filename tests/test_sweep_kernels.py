@@ -16,6 +16,7 @@ from hypothesis import given
 from constructions import analytic as an
 from constructions import sweep_kernels as sk
 from constructions.analytic.states import FOURBAR_FIELDS
+from constructions import sweep_threads
 from constructions.sweep_kernels import chain_chunks, shared_steps, trig
 from constructions.sweep_kernels import coupler_point, four_bar, slider_crank
 from strategies import four_bar_dimensions, slider_crank_dimensions
@@ -252,3 +253,130 @@ def test_alpha_chunking_is_invisible(monkeypatch):
         one = four_bar(th[k], 2.0, al[k], **fb)
         for f in dataclasses.fields(one):
             np.testing.assert_array_equal(getattr(one, f.name), getattr(whole[0], f.name)[k], err_msg=f.name)
+
+
+def _bits(a, b, what):
+    """The same bytes: the same numbers, signs of zero and NaN payloads (not merely equal values)."""
+    for f in dataclasses.fields(a):
+        x, y = np.asarray(getattr(a, f.name)), np.asarray(getattr(b, f.name))
+        assert x.shape == y.shape and x.tobytes() == y.tobytes(), (what, f.name)
+
+
+def _hard_angles(n):
+    """n crank angles beyond 2 pi both ways, with signed zeros, +-pi (toggles), NaN and 1e7 rad among them."""
+    th = np.linspace(-9.0, 9.0, n)
+    th[::17], th[5::19], th[3::23], th[11::29], th[7::31], th[13::37] = 0.0, -0.0, np.pi, -np.pi, np.nan, 1e7
+    return th
+
+
+@pytest.mark.parametrize("n", [4000, 10_001, 3 * shared_steps.CHUNK + 5])
+def test_threads_give_the_same_numbers_bit_for_bit(n, monkeypatch):
+    """Any number of threads, fresh output or the caller's buffers: the single-thread run's bytes, over
+    gaps, toggles (NaN rates), the extended toggle snapped, NaN angles, signed zeros and large angles
+    (threaded from 4000 angles here: halves, and chunks)."""
+    monkeypatch.setattr(sweep_threads, "THREADED_FROM", 4000)
+    th = _hard_angles(n)
+    al = np.linspace(-50.0, 50.0, n)
+    fb = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(1.0, 0.0), crank=0.8, coupler=0.5, rocker=0.6, branch=-1)
+    designed = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(0.3, 0.0), crank=0.1, coupler=0.25, rocker=0.15,
+                    branch=1)
+    sc = dict(crank_pivot=(0, 0), crank=0.8, coupler=0.5, guide_point=(0, 1), guide_angle=0.1, branch=-1)
+    gaps, toggles = [], []
+    for kw in (fb, designed):
+        one = four_bar(th, 2.0, al, threads=1, **kw)
+        gaps.append(0 < one.assembles.sum() < n)
+        toggles.append(np.isnan(one.omega2[one.assembles]).any())
+        for t in (2, 3, 8):
+            _bits(one, four_bar(th, 2.0, al, threads=t, **kw), t)
+            _bits(one, four_bar(th, 2.0, al, threads=t, out=sk.four_bar_buffers(n), **kw), (t, "out"))
+        point = dict(distance=0.3, angle=0.9, ABx=one.ABx, ABy=one.ABy, alpha2=one.alpha2)
+        given = (one.Bx, one.By, one.VBx, one.VBy, one.theta2, one.omega2)
+        _bits(coupler_point(*given, **point, threads=1), coupler_point(*given, **point, threads=2), "point")
+    assert gaps == [True, True] and toggles == [False, True]
+    one = slider_crank(th, -4.0, al, threads=1, **sc)
+    assert 0 < one.assembles.sum() < n
+    for t in (2, 3):
+        _bits(one, slider_crank(th, -4.0, al, threads=t, **sc), ("slider", t))
+
+
+def test_the_pieces_of_a_threaded_call(monkeypatch):
+    """Each angle in exactly one piece; one piece on the calling thread below THREADED_FROM angles; halves
+    where a chunk would hold more than half the angles, chunks beyond; the pieces the same on any number
+    of threads, and on two threads both of them at work when a piece takes long enough to wait for."""
+    import threading
+    import time
+    monkeypatch.setattr(sweep_threads, "THREADED_FROM", 4000)
+
+    def pieces(n, threads, most=shared_steps.CHUNK, wait=0.0):
+        seen = []
+
+        def solve(i, j):
+            seen.append((i, j, threading.current_thread().name))
+            time.sleep(wait)
+        sweep_threads.in_pieces(solve, n, threads, most)
+        return sorted(seen)
+    me = threading.current_thread().name
+    assert pieces(0, 2) == []
+    assert pieces(3999, 2) == [(0, 3999, me)]
+    assert [p[:2] for p in pieces(10_000, 2)] == [(0, 5000), (5000, 10_000)]
+    assert [p[:2] for p in pieces(10_001, 1)] == [(0, 5001), (5001, 10_001)]
+    big = pieces(100_000, 2)
+    assert [p[:2] for p in big] == [(i, min(i + shared_steps.CHUNK, 100_000))
+                                    for i in range(0, 100_000, shared_steps.CHUNK)]
+    assert [p[:2] for p in pieces(100_000, 1)] == [p[:2] for p in big] == [p[:2] for p in pieces(100_000, 5)]
+    assert {p[2] for p in pieces(100_000, 1)} == {me}
+    names = {p[2] for p in pieces(10_000, 2, wait=0.2)}
+    assert me in names and len(names) == 2 and all(n == me or n.startswith(sweep_threads.PREFIX) for n in names)
+    assert sweep_threads.pool_threads() >= 1
+
+    def fails(i, j):
+        raise ZeroDivisionError(i)
+    with pytest.raises(ZeroDivisionError):
+        sweep_threads.in_pieces(fails, 10_000, 2, shared_steps.CHUNK)
+
+
+def test_the_default_thread_count(monkeypatch):
+    """min(2, cores) by default; DRAFTING_SWEEP_THREADS (an integer >= 1, anything else ignored); one after
+    one_thread(); threads= checked."""
+    monkeypatch.setattr(sweep_threads, "_process_threads", None)
+    monkeypatch.delenv(sweep_threads.ENV, raising=False)
+    default = min(2, sweep_threads._cores())
+    assert sweep_threads.default_threads() == default
+    for value, expected in (("3", 3), ("1", 1), ("0", default), ("-2", default), ("two", default), ("", default),
+                            ("2.5", default)):
+        monkeypatch.setenv(sweep_threads.ENV, value)
+        assert sweep_threads.default_threads() == expected, value
+    sweep_threads.one_thread()
+    assert sweep_threads.default_threads() == 1
+    assert sweep_threads.threads_for(10**6) == 1
+    monkeypatch.setattr(sweep_threads, "_process_threads", None)
+    monkeypatch.setenv(sweep_threads.ENV, "4")
+    assert sweep_threads.threads_for(10**6) == 4 and sweep_threads.threads_for(10) == 1
+    assert sweep_threads.threads_for(10**6, 1) == 1
+    for bad in (0, -1, 2.0, True, "2"):
+        with pytest.raises(ValueError, match="threads"):
+            four_bar(np.zeros(3), 1.0, threads=bad, **FB)
+
+
+def _worker_threads(_):
+    return sweep_threads.default_threads()
+
+
+def _forked_sweep(n):
+    r = four_bar(np.linspace(0.0, 2 * np.pi, n), 10.0, 20.0, threads=2, **FB)
+    return float(np.nansum(r.Cx)), sweep_threads.pool_threads()
+
+
+def test_pool_workers_sweep_on_one_thread_and_a_fork_makes_its_own_pool():
+    """The process pool's workers (drafting.app.parallel) run each sweep on their own thread; a child forked
+    after this process's sweep pool started makes a pool of its own (the parent's threads are not in it)."""
+    import multiprocessing
+    from drafting.app import parallel
+    if parallel.cores() >= 2:
+        assert parallel.run(_worker_threads, [0, 1, 2], workers=2) == [1, 1, 1]
+    n = max(10_000, sweep_threads.THREADED_FROM)
+    here = _forked_sweep(n)
+    assert sweep_threads.pool_threads() >= 1
+    with multiprocessing.get_context("fork").Pool(1) as pool:
+        total, threads = pool.apply_async(_forked_sweep, (n,)).get(timeout=60)
+    assert total == here[0] and threads >= 1

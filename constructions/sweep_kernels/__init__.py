@@ -5,7 +5,8 @@ chunks.
 
 Each kernel takes the arguments and returns the result of its oracle (the same frozen containers), and
 is tested against it: the same numbers to about 1e-15 relative away from singular positions, the same
-gaps and toggles.
+gaps and toggles.  A large call runs its pieces on the default threads of
+:mod:`constructions.sweep_threads` (``threads=`` to choose): the same numbers, bit for bit, on any number.
 
 Modules: ``four_bar_kernel``, ``slider_kernel``, ``point_kernel`` (the closed forms), ``chain_chunks``
 (the dyad chain), ``shared_steps`` (chunks, buffers, crank, gap and toggle steps), ``trig``.

@@ -65,14 +65,15 @@ def chunk_of(w, i, j):
     return w if isinstance(w, float) else w[i:j]
 
 
-def chunks(n: int, floats: int):
-    """Yield ``(i, j, scratch, flags)`` for each chunk [i, j) of ``n`` angles: ``floats`` float scratch
-    arrays and one bool array, of the chunk's length (allocated once, views for the last, short chunk)."""
-    m = min(CHUNK, max(n, 1))
+def chunks(start: int, stop: int, floats: int):
+    """Yield ``(i, j, scratch, flags)`` for each chunk [i, j) of the angles [start, stop): ``floats`` float
+    scratch arrays and one bool array, of the chunk's length (allocated once, views for the last, short
+    chunk)."""
+    m = min(CHUNK, max(stop - start, 1))
     scratch = [np.empty(m) for _ in range(floats)]
     flags = np.empty(m, dtype=bool)
-    for i in range(0, n, CHUNK):
-        j = min(i + CHUNK, n)
+    for i in range(start, stop, CHUNK):
+        j = min(i + CHUNK, stop)
         if j - i != m:  # last, short chunk: views of the scratch buffers
             m = j - i
             scratch = [a[:m] for a in scratch]

@@ -196,7 +196,7 @@ def run_benchmarks(quick: bool = False, peers: bool = False) -> str:
              format_machine_speed(speed)]
     lines.append("")
     lines.append("Analytic sweep, full states -- positions, velocities and accelerations of every joint "
-                 "(one core, numpy):")
+                 "(numpy; the default call on the default threads, and the four-bar on one thread):")
     lines.append(format_table(sweep_rows(sizes, repeats=3 if quick else 5)))
     if peer_sweep is not None:
         lines.append("")

@@ -4,8 +4,9 @@ as a plain text table.
 Used by ``benchmarks/analytic_sweep.py`` and ``drafting bench``.  Timings are reported, never asserted.
 
 Three mechanisms side by side: the four-bar and slider-crank closed forms of
-:mod:`constructions.analytic` and the general dyad-chain solver of :mod:`constructions.vector_loops`
-on a six-bar (the notes' toggle linkage of ``gallery/notes-velocity-example-3.toml``: a four-bar
+:mod:`constructions.analytic` (as the sweep runs them: the default call, on the default threads of
+:mod:`constructions.sweep_threads`; the four-bar also on one thread and into the caller's buffers) and the
+general dyad-chain solver of :mod:`constructions.vector_loops` on a six-bar (the notes' toggle linkage of ``gallery/notes-velocity-example-3.toml``: a four-bar
 driving a slider through a second coupler).  A full state is everything the solver returns at one crank
 angle: for the four-bar the positions, velocities and accelerations of B and C, the link angles,
 omega2, omega3, alpha2, alpha3 and the condition (19 float64 arrays + 1 bool, ~153 bytes per angle);
@@ -14,11 +15,11 @@ alpha = 20 rad/s^2 (a nonzero alpha exercises every term).
 
 Each row is one mechanism at one sweep size ``n``: the median wall time of ``repeats`` calls (after one
 untimed warm-up call), the resulting full states per second, the best call, and the median process CPU
-time of a call split into user and system time.  The split matters for large sweeps: a 1e7-angle
+time of a call (every thread's) split into user and system time.  The split matters for large sweeps: a 1e7-angle
 four-bar sweep writes ~1.5 GB of freshly allocated memory and the kernel's first-touch page faults
 (system time) can rival the arithmetic (user time).  ``os.times`` ticks at 10 ms, so the CPU columns
-mean little for small n.  On a shared machine the best call is the better estimate of what one core
-can do; the median shows what a busy one did.
+mean little for small n.  On a shared machine the best call is the better estimate of what the cores
+can do; the median shows what busy ones did.
 """
 
 from __future__ import annotations
@@ -61,6 +62,9 @@ def _closed_form(fn, **mech):
     return lambda theta: fn(theta, OMEGA, ALPHA, **mech)
 
 
+_FOUR_BAR = dict(crank_pivot=(0.0, 0.0), rocker_pivot=(0.1, 0.02), crank=0.03, coupler=0.09, rocker=0.07, branch=1)
+
+
 def _into_buffers(fn, make, **mech):
     """The closed form writing into the caller's buffers, made once per sweep size and reused."""
     kept: dict = {}
@@ -79,14 +83,13 @@ def _chain(m):
 
 
 #: The benchmarked mechanisms (SI units): name -> (solver of theta, largest n it is given).  A Grashof
-#: crank-rocker (also writing into buffers the caller keeps, which spares a long sweep its page faults), the
-#: notes' 50 mm / 94 mm slider-crank with a 10 mm offset, the toggle six-bar.
+#: crank-rocker (the default call; on the calling thread only; writing into buffers the caller keeps, which
+#: spares a long sweep its page faults), the notes' 50 mm / 94 mm slider-crank with a 10 mm offset, the
+#: toggle six-bar.
 MECHANISMS = {
-    "four-bar": (_closed_form(four_bar, crank_pivot=(0.0, 0.0), rocker_pivot=(0.1, 0.02), crank=0.03,
-                              coupler=0.09, rocker=0.07, branch=1), math.inf),
-    "four-bar, caller's buffers": (_into_buffers(four_bar, four_bar_buffers, crank_pivot=(0.0, 0.0),
-                                                 rocker_pivot=(0.1, 0.02), crank=0.03, coupler=0.09, rocker=0.07,
-                                                 branch=1), math.inf),
+    "four-bar": (_closed_form(four_bar, **_FOUR_BAR), math.inf),
+    "four-bar, one thread": (_closed_form(four_bar, threads=1, **_FOUR_BAR), math.inf),
+    "four-bar, caller's buffers": (_into_buffers(four_bar, four_bar_buffers, **_FOUR_BAR), math.inf),
     "slider-crank": (_closed_form(slider_crank, crank_pivot=(0.0, 0.0), crank=0.05, coupler=0.094,
                                   guide_point=(0.0, 0.01), guide_angle=0.0, branch=1), math.inf),
     "six-bar (dyad chain)": (_chain(toggle_linkage()), CHAIN_MAX),
@@ -95,11 +98,11 @@ MECHANISMS = {
 
 def _time_call(solve, theta):
     t0 = os.times()
-    c0 = time.thread_time()
+    c0 = time.process_time()
     w0 = time.perf_counter()
     state = solve(theta)
     wall = time.perf_counter() - w0
-    cpu = time.thread_time() - c0
+    cpu = time.process_time() - c0
     t1 = os.times()
     del state  # free the output before the next call
     return wall, cpu, t1.user - t0.user, t1.system - t0.system
@@ -123,7 +126,7 @@ def sweep_rows(sizes=(10**3, 10**4, 10**5, 10**6, 10**7), repeats=5, mechanisms=
     list of dict
         One dict per (mechanism, n) with keys ``mechanism``, ``n``, ``median_seconds``,
         ``angles_per_second`` (full states per second, n / median), ``best_angles_per_second``,
-        ``cpu_angles_per_second`` (n / the median CPU time of the calling thread, which a busy
+        ``cpu_angles_per_second`` (n / the median CPU time of the process, every thread's, which a busy
         machine's other processes do not inflate), ``cpu_user_seconds`` and ``cpu_system_seconds``
         (process CPU time, medians per call).
     """
@@ -222,9 +225,9 @@ def format_table(rows):
 
 def format_detail(rows):
     """One line per (mechanism, n): median wall time, full states/s, best call, full states per second
-    of the calling thread's CPU time, and the median process CPU time of a call split into user and
+    of the process's CPU time (every thread's), and the median process CPU time of a call split into user and
     system (page faults of the fresh output) time."""
-    header = ("mechanism", "n", "median s", "states/s", "best states/s", "thread-cpu states/s", "cpu user s",
+    header = ("mechanism", "n", "median s", "states/s", "best states/s", "cpu states/s", "cpu user s",
               "cpu sys s")
     lines = [(str(r.get("mechanism", "")), _n(r["n"]), f"{r['median_seconds']:.4g}",
               f"{r['angles_per_second']:.3g}",

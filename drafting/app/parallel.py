@@ -33,6 +33,8 @@ import sys
 import threading
 from typing import TYPE_CHECKING, Any, Callable, Iterable, Iterator, Sequence
 
+from constructions import sweep_threads
+
 from ..backends import faults
 
 if TYPE_CHECKING:
@@ -87,8 +89,10 @@ def leave_to_exit() -> None:
 
 def _worker_init() -> None:
     """In each pool worker: SIGINT ignored (the parent coordinates), SIGTERM a clean end, and SIGTERM
-    when the parent dies (Linux); the collector tuned as in the command's own process."""
+    when the parent dies (Linux); the collector tuned as in the command's own process; each sweep on the
+    worker's own thread (the pool already uses every core)."""
     tune_gc()
+    sweep_threads.one_thread()
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, faults.end_worker)
     if hasattr(signal, "pthread_sigmask"):      # started with them blocked (_held): its own handlers now run
@@ -145,8 +149,9 @@ def default_executor(n_jobs: int, workers: int | None = None) -> cf.Executor | N
     import multiprocessing
     methods = multiprocessing.get_all_start_methods()
     # fork: each worker starts with the engine imported -- unless this process runs threads (a notebook's),
-    # which a fork would copy mid-step; then the fork server
-    if "fork" in methods and threading.active_count() == 1:
+    # which a fork would copy mid-step; then the fork server.  The sweep's idle pool threads do not count:
+    # they work only while a sweep call waits for them, and a forked child makes its own
+    if "fork" in methods and threading.active_count() - sweep_threads.pool_threads() == 1:
         ctx = multiprocessing.get_context("fork")
     else:
         ctx = multiprocessing.get_context("forkserver" if "forkserver" in methods else "spawn")
