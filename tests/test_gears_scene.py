@@ -142,7 +142,9 @@ def test_an_internal_pair_scene_reads_and_agrees(tmp_path):
     study = Study(load_scene(p))
     assert not study.disagreements() and study.results["AP"].analytic is not None
     assert "PT_2" not in study.results                   # no interference point on the recess side
-    assert any("INTERFERENCE" in n for n in study.notes)  # 18 in a 72-tooth ring, full depth 20 deg: O2T1 > r2 - a
+    # 18 in a 72-tooth ring, full depth 20 deg: O2T1 > r2 - a; said once, where contact leaves the involutes
+    said = [n for n in study.notes + study.warnings if n.startswith("Interference: ")]
+    assert len(said) == 1 and said[0].startswith("Interference: contact starts before T1") and said[0] in study.warnings
 
 
 def test_the_reverted_reducer_scene():

@@ -74,9 +74,10 @@ def _pair_notes(study) -> tuple[str, ...]:
         n = notes_contact_ratio(pair.pinion.pitch_radius, pair.gear.pitch_radius, s.a, s.a, s.pressure_angle,
                                 s.base_pitch)
         out.append(f"The notes' contact-ratio formula gives {n:.4f} (standard centre distance).")
-    verdict = {"clear": "no interference", AT_LIMIT: "at the limit of interference (contact starts exactly at an "
-               "interference point): no interference", INTERFERENCE: "INTERFERENCE"}[g.verdict]
-    out.append(f"Interference: {verdict}.")
+    if g.verdict != INTERFERENCE:           # (interference is a warning of its own, saying where contact leaves)
+        verdict = {"clear": "no interference", AT_LIMIT: "at the limit of interference (contact starts exactly at "
+                   "an interference point): no interference"}[g.verdict]
+        out.append(f"Interference: {verdict}.")
     lim = _pair_limits(pair)
     phi_deg = math.degrees(pair.pinion.system.pressure_angle)
     words = (("External gears: least" if pair.internal else "Least") + f" pinion free of interference at {phi_deg:g}\u00b0, addendum {pair.pinion.system.addendum:g} module: "
