@@ -86,6 +86,27 @@ def test_boom_scene_to_1e_9_and_the_rod_runs_as_given():
     assert any("Block 2 drives the mechanism at 50 mm/s" in n for n in s.notes)
 
 
+def test_the_boom_sheet_writes_its_arithmetic_as_a_reader_would():
+    """The block's free acceleration is negative: alpha_1 = (0 + 4.615) / 347.8, not (0 - -4.615); and the
+    sliding component the polygon closes at is an exact zero left as 8.7e-16 mm/s2 by the arithmetic,
+    written 0 (the polygon would draw it 1e-14 mm long)."""
+    from drafting.study.worked import sheets_for
+    s = Study(load_scene(BOOM)).run()
+    words = " ".join(t.plain for sh in sheets_for(s) for t in sh.texts())
+    assert "(0 mm/s\u00b2 + 4.615 mm/s\u00b2) \u00f7 347.8 mm/s\u00b2" in words and "\u2212 -" not in words
+    assert "AB3Bs = 0 mm/s\u00b2 and AB3 = 8.032 mm/s\u00b2" in words and "e-16 mm/s" not in words
+
+
+def test_a_value_its_diagram_would_draw_under_a_nanometre_is_written_as_zero():
+    from drafting.layout.formats import DiagramScale, SheetFormatter
+    from drafting.scene.unitset import Units
+    from constructions.record import Value
+    fmt = SheetFormatter(Units(), {"acceleration": DiagramScale("acceleration", "acceleration", 1e-4, 0.1, "mm/s^2")})
+    assert fmt(Value("acceleration", 8.674e-19)) == fmt(Value("acceleration", 0.0))
+    assert fmt(Value("acceleration", 1e-12)) != fmt(Value("acceleration", 0.0))      # 1e-8 mm: drawn, kept
+    assert fmt(Value("velocity", 8.674e-19)) != fmt(Value("velocity", 0.0))          # no velocity scale here
+
+
 @pytest.mark.parametrize("change, key, words", [
     ({'slider_at = "900 mm"': 'angle = "20 deg"'}, "input.slider_at", "needs its stroke position"),
     ({'slider_speed = "50 mm/s"': 'slider_speed = "50 mm/s"\nomega = "1 rad/s"'}, "input.omega",

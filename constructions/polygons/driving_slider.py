@@ -100,10 +100,13 @@ def driving_steps(dc: DrivenCrank, crank: int, along: str) -> tuple[Step, Step]:
              f"The polygon is drawn at it.",
              values=(("v", Value("velocity", dc.speed)), ("k", Value("velocity", dc.rate)),
                      ("w", Value("angular velocity", abs(dc.omega)))), kind=StepKind.GIVEN)
+    minus_free = "+" if dc.free < 0 else "\u2212"          # a - a0 with a0 < 0 written as a + |a0|
     a = Step(f"Block {dc.block} accelerates at $a along {along}. Drawn with \u03b1_{crank} = 0 the polygon gives it "
-             f"$a0; each 1 rad/s\u00b2 of \u03b1_{crank} adds $ka, so \u03b1_{crank} = ($a \u2212 $a0) "
-             f"\u00f7 $ka \u00d7 1 rad/s\u00b2 = $al {sense[1]}. The polygon is drawn at it.",
+             f"$a0; each 1 rad/s\u00b2 of \u03b1_{crank} adds $ka, so \u03b1_{crank} = ($a "
+             f"{minus_free} $f) \u00f7 $ka \u00d7 1 rad/s\u00b2 = $al {sense[1]}. The polygon "
+             f"is drawn at it.",
              values=(("a", Value("acceleration", dc.acceleration)), ("a0", Value("acceleration", dc.free)),
+                     ("f", Value("acceleration", abs(dc.free))),
                      ("ka", Value("acceleration", dc.rate)), ("al", Value("angular acceleration", abs(dc.alpha)))),
              kind=StepKind.GIVEN)
     return v, a

@@ -135,6 +135,12 @@ ValueHook = Callable[[Value, Callable[[Value], str]], str]
 worked-solution text); e.g. a lab sheet writes a blank for answers."""
 
 
+DRAWN_NOTHING_MM = 1e-9
+"""A value that its diagram would draw shorter than this (a nanometre of paper) is written as 0: what is left
+of an exact zero after the arithmetic (a block's sliding acceleration of 8.674e-16 mm/s\u00b2) is not a
+length anyone could measure off the polygon."""
+
+
 @dataclass
 class SheetFormatter:
     """The value formatter of a sheet: ``fmt(value)`` -> text (see the module docstring).
@@ -178,6 +184,9 @@ class SheetFormatter:
             return value_text(self.units, v.of, abs(v.value)) if v.value is not None else ""
         if v.value is None:
             return ""
+        s = self.scale_for(v.kind) if v.value != 0.0 else None
+        if s is not None and s.units_per_mm > 0 and abs(v.value) / s.units_per_mm < DRAWN_NOTHING_MM:
+            return value_text(self.units, v.kind, 0.0)     # a round-off's size (8.7e-16 mm/s2): nothing drawn
         return value_text(self.units, v.kind, v.value)
 
     def __call__(self, v: Value) -> str:
