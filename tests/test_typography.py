@@ -38,8 +38,11 @@ def test_point_names_take_subscripts_and_primes_and_words_stay_as_written():
     assert runs("C''") == [("C\u2033", False)]
     assert runs("O2G2 = 30 mm, AG3") == [("O", False), ("2", True), ("G", False), ("2", True), (" = 30 mm, AG", False),
                                          ("3", True)]
+    # a name after a slash (a ratio of lengths), not a unit after one
+    assert runs("VC/O4C = 2.5") == [("VC/O", False), ("4", True), ("C = 2.5", False)]
     for words in ("D'Alembert force", "Kennedy's theorem", "TOM-A-001", "2026-11-23", "3-4-5 law", "4.4e-13 mm",
-                  "Example 1", "step 10.5", "(notes' velocity Example 1)", "the drivers' speeds"):
+                  "Example 1", "step 10.5", "(notes' velocity Example 1)", "the drivers' speeds", "12 kg/m3",
+                  "0.5 rad/s2"):
         assert runs(words) == [(words, False)], words
 
 

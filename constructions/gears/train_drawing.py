@@ -154,7 +154,7 @@ def train_analysis(train: Train, cases: tuple[Case, ...], rate_text=None) -> Tra
                 e = sol.values
                 o = next(m for m in (A, B, train.carrier) if m not in (h, d))
                 ratio = sol.speeds[o] / sol.speeds[d]
-                rec = rec.then(f"{case.name}: notes' formula (n_{B} - n_c)/(n_{A} - n_c) = e = {e[B] / e[A]:+.5g} (the "
+                rec = rec.then(f"{case.name}: notes' formula (n_{B} \u2212 n_c)/(n_{A} \u2212 n_c) = e = {e[B] / e[A]:+.5g} (the "
                                f"signed product of driving over driven teeth, {A} to {B}); with n_{h} = 0: "
                                f"n_{o}/n_{d} = $ratio.", values={"ratio": Value("number", ratio)}, kind=StepKind.ANSWER)
             elif len(driven) == 2 and len(central) >= 2 and set(driven) <= {central[0], central[1], train.carrier}:
@@ -255,11 +255,11 @@ def _willis_step(train: Train, case: Case, sol: TrainSolution, A: str, B: str, d
     e = sol.values[B] / sol.values[A]
     o = next(m for m in (A, B, train.carrier) if m not in driven)
     c = train.carrier
-    solved = {c: f"n_c = (n_{B} - e n_{A})/(1 - e)", B: f"n_{B} = n_c + e (n_{A} - n_c)",
-              A: f"n_{A} = n_c + (n_{B} - n_c)/e"}[o]
+    solved = {c: f"n_c = (n_{B} \u2212 e n_{A})/(1 \u2212 e)", B: f"n_{B} = n_c + e (n_{A} \u2212 n_c)",
+              A: f"n_{A} = n_c + (n_{B} \u2212 n_c)/e"}[o]
     vals = {"d0": Value("angular velocity", sol.speeds[driven[0]]), "d1": Value("angular velocity", sol.speeds[driven[1]]),
             "out": Value("angular velocity", sol.speeds[o])}
-    return rec.then(f"{case.name}: a differential, two members driven. Notes' formula (Willis) (n_{B} - n_c)/(n_{A} - "
+    return rec.then(f"{case.name}: a differential, two members driven. Notes' formula (Willis) (n_{B} \u2212 n_c)/(n_{A} \u2212 "
                     f"n_c) = e = {e:+.5g}; with n_{driven[0]} = $d0 and n_{driven[1]} = $d1: {solved} = $out.",
                     values=vals, kind=StepKind.ANSWER)
 

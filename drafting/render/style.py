@@ -290,7 +290,7 @@ _TOKEN = re.compile(
     r"(?<![A-Za-z0-9\u0370-\u03ff])(?P<base>[A-Za-z\u0370-\u03ff]+)_(?P<sub>" + _GROUP + r")"
     r"(?:\^(?P<sup>" + _GROUP + r"))?")
 _PIVOT = re.compile(r"^(?P<base>[A-Za-z])(?P<sub>[0-9]+)$")
-_NAMED = re.compile(r"(?<![A-Za-z0-9\u0370-\u03ff'\-/.])(?P<chain>(?:[A-Za-z\u0370-\u03ff][0-9]{0,2})+)"
+_NAMED = re.compile(r"(?:(?<![A-Za-z0-9\u0370-\u03ff'\-/.])|(?<=/)(?=[A-Z]))(?P<chain>(?:[A-Za-z\u0370-\u03ff][0-9]{0,2})+)"
                     r"(?P<primes>'{1,2})?(?![0-9A-Za-z\u0370-\u03ff])")
 _PAIR = re.compile(r"([A-Za-z\u0370-\u03ff])([0-9]*)")
 """Point and member names inside running text, set as the notes print them: the digits of "O4", "F14",
