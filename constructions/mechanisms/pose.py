@@ -224,7 +224,7 @@ def _slot_segment(m: Mechanism, s: Slide, pos: Mapping[str, Vec], at: Vec) -> Se
     t0, t1 = line.parameter(first), line.parameter(at)
     lo, hi = min(t0, t1), max(t0, t1)
     pad = 0.1 * (hi - lo)
-    return Segment(f"slot {s.joint} in link {s.on}", Role.PATH, Diagram.SPACE, line.at(lo - pad), line.at(hi + pad))
+    return Segment(f"slot {s.joint} in link {s.on}", Role.GIVEN, Diagram.SPACE, line.at(lo - pad), line.at(hi + pad))
 
 
 def _line_name(s: Slide) -> str:

@@ -22,6 +22,9 @@ from .leaders import (LONG_LEADER, LONGEST_LEADER, far_leader, far_test, leader_
                       runs_clear, short, sparing)
 
 LABEL_PAD = 0.4         # white margin of a label's background
+LABEL_GAP = 0.3         # mm between two labels' grounds
+NUMBER_GAP = 1.5
+"""mm between a link number's ground and another label's: set closer, "C 3" reads as C with a subscript."""
 
 
 def _edge(u: Pt, hw: float, hh: float) -> float:
@@ -187,7 +190,8 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         reach = _reach(req, hw, hh)
         near_segs = segs.near(reach)
         near_hard = [h for h in d.hard if h.overlaps(reach, 0.2)]
-        near_placed = [p for p in placed if p.overlaps(reach, 0.3)]
+        gap = NUMBER_GAP if req.name.startswith(NUMBER) else LABEL_GAP
+        near_placed = [p for p in placed if p.overlaps(reach, gap)]
         best, by_leader = None, False
         own_kin = None if req.kind == "note" else kin.test(req, reach, LABEL_PAD)
         for heavy_ok, clear, relaxes, by_leader in _tiers(req, own_kin, placed, d):
@@ -195,7 +199,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 clear = sparing(clear, committed)
             for relax in relaxes:
                 best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
-                                       near_placed, near_hard, near_segs, heavy_ok, clear, segs)
+                                       near_placed, near_hard, near_segs, heavy_ok, clear, segs, gap)
                 if best is not None:
                     break
             if best is not None or strict:
@@ -290,7 +294,7 @@ def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
                     near_hard: list[Rect], near_segs: list[tuple], heavy_ok: bool, clear=None,
-                    segs: Segments | None = None):
+                    segs: Segments | None = None, label_gap: float = 0.3):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
     or None when every one leaves the plot, overlaps a label or a symbol, hides part of a thick line
     (unless ``heavy_ok``) or fails ``clear(left, top, right, bottom)`` (the ambiguity test, see
@@ -307,7 +311,7 @@ def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_p
     tol = 1e-6
     pl, pt, pr, pb = plot.left - tol, plot.top - tol, plot.right + tol, plot.bottom + tol
     obstacles = [(o.left, o.top, o.right + gap, o.bottom + gap, gap)
-                 for rects, gap in ((near_placed, 0.3), (near_hard, 0.2)) for o in rects]
+                 for rects, gap in ((near_placed, label_gap), (near_hard, 0.2)) for o in rects]
     dense = segs is not None and segs.dense
     w, h = 2 * hw, 2 * hh
     best_total, best_i = math.inf, -1
