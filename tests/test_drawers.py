@@ -290,3 +290,29 @@ def test_notes_close_together_are_set_clear_of_each_other_the_least_way():
     assert grounds["far"].center == pytest.approx((200.0, -200.0), abs=1e-9)       # room: stays put
     assert grounds["base"].top == pytest.approx(grounds["pitch"].bottom + 0.3, abs=1e-5)     # just below
     assert grounds["addendum"].bottom == pytest.approx(grounds["pitch"].top - 0.3, abs=1e-5)  # just above
+
+
+@pytest.mark.parametrize("scene", ["notes-roller-cam.toml", "oscillating-flat-faced-cam.toml", "gear-pair-20-40.toml",
+                                   "notes-dynamic-example-3.toml", "cycle-four-bar.toml"])
+def test_a_drawing_made_for_its_extent_has_the_whole_drawing_s_extent(scene):
+    """The page planner measures a diagram at each scale it tries from a drawing made for its extent only
+    (no segments for the labels, a curve by its extreme points): the same box, bit for bit, as the whole
+    drawing's, at every scale of every panel -- a NaN in a curve's points included."""
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from paths import GALLERY
+    study = Study(load_scene(GALLERY / scene)).run()
+    by_diagram: dict = {}
+    for e in study.construction.entities():
+        if type(e).__name__ not in ("Chart", "Series"):
+            by_diagram.setdefault(e.diagram, []).append(e)
+    for ents in by_diagram.values():
+        try:
+            draw_entities(ents, 1.0)
+        except DrawingError:                 # a panel of its own (charts)
+            continue
+        for k in (0.1, 0.5, 1.0, 2.0, 1000.0, 12345.678):
+            whole, extent = draw_entities(ents, k), draw_entities(ents, k, measure=True)
+            assert extent.bbox() == whole.bbox() and not extent.segments
+    holes = Curve("holed", Role.GIVEN, Diagram.SPACE, (Vec(0, 0), Vec(float("nan"), 1), Vec(3, -2), Vec(1, 5)))
+    assert draw_entities([holes], 2.0, measure=True).bbox() == draw_entities([holes], 2.0).bbox()

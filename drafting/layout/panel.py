@@ -114,9 +114,12 @@ class Figure:
         return None if w > width + 1e-9 else (w, h)
 
     def bbox(self, k: float) -> Rect | None:
-        """The drawing's extent at ``k`` (measured once per scale: the packer asks many times)."""
+        """The drawing's extent at ``k`` (measured once per scale: the packer asks many times), from a
+        drawing made for its extent only unless the whole drawing is made already."""
         if k not in self._boxes:
-            self._boxes[k] = self.drawing(k).bbox()
+            d = self._draws.get(k)
+            self._boxes[k] = (d if d is not None else
+                              draw_entities(self.entities, k, text=self.text, measure=True)).bbox()
         return self._boxes[k]
 
 
@@ -139,7 +142,8 @@ class RoomFigure(Figure):
 
     def bbox(self, k: float) -> Rect | None:
         if k not in self._boxes:
-            boxes = [b for b in (draw_entities(self.entities, k, text=self.text).bbox(), self.drawing(k).bbox())
+            boxes = [b for b in (draw_entities(self.entities, k, text=self.text, measure=True).bbox(),
+                                 draw_entities(self.shown, k, text=self.text, among=self.entities, measure=True).bbox())
                      if b is not None]
             self._boxes[k] = boxes[0].union(boxes[-1]) if boxes else None
         return self._boxes[k]

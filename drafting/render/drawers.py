@@ -263,6 +263,8 @@ def draw_circle(e: CircleEntity, ctx: DrawContext) -> None:
     c = ctx.T(e.center)
     r = e.radius * ctx.T.k
     ctx.d.add(PATHS, Circle(c[0], c[1], r, style, e.name))
+    if ctx.d.measure:
+        return
     n = max(24, min(180, int(r)))
     ctx.d.add_segments([(c[0] + r * math.cos(2 * math.pi * i / n), c[1] + r * math.sin(2 * math.pi * i / n))
                         for i in range(n)], style in THICK_STYLES, closed=True)
@@ -273,6 +275,16 @@ def draw_circle(e: CircleEntity, ctx: DrawContext) -> None:
 
 @drawer(Curve, points=lambda e: e.points)
 def draw_curve(e: Curve, ctx: DrawContext) -> None:
+    if ctx.d.measure:           # its extent: the paper transform keeps the order of each coordinate, bit for bit
+        fin = e.points
+        xs, ys = [p.x for p in fin], [p.y for p in fin]
+        if not (math.isfinite(sum(xs)) and math.isfinite(sum(ys))):      # (a NaN or an infinity among them)
+            fin = [p for p in fin if math.isfinite(p.x) and math.isfinite(p.y)]
+            xs, ys = [p.x for p in fin], [p.y for p in fin]
+        if len(fin) >= 2:
+            ends = [fin[xs.index(min(xs))], fin[xs.index(max(xs))], fin[ys.index(min(ys))], fin[ys.index(max(ys))]]
+            ctx.d.add(PATHS, Polyline(tuple(ctx.T.many(ends)), line_style_for(e.role), e.name))
+        return
     pts = tuple(ctx.T.many(p for p in e.points if math.isfinite(p.x) and math.isfinite(p.y)))
     if len(pts) < 2:
         return

@@ -72,12 +72,17 @@ class Drawing:
     labels: list[LabelReq] = field(default_factory=list)
     hard: list[Rect] = field(default_factory=list)
     segments: list[tuple[Pt, Pt, bool]] = field(default_factory=list)     # (a, b, thick)
+    measure: bool = False
+    """Made only for its extent (:meth:`bbox`), at a scale a page planner tries: no segments for the label
+    placer, and a drawer may put down only the points that bound what it draws (a curve its extreme points)."""
 
     def add(self, layer: int, cmd: Command) -> None:
         got = self.layers.get(layer)
         if got is None:
             got = self.layers[layer] = []
         got.append(cmd)
+        if self.measure:
+            return
         thick = cmd.style in THICK_STYLES
         if type(cmd) is Line:
             self.segments.append(((cmd.x1, cmd.y1), (cmd.x2, cmd.y2), thick))
@@ -89,6 +94,8 @@ class Drawing:
 
     def add_segments(self, points: Sequence[Pt], thick: bool, closed: bool = False) -> None:
         """Line segments labels should avoid, for a command that is not made of segments (a circle)."""
+        if self.measure:
+            return
         pts = list(points) + ([points[0]] if closed and points else [])
         self.segments.extend(zip(pts[:-1], pts[1:], itertools.repeat(thick)))
 
