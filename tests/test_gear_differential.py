@@ -52,7 +52,7 @@ def test_the_willis_step_solves_for_the_third_member():
     a = train_analysis(t, (Case("diff", (Given("R", -300 * RPM), Given("S", 1200 * RPM))),))
     step = [s for s in a.construction.steps if "differential" in s.caption]
     assert len(step) == 1
-    assert "n_c = (n_R - e n_S)/(1 - e)" in step[0].caption
+    assert "n_c = (n_R \u2212 e n_S)/(1 \u2212 e)" in step[0].caption          # minus signs, not hyphens
     assert dict(step[0].values)["out"].value == pytest.approx((24 * 1200 - 60 * 300) / 84 * RPM, rel=1e-12)
 
 
