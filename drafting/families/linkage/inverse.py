@@ -43,8 +43,8 @@ def inverse_notes(scene) -> list[str]:
         return []
     line = inv.describe(scene.units.format)
     if len(inv.solutions) > 1:
-        line += (f" The sheet draws solution {scene.solution} ({scene.units.format('angle', scene.angle)}); "
-                 f"[input] solution = N draws another.")
+        line += f" The sheet draws solution {scene.solution} ({scene.units.format('angle', scene.angle)})."
+        # (which one is the scene's [input] solution: the README and `drafting keys` say so, not the handout)
     return [line]
 
 
