@@ -306,3 +306,48 @@ def test_the_grid_finds_the_segments_around_a_point_that_the_scan_finds(segments
     assert grid.dense and not scan.dense
     for p in points:
         assert grid.around(p, margin) == scan.around(p, margin)
+
+
+def test_a_circle_s_name_goes_to_another_point_of_it_when_its_first_is_crowded():
+    """A circle's name is tried up and to the right first; where heavy lines fill that corner it is set by
+    another point of the circle (clear and unambiguous there), not pushed far off into the corner."""
+    from constructions.entities import Circle, Diagram, Role
+    from constructions.geometry import Vec
+    from drafting.layout.diagram import draw_entities
+    from drafting.layout.labels import place_labels
+    from drafting.render.paper import Rect, Text
+    from drafting.render.drawing import LINKS
+    from drafting.render.paper import Line
+    circle = Circle("pitch circle 1", Role.CENTRE_LINE, Diagram.SPACE, Vec(0.0, 0.0), 0.02, "pitch circle")
+    d = draw_entities([circle], 1000.0)                            # r = 20 mm about (0, 0) on paper
+    (req,) = d.labels
+    assert req.anchor == pytest.approx((20 * math.cos(math.pi / 4), -20 * math.sin(math.pi / 4)))
+    assert len(req.alternates) == 7
+    for k in range(-12, 13):                                       # a hatch of heavy lines over the upper right
+        d.add(LINKS, Line(8.0 + 2 * k, -40.0, 48.0 + 2 * k, 0.0, "link", f"bar {k}"))
+    d = d.moved(60.0, 60.0)
+    (t,) = [c for c in place_labels(d, Rect(0, 0, 120, 120), "space") if isinstance(c, Text)]
+    b = t.box
+    ring = [(60.0 + 20.0 * math.cos(a / 100), 60.0 + 20.0 * math.sin(a / 100)) for a in range(629)]
+    near = min(math.hypot(max(b.x - x, 0.0, x - b.x - b.w), max(b.y - y, 0.0, y - b.y - b.h)) for x, y in ring)
+    assert near < 3.0                                              # by the circle, at another point of it
+    from drafting.layout.label_kin import clip_fraction
+    assert all(clip_fraction(68.0 + 2 * k, 20.0, 40.0, 40.0, b.x, b.y, b.x + b.w, b.y + b.h) == 0.0
+               for k in range(-12, 13))                            # and hiding none of the bars
+
+
+def test_a_link_number_stands_clear_of_the_point_letter_beside_it():
+    """A block's point letter and its link's number are both point labels; the number keeps 1.5 mm from the
+    letter's ground, so "C 3" never reads as C with a subscript."""
+    from drafting.layout.labels import NUMBER_GAP, place_labels
+    from drafting.layout.label_kin import NUMBER
+    from drafting.render.drawing import Drawing, LabelReq
+    from drafting.render.paper import Rect, Rectangle
+    d = Drawing()
+    d.labels.append(LabelReq("point", "C", (50.0, 50.0), True, "joint C", r0=1.0))
+    d.labels.append(LabelReq("point", "3", (50.5, 50.0), True, f"{NUMBER}block 3", r0=1.0))
+    grounds = {c.name: c for c in place_labels(d, Rect(0, 0, 100, 100), "space") if isinstance(c, Rectangle)}
+    a, b = grounds["joint C:label bg"], grounds[f"{NUMBER}block 3:label bg"]
+    dx = max(a.x - (b.x + b.w), b.x - (a.x + a.w), 0.0)
+    dy = max(a.y - (b.y + b.h), b.y - (a.y + a.h), 0.0)
+    assert max(dx, dy) >= NUMBER_GAP - 1e-9

@@ -182,8 +182,9 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
     segs = Segments(d.segments)
     kin = Kin(d) if d.labels else None
     def search(req: LabelReq, strict: bool):
-        """The best candidate of ``req`` through its tiers (the first tier only when ``strict``), whether
-        it is placed by its leader, the placed labels near it and the directions of the lines at it."""
+        """The best candidate of ``req`` through its tiers (when ``strict``, the first tier's nearest places
+        only), whether it is placed by its leader, the placed labels near it and the directions of the
+        lines at it."""
         incident = (incident_directions(req.anchor, [d.segments[j] for j in segs.around(req.anchor, 0.2)])
                     if req.kind == "point" else [])
         # the neighbourhood every candidate box lies in: only what is in it can collide
@@ -197,7 +198,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
         for heavy_ok, clear, relaxes, by_leader in _tiers(req, own_kin, placed, d):
             if committed:                           # no label over a leader already drawn
                 clear = sparing(clear, committed)
-            for relax in relaxes:
+            for relax in relaxes[:1] if strict else relaxes:
                 best = _best_candidate(_Candidates(req, hw, hh, incident, relax), hw, hh, plot,
                                        near_placed, near_hard, near_segs, heavy_ok, clear, segs, gap)
                 if best is not None:
