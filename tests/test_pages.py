@@ -402,3 +402,18 @@ def test_the_pruned_several_page_search_is_the_exhaustive_one(monkeypatch):
         else:
             sheets_for(study)
     assert 0 < flowed["pruned"] < flowed["all"] / 2, flowed
+
+
+def test_a_page_of_diagrams_only_stacks_what_a_text_page_sets_side_by_side():
+    """Of arrangements that draw the diagrams alike, a page with text keeps the one that leaves the most
+    height (the text goes under it); a page of diagrams only shares what is left among its rows, so it
+    takes the one that uses the height: two charts one over the other, not side by side stretched tall."""
+    from drafting.layout.page_plans import _best_fill
+    from drafting.layout.fills import arrangements
+    a, b = _Block("a", 60.0), _Block("b", 60.0)
+    for blk in (a, b):
+        blk.rungs = lambda: 1                                     # one scale each: they draw alike either way
+    with_text = _best_fill(arrangements([a, b]), 120.0, 180.0, climb=True)
+    alone = _best_fill(arrangements([a, b]), 120.0, 180.0, climb=True, room=False)
+    assert [len(r) for r in with_text.rows] == [2] and with_text.used == pytest.approx(60.0)
+    assert [len(r) for r in alone.rows] == [1, 1] and alone.used == pytest.approx(120.0)
