@@ -417,3 +417,26 @@ def test_a_page_of_diagrams_only_stacks_what_a_text_page_sets_side_by_side():
     alone = _best_fill(arrangements([a, b]), 120.0, 180.0, climb=True, room=False)
     assert [len(r) for r in with_text.rows] == [2] and with_text.used == pytest.approx(60.0)
     assert [len(r) for r in alone.rows] == [1, 1] and alone.used == pytest.approx(120.0)
+
+
+def test_a_panel_s_need_is_remembered_for_it_alone_not_for_its_copies():
+    """The packer asks a panel's need many times and it is measured once per rung and width; a lab sheet's
+    copy of a panel held to another scale measures its own (the memo is not shared through copy.copy)."""
+    from drafting.layout.panel import PanelCache
+    from drafting.layout.panels import SpacePanel, held_to
+    from drafting.scene.reader import load_scene
+    from drafting.study.study import Study
+    from paths import GALLERY
+    study = Study(load_scene(GALLERY / "notes-velocity-example-1.toml")).run()
+    ents = [e for e in study.construction.entities() if e.diagram.key == "space"]
+    p = SpacePanel("space", "Space diagram", ents, study.scene.units, PanelCache())
+    calls = []
+    measure = p.measure
+    p.measure = lambda r, w: calls.append((r, w)) or measure(r, w)
+    r = 0                                                      # the same rung and width as the copy's below
+    first = p.need(r, 200.0)
+    assert p.need(r, 200.0) == first and calls == [(r, 200.0)]
+    held = held_to(p, 0.005)                                   # 1:5 (5 mm of the model per paper mm)
+    del held.measure                                           # the class's own measure
+    assert held.need(0, 200.0) == SpacePanel.measure(held, 0, 200.0) != first
+    assert calls == [(r, 200.0)]                               # the copy measured itself, not through p
