@@ -63,7 +63,8 @@ class InversePosition:
 
     ``touching[i]`` is True where the quantity only touches the target there (a limit position: the two
     solutions of either side have met); ``reach`` lists the ranges (SI) the quantity covers over the turn,
-    one per stretch of crank angles where the mechanism assembles -- what a "no position" sentence cites."""
+    one per stretch of crank angles where the mechanism assembles -- what a "no position" sentence cites,
+    so it is found (each end refined on the construction) only when there is no solution, else empty."""
 
     target: Target
     solutions: tuple[float, ...]
@@ -162,8 +163,9 @@ def inverse_position(m: Mechanism, target: Target, *, plan: tuple[PlanStep, ...]
                 if v <= (1e-9 * m.size if kind == "length" else 1e-9):
                     found.append((t, True))
     found = _merge(sorted((float(t) % TURN, touch) for t, touch in found))
-    return InversePosition(target, tuple(t for t, _ in found), tuple(x for _, x in found),
-                           _reach(values, kind, grid, lambda t: _value(m, target, plan, t)), kind, _along(m, target))
+    reach = () if found else _reach(values, kind, grid, lambda t: _value(m, target, plan, t))
+    return InversePosition(target, tuple(t for t, _ in found), tuple(x for _, x in found), reach, kind,
+                           _along(m, target))
 
 
 def _along(m: Mechanism, target: Target) -> str:
