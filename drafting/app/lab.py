@@ -127,7 +127,7 @@ def lab_for(study: Study, *, epoch: int | None = None, label: str = "", bare: bo
                          "1\u00b0); a value worked out from readings (V/L, F h) within the error propagated from theirs; the "
                          "sense of a rate must be right.",) \
         + ((f"The worked solution and the problem sheet are drawn at: {drawn}.",) if drawn else ())
-    key = compose_sheets(Construction(s.title, ()), _info(study, date, f"Answer key: {s.title}{suffix}",
+    key = compose_sheets(Construction(s.title, ()), _info(study, date, f"{s.title}{suffix} \u2013 answer key",
                                                           f"{s.drawing_number}-K", key_notes), key_rows,
                          given=given[:-1] if items else given,
                          unit_kinds=sorted({v.kind for st in study.construction.steps for _, v in st.values}))
@@ -230,7 +230,7 @@ def problem_sheets(study: Study, scales, given: Sequence[str], items: Sequence[K
     unknown = unknowns(study)
     c, shown = problem_construction(study.construction, bare, unknown)
     rows = [ResultRow(i.shown, ANSWER_LINE, "", "") for i in items]
-    info = _info(study, date, f"Problem: {s.title}{suffix}", f"{s.drawing_number}-P", ())
+    info = _info(study, date, f"{s.title}{suffix} \u2013 problem", f"{s.drawing_number}-P", ())
     posed = any(kind == "angle" for kind, _ in unknown)         # the mechanism's pose is asked for
 
     def room(p):
