@@ -28,11 +28,11 @@ def model_points(entities: Sequence[Entity]) -> list[Vec]:
 
 
 def draw_entities(entities: Sequence[Entity], k: float, *, text: TextFn | None = None,
-                  among: Sequence[Entity] | None = None, measure: bool = False) -> Drawing:
+                  among: Sequence[Entity] | None = None, extent_only: bool = False) -> Drawing:
     """Every entity of one diagram drawn at ``k`` paper mm per model unit, model origin at (0, 0); laid out
     (a guide's length, the side a hatch takes) among the points of ``among`` when given (a problem
-    sheet's frame among the mechanism the student is to draw), else of ``entities``.  With ``measure`` the
-    drawing is made for its extent only (:attr:`~drafting.render.drawing.Drawing.measure`).
+    sheet's frame among the mechanism the student is to draw), else of ``entities``.  With ``extent_only``
+    the drawing is made for its extent only (:attr:`~drafting.render.drawing.Drawing.extent_only`).
 
     Raises :class:`DrawingError` for an entity without a drawer (or a panel entity such as a chart)."""
     entries = []
@@ -43,7 +43,7 @@ def draw_entities(entities: Sequence[Entity], k: float, *, text: TextFn | None =
                                f"panel of its own, not to a model scale")
         entries.append(entry)
     T = Transform(k)
-    d = Drawing(measure=measure)
+    d = Drawing(extent_only=extent_only)
     around = entities if among is None else among
     pts = model_points(around)
     paper_pts = T.many(pts)

@@ -232,7 +232,7 @@ def place_labels(d: Drawing, plot: Rect, region: str, size: float = LABEL) -> li
                 for i, cost in enumerate(cands.costs):
                     centre = cands.centre(i)
                     box = Rect(centre[0] - hw, centre[1] - hh, 2 * hw, 2 * hh)
-                    if plot.contains(box) and not any(box.overlaps(o, 0.3) for o in near_placed):
+                    if plot.contains(box) and not any(box.overlaps(o, LABEL_GAP) for o in near_placed):
                         if best is None or cost < best[0]:
                             best = (cost, centre, box)
             if best is None:
@@ -295,7 +295,7 @@ def _tiers(req: LabelReq, clear, placed: list[Rect], d: Drawing):
 
 def _best_candidate(cands: _Candidates, hw: float, hh: float, plot: Rect, near_placed: list[Rect],
                     near_hard: list[Rect], near_segs: list[tuple], heavy_ok: bool, clear=None,
-                    segs: Segments | None = None, label_gap: float = 0.3):
+                    segs: Segments | None = None, label_gap: float = LABEL_GAP):
     """(score, centre, box) of the best of ``cands`` -- the first of the lowest score in their order --
     or None when every one leaves the plot, overlaps a label or a symbol, hides part of a thick line
     (unless ``heavy_ok``) or fails ``clear(left, top, right, bottom)`` (the ambiguity test, see

@@ -59,7 +59,6 @@ class Figure:
             self.extent = (max(p.x for p in pts) - min(p.x for p in pts), max(p.y for p in pts) - min(p.y for p in pts))
         else:
             self.extent = (0.0, 0.0)
-        self.draws = 0
 
     @property
     def size(self) -> float:
@@ -93,7 +92,6 @@ class Figure:
         if d is None:
             d = draw_entities(self.entities, k, text=self.text)
             self._draws[k] = d
-            self.draws += 1
         return d
 
     def least_width(self, k: float) -> float:
@@ -119,7 +117,7 @@ class Figure:
         if k not in self._boxes:
             d = self._draws.get(k)
             self._boxes[k] = (d if d is not None else
-                              draw_entities(self.entities, k, text=self.text, measure=True)).bbox()
+                              draw_entities(self.entities, k, text=self.text, extent_only=True)).bbox()
         return self._boxes[k]
 
 
@@ -137,13 +135,12 @@ class RoomFigure(Figure):
         d = self._draws.get(k)
         if d is None:
             d = self._draws[k] = draw_entities(self.shown, k, text=self.text, among=self.entities)
-            self.draws += 1
         return d
 
     def bbox(self, k: float) -> Rect | None:
         if k not in self._boxes:
-            boxes = [b for b in (draw_entities(self.entities, k, text=self.text, measure=True).bbox(),
-                                 draw_entities(self.shown, k, text=self.text, among=self.entities, measure=True).bbox())
+            boxes = [b for b in (draw_entities(self.entities, k, text=self.text, extent_only=True).bbox(),
+                                 draw_entities(self.shown, k, text=self.text, among=self.entities, extent_only=True).bbox())
                      if b is not None]
             self._boxes[k] = boxes[0].union(boxes[-1]) if boxes else None
         return self._boxes[k]

@@ -263,7 +263,7 @@ def draw_circle(e: CircleEntity, ctx: DrawContext) -> None:
     c = ctx.T(e.center)
     r = e.radius * ctx.T.k
     ctx.d.add(PATHS, Circle(c[0], c[1], r, style, e.name))
-    if ctx.d.measure:
+    if ctx.d.extent_only:
         return
     n = max(24, min(180, int(r)))
     ctx.d.add_segments([(c[0] + r * math.cos(2 * math.pi * i / n), c[1] + r * math.sin(2 * math.pi * i / n))
@@ -275,7 +275,7 @@ def draw_circle(e: CircleEntity, ctx: DrawContext) -> None:
 
 @drawer(Curve, points=lambda e: e.points)
 def draw_curve(e: Curve, ctx: DrawContext) -> None:
-    if ctx.d.measure:           # its extent: the paper transform keeps the order of each coordinate, bit for bit
+    if ctx.d.extent_only:       # its extent: the paper transform keeps the order of each coordinate, bit for bit
         fin = e.points
         xs, ys = [p.x for p in fin], [p.y for p in fin]
         if not (math.isfinite(sum(xs)) and math.isfinite(sum(ys))):      # (a NaN or an infinity among them)

@@ -72,7 +72,7 @@ class Drawing:
     labels: list[LabelReq] = field(default_factory=list)
     hard: list[Rect] = field(default_factory=list)
     segments: list[tuple[Pt, Pt, bool]] = field(default_factory=list)     # (a, b, thick)
-    measure: bool = False
+    extent_only: bool = False
     """Made only for its extent (:meth:`bbox`), at a scale a page planner tries: no segments for the label
     placer, and a drawer may put down only the points that bound what it draws (a curve its extreme points)."""
 
@@ -81,7 +81,7 @@ class Drawing:
         if got is None:
             got = self.layers[layer] = []
         got.append(cmd)
-        if self.measure:
+        if self.extent_only:
             return
         thick = cmd.style in THICK_STYLES
         if type(cmd) is Line:
@@ -94,7 +94,7 @@ class Drawing:
 
     def add_segments(self, points: Sequence[Pt], thick: bool, closed: bool = False) -> None:
         """Line segments labels should avoid, for a command that is not made of segments (a circle)."""
-        if self.measure:
+        if self.extent_only:
             return
         pts = list(points) + ([points[0]] if closed and points else [])
         self.segments.extend(zip(pts[:-1], pts[1:], itertools.repeat(thick)))
